@@ -1,0 +1,58 @@
+# The two newcomer commands: `make book` and `make test`. Each does its own set-up.
+PYTHON ?= python3
+VENV   := .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.installed-$(shell cat requirements.lock pyproject.toml 2>/dev/null | cksum | cut -d' ' -f1)
+JB     := $(BIN)/jupyter-book
+# Whole-book parameter overrides: make book PARAMS=my-params.toml (see README).
+PARAMS ?=
+export MAGBENCH_PARAMS := $(if $(PARAMS),$(abspath $(PARAMS)),)
+# One BLAS thread: reproducible timings on two cores, no oversubscription.
+export OMP_NUM_THREADS := 1
+export OPENBLAS_NUM_THREADS := 1
+export MPLBACKEND := Agg
+
+.PHONY: book test pytest book-check env lock bench clean
+
+env: $(STAMP)
+
+$(STAMP): requirements.lock pyproject.toml
+	@$(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 11))' || \
+	  { echo "magbench needs Python >= 3.11 (set PYTHON=...)"; exit 1; }
+	rm -rf $(VENV)
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check -r requirements.lock
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check --no-deps --no-build-isolation -e .
+	$(BIN)/python -c "import matplotlib.pyplot"   # build the font cache once, outside the book
+	touch $(STAMP)
+
+# The book, with the execution cache invalidated whenever the library, data, lock file
+# or parameter overrides change (jupyter-cache itself only looks at cell sources).
+book: $(STAMP)
+	$(BIN)/python tools/fingerprint.py --cache _build/.jupyter_cache --stamp _build/.fingerprint
+	$(JB) build . -W -n --keep-going
+	$(BIN)/python tools/check_book.py _build/html
+
+# Tests: the pytest suite, then the whole book built from scratch as a test.
+test: pytest book-check
+
+pytest: $(STAMP)
+	$(BIN)/python -m pytest
+
+book-check: $(STAMP)
+	rm -rf _build/test
+	$(JB) build . --path-output _build/test -W -n --keep-going
+	$(BIN)/python tools/check_book.py _build/test/_build/html
+
+bench: $(STAMP)
+	$(BIN)/python benchmarks/run.py
+
+# Re-resolve requirements.in into the committed lock file (maintainers only).
+lock:
+	rm -rf _build/lockenv
+	$(PYTHON) -m venv _build/lockenv
+	_build/lockenv/bin/python -m pip install --quiet -r requirements.in
+	_build/lockenv/bin/python -m pip freeze --all | grep -v '^pip==' > requirements.lock
+
+clean:
+	rm -rf _build

@@ -1,0 +1,65 @@
+"""Input checks shared by the physics modules.
+
+Each check raises ``ValueError`` naming the parameter, the offending value and the
+expected range, so that bad input is never silently clipped or propagated as NaN.
+"""
+
+import numpy as np
+
+
+def _describe(value):
+    arr = np.asarray(value)
+    if arr.size == 1:
+        return repr(arr.item())
+    return f"array of shape {arr.shape}"
+
+
+def as_finite(name, value):
+    """Return ``value`` as a float array, raising if any element is NaN or infinite."""
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"{name} must be numeric, got {value!r}") from exc
+    if not np.all(np.isfinite(arr)):
+        bad = arr[~np.isfinite(arr)].ravel()[0]
+        raise ValueError(f"{name} must be finite, got {bad!r} in {_describe(arr)}")
+    return arr
+
+
+def as_positive(name, value, *, unit=""):
+    """Return ``value`` as a float array, raising unless every element is finite and > 0."""
+    arr = as_finite(name, value)
+    if np.any(arr <= 0):
+        bad = arr[arr <= 0].ravel()[0]
+        raise ValueError(f"{name} must be > 0{(' ' + unit) if unit else ''}, got {bad!r}")
+    return arr
+
+
+def as_nonnegative(name, value, *, unit=""):
+    """Return ``value`` as a float array, raising unless every element is finite and >= 0."""
+    arr = as_finite(name, value)
+    if np.any(arr < 0):
+        bad = arr[arr < 0].ravel()[0]
+        raise ValueError(f"{name} must be >= 0{(' ' + unit) if unit else ''}, got {bad!r}")
+    return arr
+
+
+def as_in_range(name, value, low, high, *, unit=""):
+    """Return ``value`` as a float array, raising unless every element lies in [low, high]."""
+    arr = as_finite(name, value)
+    if np.any((arr < low) | (arr > high)):
+        bad = arr[(arr < low) | (arr > high)].ravel()[0]
+        raise ValueError(
+            f"{name} must lie in [{low}, {high}]{(' ' + unit) if unit else ''}, got {bad!r}"
+        )
+    return arr
+
+
+def as_vectors(name, value):
+    """Return ``value`` as a finite float array whose trailing axis has length 3."""
+    arr = as_finite(name, value)
+    if arr.ndim == 0 or arr.shape[-1] != 3:
+        raise ValueError(
+            f"{name} must have shape (..., 3) (vectors on the trailing axis), got shape {arr.shape}"
+        )
+    return arr

@@ -1,0 +1,319 @@
+"""Loading the project's data files, with checksums and provenance.
+
+``data/`` holds only what a source printed or a person measured. Every file is listed
+in ``data/SHA256SUMS``; each read verifies the file's sha256 first, so a tampered or
+accidentally edited file is an error, not a silently different result. Nothing here
+writes to ``data/``.
+
+Two formats:
+
+* measurement tables (CSV with ``#`` comment lines): one row per printed value, with
+  its source section, seed-text line, method and uncertainty;
+* parameter sets (TOML): one table per parameter, value and unit as printed.
+
+Values are converted to SI on loading (``value_si``); the printed value and unit stay
+available for provenance.
+"""
+
+import csv
+import hashlib
+import io
+import math
+import tomllib
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+__all__ = [
+    "DATA_DIR",
+    "DataError",
+    "Measurement",
+    "Parameter",
+    "to_si",
+    "verify_checksum",
+    "load_measurements",
+    "measurement",
+    "load_parameter_set",
+]
+
+#: The project's data directory (next to the package in a source checkout).
+DATA_DIR = Path(__file__).resolve().parent.parent / "data"
+
+#: Conversion factors from the units the sources print to SI.
+_TO_SI = {
+    "1": 1.0, "A": 1.0, "V": 1.0, "W": 1.0, "s": 1.0, "m": 1.0, "ohm": 1.0, "A/m": 1.0,
+    "T": 1.0, "kg": 1.0, "kg m^2": 1.0, "kg/m^3": 1.0, "ohm m": 1.0, "A m^2": 1.0,
+    "rad": 1.0, "rad/s": 1.0, "year": 1.0,
+    "mm": 1e-3, "km": 1e3, "cm": 1e-2,
+    "deg": math.pi / 180.0,
+    "%": 1e-2,
+    "emu": 1e-3,            # G·cm³ (Kovalenko 1975, p. 22)
+    "Oe": 1000.0 / (4.0 * math.pi),
+    "nT": 1e-9, "uT": 1e-6, "G": 1e-4,
+}
+
+_SI_UNIT = {"mm": "m", "km": "m", "cm": "m", "deg": "rad", "%": "1", "emu": "A m^2",
+            "Oe": "A/m", "nT": "T", "uT": "T", "G": "T"}
+
+
+class DataError(ValueError):
+    """A data file is missing, malformed, or does not match its recorded checksum."""
+
+
+def to_si(value, unit):
+    """Convert ``value`` printed in ``unit`` to SI; returns ``(value_si, si_unit)``.
+
+    Examples
+    --------
+    >>> to_si(0.75, "mm")
+    (0.00075, 'm')
+    """
+    if unit not in _TO_SI:
+        raise DataError(f"unknown unit {unit!r}; known units: {', '.join(sorted(_TO_SI))}")
+    return value * _TO_SI[unit], _SI_UNIT.get(unit, unit)
+
+
+@dataclass(frozen=True)
+class Measurement:
+    """One printed or measured value with its provenance (a row of a measurement table)."""
+
+    id: str
+    quantity: str
+    value_low: float
+    value_high: float
+    unit: str
+    uncertainty: float | None
+    kind: str
+    source: str
+    section: str
+    seed_line: int
+    method: str
+    conditions: str
+
+    @property
+    def printed(self):
+        """The value as the source prints it, with its unit."""
+        low, high = (f"{v:g}" for v in (self.value_low, self.value_high))
+        text = low if low == high else f"{low}–{high}"
+        if self.uncertainty is not None:
+            text += f" ± {self.uncertainty:g}"
+        return f"{text} {self.unit}"
+
+    @property
+    def value(self):
+        """Printed value in SI; the midpoint where the source prints a range."""
+        return to_si(0.5 * (self.value_low + self.value_high), self.unit)[0]
+
+    @property
+    def uncertainty_si(self):
+        """Stated uncertainty in SI, or half the printed range, or ``None``."""
+        if self.uncertainty is not None:
+            return to_si(self.uncertainty, self.unit)[0]
+        if self.value_high != self.value_low:
+            return to_si(0.5 * (self.value_high - self.value_low), self.unit)[0]
+        return None
+
+    @property
+    def si_unit(self):
+        """The SI unit of :attr:`value`."""
+        return to_si(1.0, self.unit)[1]
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """One parameter of a parameter set, as printed, with provenance."""
+
+    name: str
+    value: float
+    unit: str
+    source: str
+    section: str | None = None
+    seed_line: int | None = None
+    note: str | None = None
+
+    @property
+    def value_si(self):
+        """The parameter in SI units."""
+        return to_si(self.value, self.unit)[0]
+
+
+@lru_cache(maxsize=1)
+def _manifest(data_dir):
+    path = Path(data_dir) / "SHA256SUMS"
+    if not path.is_file():
+        raise DataError(f"checksum manifest {path} is missing")
+    sums = {}
+    for lineno, line in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1):
+        if not line.strip():
+            continue
+        parts = line.split()
+        if len(parts) != 2 or len(parts[0]) != 64:
+            raise DataError(f"{path}:{lineno}: expected '<sha256>  <path>', got {line!r}")
+        sums[parts[1]] = parts[0]
+    return sums
+
+
+def verify_checksum(path, data_dir=None):
+    """Read a data file's bytes after checking them against ``data/SHA256SUMS``.
+
+    Parameters
+    ----------
+    path : str or Path
+        File inside the data directory.
+    data_dir : str or Path, optional
+        Data directory; defaults to :data:`DATA_DIR`.
+
+    Returns
+    -------
+    bytes
+        The file's content.
+    """
+    data_dir = Path(data_dir or DATA_DIR).resolve()
+    path = Path(path).resolve()
+    try:
+        rel = path.relative_to(data_dir).as_posix()
+    except ValueError:
+        raise DataError(f"{path} is not inside the data directory {data_dir}") from None
+    sums = _manifest(str(data_dir))
+    if rel not in sums:
+        raise DataError(f"{path} is not listed in {data_dir / 'SHA256SUMS'}")
+    if not path.is_file():
+        raise DataError(f"data file {path} is missing")
+    content = path.read_bytes()
+    digest = hashlib.sha256(content).hexdigest()
+    if digest != sums[rel]:
+        raise DataError(
+            f"{path} does not match its checksum (expected {sums[rel]}, got {digest}): "
+            "data files are never edited in place; restore it from version control"
+        )
+    return content
+
+
+def _number(text, path, lineno, column, *, optional=False):
+    text = text.strip()
+    if optional and text == "":
+        return None
+    try:
+        value = float(text)
+    except ValueError:
+        raise DataError(f"{path}:{lineno}: column {column!r} must be a number, got {text!r}") from None
+    if not math.isfinite(value):
+        raise DataError(f"{path}:{lineno}: column {column!r} must be finite, got {text!r}")
+    return value
+
+
+_MEASUREMENT_COLUMNS = ["id", "quantity", "value_low", "value_high", "unit", "uncertainty",
+                        "kind", "section", "seed_line", "method", "conditions"]
+_KINDS = {"measured", "printed", "simulated"}
+
+
+def load_measurements(name="thesis", data_dir=None):
+    """Load a measurement table ``data/<name>/measurements.csv``.
+
+    Parameters
+    ----------
+    name : str
+        Source key: the folder under ``data/`` (``"thesis"``).
+    data_dir : str or Path, optional
+        Data directory; defaults to :data:`DATA_DIR`.
+
+    Returns
+    -------
+    dict of str to Measurement
+        Rows keyed by their id, in file order.
+    """
+    path = Path(data_dir or DATA_DIR) / name / "measurements.csv"
+    text = verify_checksum(path, data_dir).decode("utf-8")
+    lines = text.splitlines()
+    rows = {}
+    header = None
+    for lineno, fields in _csv_rows(lines):
+        if header is None:
+            if fields != _MEASUREMENT_COLUMNS:
+                raise DataError(f"{path}:{lineno}: header must be {','.join(_MEASUREMENT_COLUMNS)}")
+            header = fields
+            continue
+        if len(fields) != len(header):
+            raise DataError(
+                f"{path}:{lineno}: expected {len(header)} columns, got {len(fields)}"
+            )
+        rec = dict(zip(header, fields))
+        low = _number(rec["value_low"], path, lineno, "value_low")
+        high = _number(rec["value_high"], path, lineno, "value_high")
+        if high < low:
+            raise DataError(f"{path}:{lineno}: value_high ({high}) is below value_low ({low})")
+        unc = _number(rec["uncertainty"], path, lineno, "uncertainty", optional=True)
+        if rec["kind"] not in _KINDS:
+            raise DataError(f"{path}:{lineno}: kind must be one of {sorted(_KINDS)}, got {rec['kind']!r}")
+        if rec["unit"] not in _TO_SI:
+            raise DataError(f"{path}:{lineno}: unknown unit {rec['unit']!r}")
+        if rec["id"] in rows:
+            raise DataError(f"{path}:{lineno}: duplicate id {rec['id']!r}")
+        rows[rec["id"]] = Measurement(
+            id=rec["id"], quantity=rec["quantity"], value_low=low, value_high=high,
+            unit=rec["unit"], uncertainty=unc, kind=rec["kind"], source=name,
+            section=rec["section"], seed_line=int(_number(rec["seed_line"], path, lineno, "seed_line")),
+            method=rec["method"], conditions=rec["conditions"],
+        )
+    if header is None:
+        raise DataError(f"{path}: no header row")
+    return rows
+
+
+def _csv_rows(lines):
+    """Yield (1-based line number, fields) for the non-comment lines of a CSV file."""
+    for lineno, line in enumerate(lines, start=1):
+        if not line.strip() or line.startswith("#"):
+            continue
+        yield lineno, next(csv.reader(io.StringIO(line)))
+
+
+def measurement(measurement_id, name="thesis"):
+    """One row of a measurement table, by id (raises ``KeyError`` listing the ids)."""
+    rows = load_measurements(name)
+    if measurement_id not in rows:
+        raise KeyError(f"unknown measurement id {measurement_id!r}; known: {', '.join(rows)}")
+    return rows[measurement_id]
+
+
+_PARAMETER_KEYS = {"value", "unit", "source", "section", "seed_line", "note"}
+
+
+def load_parameter_set(name="thesis", data_dir=None):
+    """Load the parameter set ``data/params/<name>.toml``.
+
+    Parameters
+    ----------
+    name : str
+        Parameter-set name.
+    data_dir : str or Path, optional
+        Data directory; defaults to :data:`DATA_DIR`.
+
+    Returns
+    -------
+    dict of str to Parameter
+    """
+    path = Path(data_dir or DATA_DIR) / "params" / f"{name}.toml"
+    content = verify_checksum(path, data_dir).decode("utf-8")
+    try:
+        tables = tomllib.loads(content)
+    except tomllib.TOMLDecodeError as exc:
+        raise DataError(f"{path}: {exc}") from None
+    params = {}
+    for key, table in tables.items():
+        where = f"{path}: [{key}]"
+        if not isinstance(table, dict):
+            raise DataError(f"{where} must be a table with value and unit")
+        unknown = set(table) - _PARAMETER_KEYS
+        if unknown or "value" not in table or "unit" not in table or "source" not in table:
+            raise DataError(f"{where} needs value, unit and source (allowed keys: "
+                            f"{', '.join(sorted(_PARAMETER_KEYS))}); got {', '.join(sorted(table))}")
+        value = table["value"]
+        if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+            raise DataError(f"{where}: value must be a finite number, got {value!r}")
+        if table["unit"] not in _TO_SI:
+            raise DataError(f"{where}: unknown unit {table['unit']!r}")
+        params[key] = Parameter(name=key, value=float(value), unit=table["unit"],
+                                source=table["source"], section=table.get("section"),
+                                seed_line=table.get("seed_line"), note=table.get("note"))
+    return params

@@ -1,0 +1,182 @@
+"""Registry of every figure the project regenerates.
+
+A figure is a pair of functions: ``compute(**params) -> FigureData`` (numbers only,
+tested) and ``plot(data) -> matplotlib Figure`` (drawing only). Both the book and the
+``magbench figure`` command go through :func:`render`, so they cannot disagree. Each
+figure's parameters have SI defaults taken from ``data/params``; the figure's footer
+and :func:`caption_provenance` name the figure id, the function that made it and the
+parameters that differ from those defaults.
+"""
+
+import importlib
+from dataclasses import dataclass, field
+
+__all__ = [
+    "FigureParameter", "Series", "FigureData", "FigureSpec", "REGISTRY", "register",
+    "figure_ids", "get_spec", "resolve_parameters", "compute", "render",
+    "caption_provenance", "parse_assignment",
+]
+
+
+@dataclass(frozen=True)
+class FigureParameter:
+    """One input of a figure: SI default, unit and meaning."""
+
+    default: float
+    unit: str
+    description: str
+
+
+@dataclass
+class Series:
+    """One labelled set of columns: ``{name: (unit, values)}``."""
+
+    label: str
+    columns: dict
+
+
+@dataclass
+class FigureData:
+    """The numbers behind a figure, and the parameters actually used (SI)."""
+
+    id: str
+    title: str
+    source: str
+    parameters: dict
+    series: list = field(default_factory=list)
+    extra: dict = field(default_factory=dict)   # drawing hints that are not data
+
+    def to_json_dict(self):
+        """The ``--data`` JSON shape: id, title, source, parameters, series."""
+        import numpy as np
+
+        def values(v):
+            return [float(x) for x in np.ravel(np.asarray(v, dtype=float))]
+
+        return {
+            "id": self.id, "title": self.title, "source": self.source,
+            "parameters": {k: float(v) for k, v in self.parameters.items()},
+            "series": [{"label": s.label,
+                        "columns": {name: {"unit": unit, "values": values(vals)}
+                                    for name, (unit, vals) in s.columns.items()}}
+                       for s in self.series],
+        }
+
+
+@dataclass(frozen=True)
+class FigureSpec:
+    """A registered figure."""
+
+    id: str
+    title: str
+    source: str
+    compute: object
+    plot: object
+    parameters: dict     # name -> FigureParameter
+
+    @property
+    def function_name(self):
+        """Dotted name of the compute function (provenance)."""
+        return f"{self.compute.__module__}.{self.compute.__qualname__}"
+
+
+#: Figure id -> FigureSpec, filled by the modules in :data:`_MODULES` on first use.
+REGISTRY = {}
+_MODULES = ["magbench.figures.thesis_ch1"]
+_loaded = False
+
+
+def register(spec):
+    """Add a :class:`FigureSpec` to the registry (ids must be unique)."""
+    if spec.id in REGISTRY:
+        raise ValueError(f"figure id {spec.id!r} is registered twice")
+    REGISTRY[spec.id] = spec
+    return spec
+
+
+def _load():
+    global _loaded
+    if not _loaded:
+        for name in _MODULES:
+            importlib.import_module(name)
+        _loaded = True
+
+
+def figure_ids():
+    """All registered figure ids, sorted."""
+    _load()
+    return sorted(REGISTRY)
+
+
+def get_spec(figure_id):
+    """The spec of a figure; an unknown id raises ``KeyError`` listing the valid ids."""
+    _load()
+    if figure_id not in REGISTRY:
+        raise KeyError(f"unknown figure id {figure_id!r}; valid ids: {', '.join(sorted(REGISTRY))}")
+    return REGISTRY[figure_id]
+
+
+def resolve_parameters(figure_id, overrides=None):
+    """Defaults of a figure's parameters updated with ``overrides`` (SI numbers).
+
+    An unknown name raises ``KeyError`` listing the figure's parameters; a value that is
+    not a finite number raises ``ValueError`` naming it.
+    """
+    import math
+
+    spec = get_spec(figure_id)
+    values = {name: p.default for name, p in spec.parameters.items()}
+    for name, value in (overrides or {}).items():
+        if name not in values:
+            raise KeyError(f"figure {figure_id} has no parameter {name!r}; "
+                           f"valid: {', '.join(sorted(values)) or '(none)'}")
+        try:
+            number = float(value)
+        except (TypeError, ValueError):
+            raise ValueError(f"parameter {name} of {figure_id} must be a number, got {value!r}") from None
+        if not math.isfinite(number):
+            raise ValueError(f"parameter {name} of {figure_id} must be finite, got {value!r}")
+        values[name] = number
+    return values
+
+
+def compute(figure_id, **overrides):
+    """The numbers behind a figure, with the given parameter overrides."""
+    spec = get_spec(figure_id)
+    params = resolve_parameters(figure_id, overrides)
+    data = spec.compute(**params)
+    data.id, data.title, data.source, data.parameters = spec.id, spec.title, spec.source, params
+    return data
+
+
+def caption_provenance(figure_id, parameters=None):
+    """Caption footer: the id, the function and the parameters that differ from defaults."""
+    spec = get_spec(figure_id)
+    changed = []
+    for name, value in (parameters or {}).items():
+        p = spec.parameters[name]
+        if value != p.default:
+            changed.append(f"{name} = {value:.6g} {p.unit}")
+    diff = "; ".join(changed) if changed else "all parameters at their defaults"
+    return f"[{figure_id}] made by {spec.function_name}; {diff}."
+
+
+def render(figure_id, **overrides):
+    """Compute and draw a figure; returns ``(matplotlib Figure, FigureData)``."""
+    spec = get_spec(figure_id)
+    data = compute(figure_id, **overrides)
+    fig = spec.plot(data)
+    fig.text(0.995, 0.005, caption_provenance(figure_id, data.parameters), ha="right",
+             va="bottom", fontsize=6, color="0.4")
+    return fig, data
+
+
+def parse_assignment(text):
+    """Split ``NAME=VALUE`` (as given to ``--set``) into a name and a float."""
+    if "=" not in text:
+        raise ValueError(f"--set expects NAME=VALUE, got {text!r}")
+    name, value = text.split("=", 1)
+    try:
+        return name.strip(), float(value)
+    except ValueError:
+        raise ValueError(f"--set {name.strip()}: cannot parse {value!r} as a number") from None
