@@ -12,7 +12,7 @@ export OMP_NUM_THREADS := 1
 export OPENBLAS_NUM_THREADS := 1
 export MPLBACKEND := Agg
 
-.PHONY: book test pytest book-check env lock bench clean
+.PHONY: book test pytest book-check env lock bench clean checksums
 
 env: $(STAMP)
 
@@ -56,3 +56,7 @@ lock:
 
 clean:
 	rm -rf _build
+
+# Record the checksums of data/ after a deliberate, reviewed change to a data file.
+checksums:
+	cd data && find . -type f ! -name SHA256SUMS | sed 's|^\./||' | LC_ALL=C sort | xargs sha256sum > SHA256SUMS

@@ -129,10 +129,10 @@ def geomagnetic_longitude(latitude, longitude, pole_latitude, pole_longitude):
     n = _unit_vector(plat, plon)
     z_geo = np.array([0.0, 0.0, 1.0])
     # x' points from the geomagnetic pole towards the geographic pole along their
-    # common meridian; y' = x' × n makes sin Λ match the thesis's sign.
+    # common meridian; y' = n × x' makes sin Λ match the thesis's sign.
     x = z_geo - np.sum(z_geo * n, axis=-1, keepdims=True) * n
     x = x / np.linalg.norm(x, axis=-1, keepdims=True)
-    y = np.cross(x, n)
+    y = np.cross(n, x)
     return np.arctan2(np.sum(r * y, axis=-1), np.sum(r * x, axis=-1))
 
 
@@ -158,8 +158,8 @@ def dipole_equatorial_b(moment, radius):
 
     Examples
     --------
-    >>> round(float(dipole_equatorial_b(8.1e22, 6371e3)) * 1e9)   # thesis dipole [nT]
-    31322
+    >>> round(float(dipole_equatorial_b(8.1e22, 6371e3) * 1e9))   # thesis dipole [nT]
+    31323
     """
     m = as_positive("moment", moment, unit="A·m²")
     r = as_positive("radius", radius, unit="m")

@@ -4,9 +4,9 @@ Only the edges of the library use these: physics functions take and return SI.
 
 Examples
 --------
->>> round(oersted_to_ampere_per_meter(1.0), 3)
+>>> round(float(oersted_to_ampere_per_meter(1.0)), 3)
 79.577
->>> gauss_to_tesla(0.5)
+>>> float(gauss_to_tesla(0.5))
 5e-05
 """
 

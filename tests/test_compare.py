@@ -1,0 +1,32 @@
+"""Model-vs-measurement rows: shape, verdict logic and the chapter-1 findings."""
+
+import numpy as np
+import pytest
+
+from magbench import compare
+
+
+def test_make_row_verdict_and_scaling():
+    row = compare.make_row("x", "q", "s", 2.0e-6, 2.3e-6, 0.25e-6, unit="uT", scale=1e-6)
+    assert row.verdict == "disagrees"
+    assert row.measured == pytest.approx(2.0) and row.difference == pytest.approx(0.3)
+    assert compare.make_row("x", "q", "s", 1.0, 1.1, 0.1 + 1e-12, unit="1").verdict == "agrees"
+
+
+def test_geomagnetic_rows_have_the_public_keys():
+    rows = compare.geomagnetic_rows(epochs=(1960.0, 2016.0))
+    keys = {"id", "quantity", "source", "measured", "uncertainty", "unit", "model",
+            "difference", "tolerance", "verdict"}
+    for row in rows:
+        assert set(row.as_dict()) == keys
+        assert np.isfinite([row.measured, row.model, row.tolerance]).all()
+    by_id = {r.id: r for r in rows}
+    # The thesis's pole is the 1960 pole to its printed digits, not the 2016 one.
+    assert by_id["pole-latitude-1960"].verdict == "agrees"
+    assert by_id["pole-latitude-2016"].verdict == "disagrees"
+
+
+def test_today_decimal_year():
+    import datetime as dt
+
+    assert compare.today_decimal_year(dt.date(2026, 1, 1)) == 2026.0

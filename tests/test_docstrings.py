@@ -1,0 +1,46 @@
+"""House rules for public functions of the physics modules (python-control style):
+every parameter documented with its unit in brackets, and a source line."""
+
+import importlib
+import inspect
+import re
+import subprocess
+import sys
+
+import pytest
+
+PHYSICS = ["magbench.geomag", "magbench.attitude", "magbench.coils", "magbench.units"]
+SOURCE_LINE = re.compile(r"Thesis (eqs?\.|§)|Not in the (thesis|sources)|Kovalenko \(1975\)")
+
+
+def _public_functions():
+    for name in PHYSICS:
+        module = importlib.import_module(name)
+        for fname in getattr(module, "__all__", []):
+            func = getattr(module, fname)
+            if inspect.isfunction(func):
+                yield pytest.param(func, id=f"{name}.{fname}")
+
+
+@pytest.mark.parametrize("func", list(_public_functions()))
+def test_parameters_documented_with_units(func):
+    doc = inspect.getdoc(func) or ""
+    if func.__module__ == "magbench.units":
+        assert doc, "converters need a one-line docstring"
+        return
+    assert SOURCE_LINE.search(doc), "needs a 'Thesis eq.', 'Kovalenko (1975)' or 'Not in the thesis:' line"
+    section = doc.split("Parameters\n----------\n", 1)
+    assert len(section) == 2, "needs a numpydoc Parameters section"
+    body = re.split(r"\n\n[A-Z][a-z]+\n-+\n", section[1])[0]
+    for name in inspect.signature(func).parameters:
+        entry = re.search(rf"^(?:\S+, )*{name}(?:, \S+)* :.*\n((?:    .*\n?)+)", body, re.M)
+        assert entry, f"parameter {name} is not documented"
+        assert re.search(r"\[[^\]]+\]", entry.group(1)), f"parameter {name} lacks a [unit]"
+
+
+def test_physics_modules_do_not_import_plotting_or_io():
+    code = ("import sys, magbench.geomag, magbench.attitude, magbench.coils; "
+            "bad = [m for m in ('matplotlib', 'pandas', 'magbench.figures', 'magbench.data') if m in sys.modules]; "
+            "print(bad); sys.exit(bool(bad))")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert result.returncode == 0, result.stdout + result.stderr

@@ -1,0 +1,67 @@
+"""The figure registry and the command line (contract shapes)."""
+
+import json
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+
+from magbench import figures
+from magbench.cli import main
+
+
+@pytest.mark.parametrize("figure_id", figures.figure_ids())
+def test_every_figure_computes_and_draws(figure_id):
+    fig, data = figures.render(figure_id)
+    d = data.to_json_dict()
+    assert set(d) == {"id", "title", "source", "parameters", "series"}
+    assert d["id"] == figure_id and d["series"]
+    for s in d["series"]:
+        for col in s["columns"].values():
+            assert set(col) == {"unit", "values"} and np.isfinite(col["values"]).all()
+    plt.close(fig)
+
+
+def test_fig02_lines_are_field_lines():
+    # Along each computed line the tangent is parallel to the dipole field (thesis Fig. 2).
+    from magbench import geomag
+
+    data = figures.compute("thesis-fig02", earth_dipole_tilt=0.0)
+    s = data.series[0]
+    x, z = s.columns["x"][1], s.columns["z"][1]
+    pts = np.stack([x, np.zeros_like(x), z], axis=1)
+    b = geomag.dipole_b(pts, [0.0, 0.0, -1.0])
+    tangent = np.gradient(pts, axis=0)
+    cross = np.linalg.norm(np.cross(tangent[1:-1], b[1:-1]), axis=1)
+    rel = cross / (np.linalg.norm(tangent[1:-1], axis=1) * np.linalg.norm(b[1:-1], axis=1))
+    assert np.max(rel) < 1e-3     # finite-difference tangent on 721 points
+
+
+def test_cli_figure_with_set_out_and_data(tmp_path, capsys):
+    out, js = tmp_path / "f.svg", tmp_path / "f.json"
+    assert main(["figure", "ch01-orbit-field", "--set", "orbit_altitude=5e5",
+                 "--out", str(out), "--data", str(js)]) == 0
+    d = json.loads(js.read_text())
+    assert d["parameters"]["orbit_altitude"] == 5e5
+    assert out.stat().st_size > 0
+    assert "orbit_altitude = 500000 m" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["figure", "no-such-fig"], "valid ids"),
+    (["figure", "ch01-orbit-field", "--set", "no_param=1"], "valid: "),
+    (["figure", "ch01-orbit-field", "--set", "orbit_altitude=high"], "cannot parse"),
+    (["figure", "ch01-orbit-field", "--set", "orbit_altitude=-5"], "orbit_altitude"),
+    (["figure", "ch01-orbit-field", "--out", "x.gif"], "--out must end"),
+])
+def test_cli_errors(argv, message, capsys):
+    assert main(argv) != 0
+    assert message in capsys.readouterr().err
+
+
+def test_cli_figures_and_compare(capsys):
+    assert main(["figures"]) == 0
+    assert "thesis-fig01" in capsys.readouterr().out
+    assert main(["compare", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert rows and {"id", "verdict", "tolerance"} <= set(rows[0])

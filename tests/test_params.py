@@ -1,0 +1,40 @@
+"""Chapter parameters and whole-book overrides."""
+
+import numpy as np
+import pytest
+from numpy.testing import assert_allclose
+
+from magbench.data import DataError
+from magbench.params import chapter_parameters
+
+
+def test_defaults_are_si():
+    p = chapter_parameters("ch01", overrides="")
+    assert_allclose(p["earth_dipole_moment"], 8.1e22, rtol=1e-15)     # 8.1e25 emu
+    assert_allclose(p["geomagnetic_pole_longitude"], np.radians(-69.0), rtol=1e-15)
+    assert_allclose(p["orbit_altitude"], 1.0e6, rtol=0)
+
+
+def test_overrides_file(tmp_path, monkeypatch):
+    path = tmp_path / "o.toml"
+    path.write_text("[all]\nearth_dipole_moment = 8.0e22\n[ch01]\norbit_altitude = 5e5\n")
+    monkeypatch.setenv("MAGBENCH_PARAMS", str(path))
+    p = chapter_parameters("ch01")
+    assert p["earth_dipole_moment"] == 8.0e22 and p["orbit_altitude"] == 5e5
+
+
+@pytest.mark.parametrize("text, match", [
+    ("[ch01]\nno_such = 1\n", "no parameter 'no_such'"),
+    ("[ch99]\nx = 1\n", r"unknown section \[ch99\]"),
+    ("[ch01]\norbit_altitude = 'high'\n", "must be a number"),
+])
+def test_bad_overrides(tmp_path, text, match):
+    path = tmp_path / "o.toml"
+    path.write_text(text)
+    with pytest.raises(DataError, match=match):
+        chapter_parameters("ch01", overrides=path)
+
+
+def test_unknown_chapter():
+    with pytest.raises(KeyError, match="ch01"):
+        chapter_parameters("ch42")

@@ -1,0 +1,52 @@
+"""Clear the book's execution cache when anything the notebooks depend on has changed.
+
+jupyter-cache keys a notebook on its code cells only; a change in the library, the
+data, the lock file, the book configuration or the parameter overrides would otherwise
+be served from stale cached outputs. This script hashes all of those and deletes the
+cache directory when the hash differs from the one recorded at the last build.
+"""
+
+import argparse
+import hashlib
+import os
+import shutil
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+INPUTS = ["magbench/**/*.py", "data/**/*", "requirements.lock", "pyproject.toml", "_config.yml"]
+
+
+def fingerprint():
+    digest = hashlib.sha256()
+    files = sorted({p for pattern in INPUTS for p in ROOT.glob(pattern) if p.is_file()
+                    and "__pycache__" not in p.parts})
+    for path in files:
+        digest.update(path.relative_to(ROOT).as_posix().encode())
+        digest.update(path.read_bytes())
+    overrides = os.environ.get("MAGBENCH_PARAMS")
+    if overrides:
+        digest.update(b"MAGBENCH_PARAMS")
+        digest.update(Path(overrides).read_bytes())
+    return digest.hexdigest()
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--cache", required=True, help="execution cache directory")
+    parser.add_argument("--stamp", required=True, help="file recording the last fingerprint")
+    args = parser.parse_args()
+    stamp, cache = Path(args.stamp), Path(args.cache)
+    new = fingerprint()
+    old = stamp.read_text().strip() if stamp.is_file() else None
+    if new != old:
+        if cache.exists():
+            shutil.rmtree(cache)
+        print(f"fingerprint {new[:12]} (was {old[:12] if old else 'none'}): execution cache cleared")
+    else:
+        print(f"fingerprint {new[:12]} unchanged: execution cache kept")
+    stamp.parent.mkdir(parents=True, exist_ok=True)
+    stamp.write_text(new + "\n")
+
+
+if __name__ == "__main__":
+    main()
