@@ -17,8 +17,10 @@ What the thesis gets right and wrong (recomputed here; see the tests):
   from "(23, 25, 26, 27)" by the factor π/4; in fact (28) = (π/4)·(22), (29) = (4/π)·(25),
   (31) = (4/π)·(27), and (30) is identical to (26): the mass × power product does not
   depend on the shape. (23) is cited where (22) is meant.
-* Eq. (32) and the design at N = 240 (mass 0.02 kg, power 2 W, S_r = 2.34·10⁻⁸ m²,
-  d = 0.172 mm, R = 53.5 Ω for the 0.2 mm wire) reproduce with the square-turn formulas.
+* Eq. (32) and the design at N = 240 (mass 0.02 kg, power 2 W, d = 0.172 mm, R = 53.5 Ω
+  for the 0.2 mm wire) reproduce with the square-turn formulas. The printed
+  S_r = 2.34·10⁻⁸ m² (seed line 431) is 2.333·10⁻⁸ m² rounded up; d = 0.172 mm follows from
+  the exact value.
 * The single-layer winding length "L ≈ 0.1 m" (seed line 434) is N√S_r ≈ 0.037 m.
 * The built coil's moment "0.42 A·m²" (seed line 441) is 0.539 A·m² by eq. (20); 0.42 is
   obtained only by mixing the square-turn resistance with the round-turn area.
@@ -163,7 +165,7 @@ def wire_area(diameter):
 
     Notes
     -----
-    Thesis seed line 431 (S_r = 2.34·10⁻⁸ m² "corresponds to d = 0.172 mm") and seed line 439.
+    Thesis §3.2, seed line 431 (S_r "corresponds to d = 0.172 mm") and §3.3, seed line 439.
 
     Examples
     --------
@@ -189,12 +191,16 @@ def wire_diameter(area):
 
     Notes
     -----
-    Thesis seed line 431: S_r = 2.34·10⁻⁸ m² "corresponds to d = 0.172 mm".
+    Thesis §3.2, seed line 431: S_r "corresponds to d = 0.172 mm". The d = 0.172 mm follows
+    from the exact S_r = 2.333·10⁻⁸ m² of eq. (21); the printed S_r = 2.34·10⁻⁸ m² is rounded
+    up and would give 0.173 mm.
 
     Examples
     --------
     >>> round(float(wire_diameter(2.34e-8)) * 1e3, 3)
     0.173
+    >>> round(float(wire_diameter(4 * 0.0175e-6 * 0.4 / 1.2)) * 1e3, 3)
+    0.172
     """
     s = as_positive("area", area, unit="m²")
     return np.sqrt(4.0 * s / np.pi)
@@ -356,7 +362,7 @@ def coil_resistance(turns, side, wire_area, resistivity, shape="round"):
 
     Notes
     -----
-    Thesis seed line 439 ("R = N·r = 53.5 Ω" for 0.2 mm wire, N = 240); reproduced with the
+    Thesis §3.3, seed line 439 ("R = N·r = 53.5 Ω" for 0.2 mm wire, N = 240); reproduced with the
     square turn (42.0 Ω if the turn were round).
 
     Examples
@@ -427,7 +433,8 @@ def wire_area_for_moment(moment, voltage, side, resistivity):
 
     Notes
     -----
-    Thesis eq. (21), seed line 346.
+    Thesis eq. (21), seed line 346. The thesis prints S_r = 2.34·10⁻⁸ m² (seed line 431) for
+    m = 0.4 A·m², U = 12 V, l = 0.1 m; the value is 2.333·10⁻⁸ m² (rounded up by 0.3 %).
 
     Examples
     --------
@@ -942,7 +949,7 @@ def design_magnetorquer(
     max_layers : int, optional
         Number of layers the former can hold [-].
     require_fit : bool, optional
-        If true, designs whose winding does not fit are not feasible.
+        If true, designs whose winding does not fit are not feasible [-].
 
     Returns
     -------
@@ -981,7 +988,7 @@ def design_magnetorquer(
     _check_shape(shape)
     w_max = float(as_positive("max_power", max_power, unit="W"))
     m_max = float(as_positive("max_mass", max_mass, unit="kg"))
-    d_all = as_positive("wire_diameters", wire_diameters, unit="m")
+    d_all = np.atleast_1d(as_positive("wire_diameters", wire_diameters, unit="m"))
     if d_all.ndim != 1 or d_all.size == 0:
         raise ValueError(
             f"wire_diameters must be a non-empty 1-D array, got shape {d_all.shape}"
@@ -1117,7 +1124,7 @@ def rod_demagnetizing_factor(elongation, formula="power"):
     elongation : array_like
         Length over diameter p = l/d [-], at least 10.
     formula : {"power", "rosenblat"}, optional
-        ``"power"``: Kovalenko's fit N ≈ 0.93 p^-1.7 (9.25); ``"rosenblat"``:
+        Which fit [-]: ``"power"``, Kovalenko's N ≈ 0.93 p^-1.7 (9.25); ``"rosenblat"``,
         N = (ln 1.2p − 1)/p² (9.24).
 
     Returns
