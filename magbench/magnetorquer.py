@@ -783,7 +783,7 @@ def mass_power_product_kovalenko(moment, diameter, resistivity, density, fill_fa
 
     Notes
     -----
-    Not in the thesis: Kovalenko (1975) eqs. (8.9) × (8.11), p. 171 (the product itself
+    Not in the thesis: Kovalenko (1975) eqs. (8.9) × (8.11), pp. 170–171 (the product itself
     is not printed there): m_к = 4γ_к L_K/(D k_з j) and P_K = 4ρ j L_K/D.
 
     With k_з = 1, γ_к = ρ̃ and D = l it is the thesis's eq. (26)/(30),
@@ -1179,8 +1179,9 @@ def effective_permeability(permeability, demagnetizing_factor):
     Notes
     -----
     Not in the thesis: Kovalenko (1975) eq. (9.5), p. 179, H = H_к − N J with
-    J = (μ − 1)H (linear material); Bozorth, *Ferromagnetism* (1951), ch. 19. For μ → ∞,
-    μ_eff → 1/N: the shape, not the material, limits a long core.
+    J = (μ − 1)H for a linear, unsaturated material, solved for B = μ0 μ H. For μ → ∞,
+    μ_eff → 1/N: the shape, not the material, limits a long core. Saturation is ignored;
+    Kovalenko's (9.21)–(9.23) model it.
 
     Examples
     --------
