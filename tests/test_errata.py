@@ -19,6 +19,11 @@ EXPECTED_ERRATA = {
     "kovalenko-rms-dipole-R1000": "Table 2 at R+1000 km below the 1965 spectrum",
     "kovalenko-rms-field-1.5R": "Table 2 at 1.5R below the 1965 spectrum",
     "kovalenko-rms-dipole-1.5R": "Table 2 at 1.5R below the 1965 spectrum",
+    "thesis-mtq-built-moment": "eq. (20) gives 0.539 A·m², printed 0.42",
+    "thesis-mtq-current-for-moment": "m = ISN gives 0.167 A, printed 0.24",
+    "thesis-mtq-winding-length": "N·√S_r = 0.037 m, printed ≈ 0.1 m",
+    "thesis-mtq-wire-area": "eq. (21) gives 2.333e-8 m², printed 2.34e-8",
+    "kovalenko-e02-torque-per-mass": "B_r B/(μ0 γ) = 0.743e-2, printed 0.75e-2",
 }
 
 CHECKS = source_checks()
