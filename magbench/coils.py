@@ -514,12 +514,14 @@ def thesis_printed_ampere_turns(center_h, radius, spacing_ratio):
 
 def _pair_deviation(rho, z, separation_ratio):
     """| |B| − B0 | / B0 of a unit-radius symmetric pair at (ρ, z) in radii."""
-    pts = np.stack(np.broadcast_arrays(rho, 0.0 * rho, z), axis=-1).reshape(-1, 3)
-    pts = np.vstack([np.zeros((1, 3)), pts])
+    rho, z = np.broadcast_arrays(np.asarray(rho, dtype=float), np.asarray(z, dtype=float))
+    pts = np.zeros((rho.size + 1, 3))
+    pts[1:, 0] = rho.ravel()
+    pts[1:, 2] = z.ravel()
     h = separation_ratio / 2.0
     b = _coaxial_unit(pts, [-h, h], [1.0, 1.0])
-    mag = np.linalg.norm(b, axis=-1)
-    return np.abs(mag[1:] / mag[0] - 1.0).reshape(np.shape(rho))
+    mag = np.sqrt(np.sum(b * b, axis=-1))
+    return np.abs(mag[1:] / mag[0] - 1.0).reshape(rho.shape)
 
 
 #: Polar angles (by the pair's mirror symmetry, a quadrant suffices) and the fraction
@@ -529,26 +531,36 @@ _UNIT = np.linspace(0.0, 1.0, 201)
 
 
 def _sphere_boundary_dev(s, ratio):
-    return float(_pair_deviation(s * np.sin(_THETA), s * np.cos(_THETA), ratio).max())
+    """Largest deviation on the spheres of radii ``s`` (array or scalar, in radii)."""
+    s = np.asarray(s, dtype=float)[..., None]
+    return _pair_deviation(s * np.sin(_THETA), s * np.cos(_THETA), ratio).max(axis=-1)
 
 
 def _cylinder_boundary_dev(c, aspect, ratio):
-    half = aspect * c                       # half-length = aspect · radius
-    rho = np.concatenate([np.full_like(_UNIT, c), c * _UNIT])
-    z = np.concatenate([half * _UNIT, np.full_like(_UNIT, half)])
-    return float(_pair_deviation(rho, z, ratio).max())
+    """Largest deviation on the surfaces of cylinders of radii ``c``, half-length aspect·c."""
+    c = np.asarray(c, dtype=float)[..., None]
+    half = aspect * c
+    rho = np.concatenate(np.broadcast_arrays(c + 0.0 * _UNIT, c * _UNIT), axis=-1)
+    z = np.concatenate(np.broadcast_arrays(half * _UNIT, half + 0.0 * _UNIT), axis=-1)
+    return _pair_deviation(rho, z, ratio).max(axis=-1)
+
+
+#: Radii scanned (as fractions of the largest possible) before Brent's refinement.
+_SCAN = np.unique(np.concatenate([np.geomspace(1e-4, 1.0, 80), np.linspace(0.0, 1.0, 201)[1:]]))
 
 
 def _first_crossing(f, tol, s_max):
-    """Smallest s in (0, s_max) with f(s) = tol, f(0) = 0 (grid scan, then Brent)."""
-    grid = np.unique(np.concatenate([np.geomspace(1e-4, 1.0, 200), np.linspace(0, 1, 401)[1:]]))
-    grid = grid * s_max
-    prev = 0.0
-    for s in grid:
-        if f(s) > tol:
-            return optimize.brentq(lambda t: f(t) - tol, prev, s, xtol=1e-12 * s_max, rtol=1e-13)
-        prev = s
-    return s_max
+    """Smallest s in (0, s_max) with f(s) = tol, given f(0) = 0 (grid scan, then Brent).
+
+    ``f`` is vectorised over s.
+    """
+    grid = _SCAN * s_max
+    above = np.flatnonzero(f(grid) > tol)
+    if above.size == 0:
+        return s_max
+    j = above[0]
+    lo = grid[j - 1] if j > 0 else 0.0
+    return optimize.brentq(lambda t: float(f(t)) - tol, lo, grid[j], xtol=1e-12 * s_max, rtol=1e-13)
 
 
 def sphere_nonuniformity(radius, separation, sphere_radius):
@@ -583,7 +595,7 @@ def sphere_nonuniformity(radius, separation, sphere_radius):
     a = _positive_scalar("radius", radius, unit="m")
     d = _nonnegative_scalar("separation", separation, unit="m")
     s = _nonnegative_scalar("sphere_radius", sphere_radius, unit="m")
-    return _sphere_boundary_dev(s / a, d / a)
+    return float(_sphere_boundary_dev(s / a, d / a))
 
 
 def cylinder_nonuniformity(radius, separation, cylinder_radius, cylinder_length):
@@ -626,7 +638,7 @@ def cylinder_nonuniformity(radius, separation, cylinder_radius, cylinder_length)
     inner = float(_pair_deviation(rho, z, d / a).max())
     aspect = h / c if c > 0 else 0.0
     if c > 0:
-        edge = _cylinder_boundary_dev(c, aspect, d / a)
+        edge = float(_cylinder_boundary_dev(c, aspect, d / a))
     else:
         edge = float(_pair_deviation(0.0 * _UNIT, h * _UNIT, d / a).max())
     return max(inner, edge)
@@ -658,8 +670,8 @@ def uniform_sphere_radius(radius, separation, tolerance):
 
     Examples
     --------
-    >>> round(float(uniform_sphere_radius(1.0, 1.0, 0.01)), 2)
-    0.32
+    >>> round(float(uniform_sphere_radius(1.0, 1.0, 0.01)), 3)   # Helmholtz, δ = 1 %
+    0.314
     """
     a = _positive_scalar("radius", radius, unit="m")
     d = _nonnegative_scalar("separation", separation, unit="m")
@@ -733,16 +745,17 @@ def optimal_separation(radius, tolerance):
     Notes
     -----
     Not in the thesis, which chose d = 1.116a citing its ref. [1] (Pastena & Grassi
-    2002, unverified). For d slightly above a the axial field dips at the centre and
-    overshoots off-centre; the sphere grows with d until that overshoot reaches δ, then
-    collapses. The optimum is that equal-ripple spacing: found by a scan of d/a in
-    [0.9, 1.3] in steps of 0.002 and bisection of the step in which the radius drops,
-    to 1e-6 a. Gives d/a = 1.009 (δ = 0.1 %), 1.024 (1 %), 1.034 (5 %).
+    2002, unverified). Above d = a the axial field dips at the centre and rises
+    off-centre, so the sphere radius (as a function of d) has a kinked maximum where the
+    limiting direction changes. Found by a scan of d/a over [0.9, 1.3] in steps of 0.01,
+    then a bounded Brent search (which needs no smoothness) to 1e-7 a in the best
+    bracket. Gives d/a = 1.0089 (δ = 0.1 %), 1.0234 (1 %), 1.0332 (5 %) for the
+    deviation of |B| (the vector deviation |B − B0|/B0 gives the same to 1e-4).
 
     Examples
     --------
-    >>> round(float(optimal_separation(1.0, 0.01)), 3)
-    1.024
+    >>> round(float(optimal_separation(1.0, 0.01)), 4)
+    1.0234
     """
     a = _positive_scalar("radius", radius, unit="m")
     tol = _positive_scalar("tolerance", tolerance)
@@ -753,20 +766,16 @@ def optimal_separation(radius, tolerance):
         s_wire = math.hypot(1.0, ratio / 2.0)
         return _first_crossing(lambda s: _sphere_boundary_dev(s, ratio), tol, s_wire)
 
-    ratios = np.arange(0.9, 1.3 + 1e-9, 0.002)
+    ratios = np.arange(0.9, 1.3 + 1e-9, 0.01)
     sizes = np.array([size(r) for r in ratios])
     j = int(np.argmax(sizes))
     if j == len(ratios) - 1 or j == 0:
         raise ValueError(f"tolerance {tol!r} puts the optimum outside d/a in [0.9, 1.3]")
-    lo, hi, s_lo = ratios[j], ratios[j + 1], sizes[j]
-    while hi - lo > 1e-6:
-        mid = 0.5 * (lo + hi)
-        s_mid = size(mid)
-        if s_mid >= s_lo:
-            lo, s_lo = mid, s_mid
-        else:
-            hi = mid
-    return a * 0.5 * (lo + hi)
+    best = optimize.minimize_scalar(
+        lambda r: -size(r), bounds=(ratios[j - 1], ratios[j + 1]), method="bounded",
+        options={"xatol": 1e-7},
+    )
+    return a * float(best.x)
 
 
 # --------------------------------------------------------------------------- squares
