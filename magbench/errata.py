@@ -250,8 +250,42 @@ def magnetorquer_checks():
     ]
 
 
+def simulator_checks():
+    """Thesis §2 (the Helmholtz field simulator): printed design numbers that do not
+    follow from eq. (16) and the winding formulas. The chapter is still to come."""
+    from . import coils
+
+    p = load_parameter_set("thesis")
+    a, ratio = p["sim_coil_radius"].value_si, p["sim_spacing_ratio"].value_si
+    n, i = p["sim_turns"].value_si, p["sim_current"].value_si
+    dw, rho = p["sim_wire_diameter"].value_si, p["copper_resistivity"].value_si
+    h = p["sim_design_h"].value_si
+    return [
+        SourceCheck(
+            id="thesis-sim-ampere-turns", chapter="ch02", source="thesis",
+            location="eq. (16), seed lines 263–270", quantity="Ampere-turns per coil for 250 A/m (a = 0.5 m, d/a = 1.116)",
+            printed=258.0, computed=float(coils.helmholtz_ampere_turns(h, a, ratio * a)), tolerance=0.5,
+            unit="A", explanation=("Eq. (16) gives 187.7 A·turns; the printed 258 is reproduced exactly by "
+                                   "evaluating (d/2a)² as (d/a)²/2 (magbench.coils.thesis_printed_ampere_turns)."),
+            computation="magbench.coils.helmholtz_ampere_turns"),
+        SourceCheck(
+            id="thesis-sim-coil-resistance", chapter="ch02", source="thesis",
+            location="seed line 278", quantity="Resistance of a simulator coil, N = 110, 0.75 mm copper",
+            printed=12.4, computed=float(coils.winding_resistance(a, n, dw, rho)), tolerance=0.05,
+            unit="ohm", explanation="R = 2πaρN/S0 gives 13.69 Ω; 12.4 Ω is the value for N = 100.",
+            computation="magbench.coils.winding_resistance"),
+        SourceCheck(
+            id="thesis-sim-coil-power", chapter="ch02", source="thesis",
+            location="seed line 286", quantity="Power of a simulator coil, N = 110, I = 2.3 A",
+            printed=83.0, computed=float(coils.winding_power(a, n, dw, rho, i)), tolerance=0.5,
+            unit="W", explanation="P = UI gives 72.4 W; 83 W fits N = 100 and I = 2.58 A (NI = 258).",
+            computation="magbench.coils.winding_power"),
+    ]
+
+
 #: Source-check providers by chapter, in book order.
-CHECK_PROVIDERS = {"ch01": [geomagnetic_checks, kovalenko_field_checks], "ch03": [magnetorquer_checks]}
+CHECK_PROVIDERS = {"ch01": [geomagnetic_checks, kovalenko_field_checks], "ch02": [simulator_checks],
+                   "ch03": [magnetorquer_checks]}
 
 
 def source_checks(chapter=None):
