@@ -29,7 +29,7 @@ $(STAMP): requirements.lock pyproject.toml
 # The book, with the execution cache invalidated whenever the library, data, lock file
 # or parameter overrides change (jupyter-cache itself only looks at cell sources).
 book: $(STAMP)
-	$(BIN)/python tools/fingerprint.py --cache _build/.jupyter_cache --stamp _build/.fingerprint
+	$(BIN)/python tools/fingerprint.py --cache _build/.jupyter_cache --doctrees _build/.doctrees --stamp _build/.fingerprint
 	$(JB) build . -W -n --keep-going
 	$(BIN)/python tools/check_book.py _build/html
 

@@ -2,8 +2,10 @@
 
 jupyter-cache keys a notebook on its code cells only; a change in the library, the
 data, the lock file, the book configuration or the parameter overrides would otherwise
-be served from stale cached outputs. This script hashes all of those and deletes the
-cache directory when the hash differs from the one recorded at the last build.
+be served from stale cached outputs. This script hashes all of those and, when the hash
+differs from the one recorded at the last build, deletes the execution cache and the
+Sphinx environment (doctrees): Sphinx re-reads only changed sources, so without the
+second step an unchanged chapter would keep its old outputs.
 """
 
 import argparse
@@ -34,14 +36,17 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cache", required=True, help="execution cache directory")
     parser.add_argument("--stamp", required=True, help="file recording the last fingerprint")
+    parser.add_argument("--doctrees", required=True, help="Sphinx environment directory")
     args = parser.parse_args()
     stamp, cache = Path(args.stamp), Path(args.cache)
     new = fingerprint()
     old = stamp.read_text().strip() if stamp.is_file() else None
     if new != old:
-        if cache.exists():
-            shutil.rmtree(cache)
-        print(f"fingerprint {new[:12]} (was {old[:12] if old else 'none'}): execution cache cleared")
+        for stale in (cache, Path(args.doctrees)):
+            if stale.exists():
+                shutil.rmtree(stale)
+        print(f"fingerprint {new[:12]} (was {old[:12] if old else 'none'}): execution cache "
+              "and Sphinx environment cleared")
     else:
         print(f"fingerprint {new[:12]} unchanged: execution cache kept")
     stamp.parent.mkdir(parents=True, exist_ok=True)
