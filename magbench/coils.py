@@ -7,9 +7,9 @@ Everything is SI: metres, amperes, tesla, A/m, ohms, watts, kilograms.
 
 The exact loop field is evaluated with Bulirsch's complete elliptic integral ``cel``
 in the form of Ortner, Leitner & Slanovc (2023), rearranged so that no term cancels:
-the relative error of every component is a few 1e-16 on the axis, near it, at the
-centre, in the far field and near the wire (for exactly representable distances to
-the wire; see :func:`loop_b` for the conditioning near the wire).
+every component is within 3e-15 of |B| (and B_ρ within 3e-15 of itself) on the axis,
+near it, at the centre, in the far field and near the wire (for exactly representable
+distances to the wire; see :func:`loop_b` for the conditioning near the wire).
 """
 
 import math
