@@ -19,6 +19,7 @@ from scipy import optimize
 
 from ._validate import as_finite, as_positive, as_vectors
 from .constants import MU_0
+from .magnetorquer import coil_mass, coil_resistance, wire_area
 
 __all__ = [
     "loop_b",
@@ -938,11 +939,6 @@ def square_pair_spacing(side):
 # --------------------------------------------------------------------------- electrics
 
 
-def _cross_section(wire_diameter):
-    dw = as_positive("wire_diameter", wire_diameter, unit="m")
-    return np.pi * dw**2 / 4.0
-
-
 def winding_resistance(radius, turns, wire_diameter, resistivity):
     r"""Resistance of a circular winding.
 
@@ -976,10 +972,10 @@ def winding_resistance(radius, turns, wire_diameter, resistivity):
     >>> round(float(winding_resistance(0.5, 110, 0.75e-3, 0.0175e-6)), 2)
     13.69
     """
+    # A circular winding of radius a is the magnetorquer's round coil of turn diameter 2a.
     a = as_positive("radius", radius, unit="m")
-    n = as_positive("turns", turns)
-    rho = as_positive("resistivity", resistivity, unit="ohm m")
-    return 2.0 * np.pi * a * rho * n / _cross_section(wire_diameter)
+    return coil_resistance(turns, 2.0 * a, wire_area(as_positive("wire_diameter", wire_diameter, unit="m")),
+                           resistivity, shape="round")
 
 
 def winding_voltage(radius, turns, wire_diameter, resistivity, current):
@@ -1082,6 +1078,5 @@ def winding_mass(radius, turns, wire_diameter, density):
     1.36
     """
     a = as_positive("radius", radius, unit="m")
-    n = as_positive("turns", turns)
-    gamma = as_positive("density", density, unit="kg/m^3")
-    return gamma * 2.0 * np.pi * a * n * _cross_section(wire_diameter)
+    return coil_mass(turns, 2.0 * a, wire_area(as_positive("wire_diameter", wire_diameter, unit="m")),
+                     density, shape="round")

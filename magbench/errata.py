@@ -13,9 +13,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import attitude, geomag
-from .constants import EARTH_POLAR_MOMENT_OF_INERTIA, EARTH_ROTATION_RATE, MU_0
+from .constants import EARTH_POLAR_MOMENT_OF_INERTIA, EARTH_ROTATION_RATE
 from .data import load_measurements, load_parameter_set
 from .params import chapter_parameters
+from .units import ampere_per_meter_to_oersted, tesla_to_oersted
 
 __all__ = ["SourceCheck", "CHECK_PROVIDERS", "source_checks", "errata", "geomagnetic_checks",
            "kovalenko_field_checks"]
@@ -52,17 +53,16 @@ def geomagnetic_checks(params=None):
     """Chapter 1: thesis §1 and Kovalenko ch. 2 (the dipole values)."""
     p = params or chapter_parameters("ch01")
     kov = load_measurements("kovalenko")
-    oe = 1000.0 / (4.0 * np.pi)      # A/m per Oe
     m, r = p["earth_dipole_moment"], p["earth_radius"]
     lat, lon = p["laboratory_latitude"], p["laboratory_longitude"]
     phi = geomag.geomagnetic_latitude(lat, lon, p["geomagnetic_pole_latitude"],
                                       p["geomagnetic_pole_longitude"])
     printed_j = float(np.arctan(-2.0 * np.tan(phi)))     # thesis eq. (3) as printed
-    pole_h = float(geomag.dipole_total_b(np.pi / 2, m, r)) / MU_0 / oe
+    pole_h = float(tesla_to_oersted(geomag.dipole_total_b(np.pi / 2, m, r)))
 
     g10, g11, h11 = (kov[k].value for k in ("kov-g10-1965", "kov-g11-1965", "kov-h11-1965"))
     b0_1965 = float(np.sqrt(g10**2 + g11**2 + h11**2))
-    mean_dipole = float(geomag.dipole_mean_surface_b(b0_1965)) / MU_0 / oe
+    mean_dipole = float(tesla_to_oersted(geomag.dipole_mean_surface_b(b0_1965)))
 
     jc, wc = p["mockup_inertia"], p["mockup_initial_rate"]
     exact = abs(float(attitude.momentum_exchange_energy_ratio(
@@ -88,7 +88,7 @@ def geomagnetic_checks(params=None):
             id="thesis-equator-field", chapter="ch01", source="thesis",
             location="§1.1, seed line 118 (copied from Kovalenko p. 35)",
             quantity="Dipole field at the equator, M/R³",
-            printed=0.31, computed=float(geomag.dipole_equatorial_b(m, r)) / MU_0 / oe,
+            printed=0.31, computed=float(tesla_to_oersted(geomag.dipole_equatorial_b(m, r))),
             tolerance=0.005, unit="Oe",
             explanation="M/R³ with M = 8.1·10²⁵ CGS and R = 6371 km.",
             computation="magbench.geomag.dipole_equatorial_b",
@@ -130,7 +130,7 @@ def geomagnetic_checks(params=None):
             id="kovalenko-mean-dipole-field", chapter="ch01", source="kovalenko",
             location="§2.2, p. 40 (seed line 41)",
             quantity="Mean dipole field over the Earth's surface, from the book's own Table 1",
-            printed=kov["kov-mean-field-dipole"].value / oe, computed=mean_dipole,
+            printed=float(ampere_per_meter_to_oersted(kov["kov-mean-field-dipole"].value)), computed=mean_dipole,
             tolerance=0.00005, unit="Oe",
             explanation=("The closed-form surface mean of the dipole field with Table 1's g10, g11, "
                          "h11 (−30339, −2123, 5758 γ) is 0.4272 Oe; the book prints 0.4283."),
@@ -150,8 +150,6 @@ def kovalenko_field_checks():
     from .constants import IGRF_REFERENCE_RADIUS
 
     kov = load_measurements("kovalenko")
-    oe = 1000.0 / (4.0 * np.pi)
-    to_oe = 1.0 / (MU_0 * oe)
     g, h = igrf.igrf_gauss_coefficients(1965.0, max_degree=6)
     r_e = 6371.0e3                     # the book's Earth radius (p. 35)
     checks = []
@@ -164,19 +162,19 @@ def kovalenko_field_checks():
                 id=f"kovalenko-rms-{kind}-{tag}", chapter="ch01", source="kovalenko",
                 location=f"Table 2, p. 40 (seed line {row.seed_line})",
                 quantity=f"RMS {'total' if kind == 'field' else 'dipole'} field at {row.conditions}",
-                printed=row.value / oe, computed=float(value) * to_oe, tolerance=0.0005, unit="Oe",
+                printed=float(ampere_per_meter_to_oersted(row.value)), computed=float(tesla_to_oersted(value)), tolerance=0.0005, unit="Oe",
                 explanation=("Lowes spectrum of IGRF-14 1965.0 up to degree 6 at the book's "
                              "R = 6371 km. Where the printed value is lower (R + 1000 km, 1.5R) the "
                              "table disagrees with itself too: its n = 1 entry at R + 1000 km (793.8) "
                              "is 0.6 % below the (R/r)⁶ scaling of its own entry at R (1915.3)."),
                 computation="magbench.geomag.lowes_spectrum"))
-    mean6 = igrf.igrf_mean_surface_b(1965.0, max_degree=6) * to_oe
-    mean1 = igrf.igrf_mean_surface_b(1965.0, max_degree=1) * to_oe
+    mean6 = float(tesla_to_oersted(igrf.igrf_mean_surface_b(1965.0, max_degree=6)))
+    mean1 = float(tesla_to_oersted(igrf.igrf_mean_surface_b(1965.0, max_degree=1)))
     checks += [
         SourceCheck(id="kovalenko-mean-field-n6", chapter="ch01", source="kovalenko",
                     location="§2.2, p. 40 (seed line 41)",
                     quantity="Mean total field over the Earth's surface, degrees n ≤ 6",
-                    printed=kov["kov-mean-field-n6"].value / oe, computed=mean6, tolerance=0.0005,
+                    printed=float(ampere_per_meter_to_oersted(kov["kov-mean-field-n6"].value)), computed=mean6, tolerance=0.0005,
                     unit="Oe", explanation="Gauss–Legendre surface mean of |B| of IGRF-14 1965.0.",
                     computation="magbench.igrf.igrf_mean_surface_b"),
         SourceCheck(id="kovalenko-dipole-accuracy", chapter="ch01", source="kovalenko",

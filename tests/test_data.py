@@ -86,21 +86,16 @@ def test_malformed_row_names_file_and_line(tmp_path):
         data.load_measurements("thesis", data_dir=target)
 
 
-def test_malformed_toml_names_file(tmp_path):
+@pytest.mark.parametrize("appended, match", [
+    ("\n[broken\n", r"thesis.toml: .*line"),                                   # TOML syntax
+    ('\n[extra]\nvalue = 1.0\nsource = "ours"\n', r"\[extra\] needs value, unit and source"),
+])
+def test_malformed_parameter_file_names_file(tmp_path, appended, match):
     target = _copy_data(tmp_path)
     path = target / "params" / "thesis.toml"
-    path.write_text(path.read_text() + "\n[broken\n")
+    path.write_text(path.read_text() + appended)
     _rehash(target)
-    with pytest.raises(DataError, match=r"thesis.toml: .*line"):
-        data.load_parameter_set("thesis", data_dir=target)
-
-
-def test_parameter_without_unit_is_rejected(tmp_path):
-    target = _copy_data(tmp_path)
-    path = target / "params" / "thesis.toml"
-    path.write_text(path.read_text() + '\n[extra]\nvalue = 1.0\nsource = "ours"\n')
-    _rehash(target)
-    with pytest.raises(DataError, match=r"\[extra\] needs value, unit and source"):
+    with pytest.raises(DataError, match=match):
         data.load_parameter_set("thesis", data_dir=target)
 
 

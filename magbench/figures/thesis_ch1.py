@@ -107,7 +107,7 @@ def _fig01_parameters():
 
 # --- thesis Fig. 2: geomagnetic coordinates and the tilted dipole -------------------------
 
-def compute_fig02(earth_dipole_tilt, latitude, geomagnetic_latitude_deg_step):
+def compute_fig02(earth_dipole_tilt, geomagnetic_latitude_deg_step):
     """Dipole field lines r = L cos²λ_m in the plane of the rotation and dipole axes.
 
     Coordinates are in Earth radii, with the rotation axis vertical and the geomagnetic
@@ -130,7 +130,7 @@ def compute_fig02(earth_dipole_tilt, latitude, geomagnetic_latitude_deg_step):
             series.append(Series(f"L = {shell:.3g} ({'east' if side > 0 else 'west'} side)",
                                  {"x": ("R_E", x), "z": ("R_E", z)}))
     return FigureData("thesis-fig02", "Geomagnetic coordinates: the tilted centred dipole", SOURCE,
-                      {}, series, extra={"tilt": earth_dipole_tilt, "latitude": latitude})
+                      {}, series, extra={"tilt": earth_dipole_tilt})
 
 
 def plot_fig02(data):
@@ -168,7 +168,6 @@ def _fig02_parameters():
     p = _defaults()
     return {
         "earth_dipole_tilt": FigureParameter(p["earth_dipole_tilt"], "rad", "dipole tilt to the rotation axis"),
-        "latitude": FigureParameter(p["laboratory_latitude"], "rad", "latitude of the laboratory (marked)"),
         "geomagnetic_latitude_deg_step": FigureParameter(10.0, "deg", "spacing of field-line footpoints"),
     }
 
