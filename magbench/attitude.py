@@ -7,7 +7,7 @@ import numpy as np
 
 from ._validate import as_finite, as_positive
 
-__all__ = ["momentum_exchange_energy_ratio", "thesis_energy_ratio"]
+__all__ = ["momentum_exchange_energy_ratio", "thesis_energy_ratio", "two_coil_torque"]
 
 
 def momentum_exchange_energy_ratio(spacecraft_inertia, spacecraft_rate, rate_change,
@@ -89,3 +89,34 @@ def thesis_energy_ratio(spacecraft_inertia, earth_inertia):
     """
     return (as_positive("spacecraft_inertia", spacecraft_inertia, unit="kg·m²")
             / as_positive("earth_inertia", earth_inertia, unit="kg·m²"))
+
+
+def two_coil_torque(psi, moment_1, moment_2, field):
+    r"""Torque about the vertical on the mock-up's two horizontal, orthogonal coils.
+
+    Parameters
+    ----------
+    psi : array_like
+        Angle ψ from the horizontal field to coil 1's dipole axis [rad].
+    moment_1, moment_2 : array_like
+        Dipole moments of coil 1 (along x') and coil 2 (along y') [A·m²].
+    field : array_like
+        Horizontal field magnitude B0 [T].
+
+    Returns
+    -------
+    ndarray
+        :math:`\tau_z = -B_0\,(m_1 \sin\psi + m_2 \cos\psi)` [N·m].
+
+    Notes
+    -----
+    Thesis eq. (36), seed lines 508–512 (the right-hand side of J ω̇ = τ_z); with
+    m₂ = 0 it is the restoring torque of eqs. (34)–(35). No argument checks: this is the
+    inner kernel of simulations that check their inputs once.
+
+    Examples
+    --------
+    >>> float(two_coil_torque(0.5 * np.pi, 0.4, 0.0, 1e-4))
+    -4e-05
+    """
+    return -field * (moment_1 * np.sin(psi) + moment_2 * np.cos(psi))

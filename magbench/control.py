@@ -7,7 +7,9 @@ is saturated.
 
 import numpy as np
 
-__all__ = ["pid_step"]
+from ._validate import as_positive
+
+__all__ = ["pid_step", "pid_gains_for_triple_pole"]
 
 
 def pid_step(error, error_rate, integral, dt, kp, ki, kd, output_limit=np.inf):
@@ -58,3 +60,41 @@ def pid_step(error, error_rate, integral, dt, kp, ki, kd, output_limit=np.inf):
     output = np.clip(unsaturated, -output_limit, output_limit)
     winding_up = (output != unsaturated) & (np.sign(ki * error) == np.sign(unsaturated))
     return output, np.where(winding_up, integral, candidate)
+
+
+def pid_gains_for_triple_pole(inertia, field, bandwidth):
+    r"""PID gains that put the linearised loop's three poles at s = −ω_b.
+
+    Parameters
+    ----------
+    inertia : array_like
+        Moment of inertia J about the vertical [kg·m²], > 0.
+    field : array_like
+        Field magnitude B0 [T], > 0.
+    bandwidth : array_like
+        The triple pole's magnitude ω_b [rad/s], > 0.
+
+    Returns
+    -------
+    kp, ki, kd : ndarray
+        Gains [A·m²/rad], [A·m²/(rad·s)], [A·m²·s/rad] in the SI reading of eq. (37).
+
+    Notes
+    -----
+    Not in the thesis: a starting point for stable SI gains. Eqs. (35)–(37) linearised
+    about ψ = ψ_des give the characteristic polynomial
+    :math:`J s^3 + B_0 K_d s^2 + B_0 K_p s + B_0 K_i`; matching it to
+    :math:`J (s + \omega_b)^3` gives
+    :math:`K_d = 3 J \omega_b / B_0`, :math:`K_p = 3 J \omega_b^2 / B_0`,
+    :math:`K_i = J \omega_b^3 / B_0`.
+
+    Examples
+    --------
+    >>> kp, ki, kd = pid_gains_for_triple_pole(0.005, 1e-4, 0.1)
+    >>> [round(float(k), 9) for k in (kp, ki, kd)]
+    [1.5, 0.05, 15.0]
+    """
+    j = as_positive("inertia", inertia, unit="kg·m²")
+    b = as_positive("field", field, unit="T")
+    w = as_positive("bandwidth", bandwidth, unit="rad/s")
+    return 3.0 * j * w**2 / b, j * w**3 / b, 3.0 * j * w / b
