@@ -7,7 +7,7 @@ is the only place that knows about myst-nb's ``glue``.
 
 from pathlib import Path
 
-__all__ = ["provenance", "figure", "glue_number", "compare_table", "checks_table"]
+__all__ = ["provenance", "figure", "glue_number", "compare_table", "checks_table", "benchmark_result"]
 
 
 def provenance():
@@ -77,3 +77,18 @@ def checks_table(checks):
         "computed": f"{c.computed:.5g}", "tolerance": f"{c.tolerance:.2g}", "unit": c.unit,
         "verdict": "reproduces" if c.agrees else "does not reproduce"} for c in checks],
         index=[c.id for c in checks])
+
+
+def benchmark_result(name):
+    """The record of the last ``make bench`` run of ``benchmarks/bench_<name>.py``.
+
+    Returns the dict written by ``benchmarks/run.py``: ``date``, ``machine`` and the
+    script's own ``result``. The book quotes speed-ups from these committed records
+    rather than timing code during the build, where other load would distort them.
+    """
+    import json
+
+    path = Path(__file__).resolve().parents[1] / "benchmarks" / "results" / f"{name}.json"
+    if not path.exists():
+        raise FileNotFoundError(f"no benchmark record {path}; run `make bench` first")
+    return json.loads(path.read_text(encoding="utf-8"))
