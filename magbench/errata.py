@@ -197,8 +197,7 @@ def kovalenko_field_checks():
 
 def magnetorquer_checks():
     """Thesis §3 (the magnetorquers) and Kovalenko's actuator examples: the printed
-    values that do not reproduce. The library and its tests are in place; the chapter
-    that walks through them is still to come."""
+    values that do not reproduce (chapter 3 of the book walks through them)."""
     from . import magnetorquer as mtq
 
     p = load_parameter_set("thesis")

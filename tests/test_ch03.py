@@ -264,3 +264,34 @@ def test_cli_design_coil_argument_errors(argv, capsys):
         main(argv)
     assert exc.value.code == 2
     assert "error" in capsys.readouterr().err
+
+
+# --- figures ---------------------------------------------------------------------------------
+
+def test_fig09_to_scale_and_bad_parameters():
+    from magbench import figures
+
+    data = figures.compute("thesis-fig09")
+    # the winding band is N × pitch wide: 240 × 0.226 mm (IEC grade-1 maximum overall diameter)
+    assert_allclose(data.extra["width"], 240 * 0.226e-3, **EXACT)
+    with pytest.raises(ValueError, match="coils must be 2 or 3"):
+        figures.compute("thesis-fig09", coils=4)
+    with pytest.raises(ValueError, match="more than the side"):
+        figures.compute("thesis-fig09", mtq_turns=1000)
+
+
+def test_actuator_figure_agrees_with_the_library():
+    from magbench import figures
+
+    data = figures.compute("ch03-actuators")
+    cols = {k: np.asarray(v, float) for k, (u, v) in data.series[0].columns.items()}
+    t = load_wire_table("iec60317")
+    coil = mt.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, t.nominal_diameter, RHO, GAMMA,
+                                  require_fit=True, overall_diameters=t.max_overall_diameter)["min_mass"]
+    assert_allclose([cols["mass"][0], cols["power"][0]], [coil["mass"], coil["power"]], **EXACT)
+    # the rod's central magnetisation from the curve (9.23) reaches at least the assumed J°,
+    # so its moment is at least the required 0.4 A·m²
+    assert cols["moment"][1] >= 0.4
+    # the permanent magnet: m = γ L μ0/B_r
+    assert_allclose(cols["mass"][2], 7.5e3 * 0.4 * MU_0 / 1.4, **EXACT)
+    assert np.all(cols["power"][2:] == 0) and np.all(cols["controllable"][2:] == 0)
