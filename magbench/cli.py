@@ -5,12 +5,16 @@ Usage::
     magbench figures
     magbench figure ID [--set NAME=VALUE ...] [--out FILE.png|svg|pdf] [--data FILE.json]
     magbench compare [--json]
+    magbench design-coil --moment M --voltage U --side L --max-power W --max-mass KG
+                         [--shape round|square] [--wire-table iec60317|iec60228|awg] [--json]
 """
 
 import argparse
 import json
 import sys
 from pathlib import Path
+
+import numpy as np
 
 __all__ = ["main"]
 
@@ -84,6 +88,99 @@ def _cmd_compare(args):
     return 0
 
 
+# design-coil: CLI flag of each solver parameter, so an error names what the user typed.
+_COIL_FLAGS = {"moment": "--moment", "voltage": "--voltage", "side": "--side",
+               "max_power": "--max-power", "max_mass": "--max-mass", "resistivity": "--resistivity",
+               "density": "--density", "winding_length": "--winding-length",
+               "max_layers": "--max-layers", "enamel_thickness": "--enamel"}
+_AWG_GAUGES = range(20, 45)          # 0.81 mm down to 0.051 mm: the magnetorquer range
+_DESIGN_KEYS = ("turns", "wire_diameter", "pitch", "resistance", "current", "power", "mass",
+                "moment", "layers", "fill_factor")
+
+
+def _coil_wires(name, enamel):
+    """(bare diameters, overall diameters or None, label) of a wire table [m]."""
+    if name == "awg":
+        from .magnetorquer import awg_diameter
+
+        d = [float(awg_diameter(g)) for g in _AWG_GAUGES]
+        return d, None, (f"AWG {_AWG_GAUGES[0]}-{_AWG_GAUGES[-1]} (ASTM B258, by definition); "
+                         f"enamel not tabulated: pitch = d + 2 x {enamel * 1e6:g} um")
+    from .data import load_wire_table
+
+    t = load_wire_table(name)
+    label = "IEC 60317-0-1 grade 1 enamelled copper (R20 sizes); pitch = maximum overall diameter"
+    if name == "iec60228":
+        label += " [iec60228 is an alias: IEC 60228 itself lists cable conductors, not winding wire]"
+    return list(t.nominal_diameter), list(t.max_overall_diameter), label
+
+
+def _cmd_design_coil(args):
+    from .magnetorquer import design_magnetorquer
+    from .params import chapter_parameters
+
+    defaults = chapter_parameters("ch03")
+    rho = defaults["copper_resistivity"] if args.resistivity is None else args.resistivity
+    gamma = defaults["copper_density"] if args.density is None else args.density
+    try:
+        bare, overall, label = _coil_wires(args.wire_table, args.enamel)
+        res = design_magnetorquer(
+            args.moment, args.voltage, args.side, args.shape, args.max_power, args.max_mass,
+            bare, rho, gamma, args.enamel, winding_length=args.winding_length,
+            max_layers=args.max_layers, require_fit=True, overall_diameters=overall)
+    except ValueError as exc:
+        message = str(exc)
+        flag = _COIL_FLAGS.get(message.split(" ", 1)[0])
+        print(f"magbench design-coil: {flag + ': ' if flag else ''}{message}", file=sys.stderr)
+        return 2
+    best = res["min_mass" if args.minimise == "mass" else "min_power"]
+    if args.json:
+        designs = [{k: res[k][i].item() for k in _DESIGN_KEYS} for i in range(res["turns"].size)]
+        print(json.dumps({
+            "inputs": {"moment": args.moment, "voltage": args.voltage, "side": args.side,
+                       "shape": args.shape, "max_power": args.max_power, "max_mass": args.max_mass,
+                       "resistivity": rho, "density": gamma,
+                       "winding_length": args.winding_length or args.side,
+                       "max_layers": args.max_layers},
+            "wire_table": args.wire_table, "wire_table_note": label, "minimise": args.minimise,
+            "feasible": res["feasible"], "binding_limit": res["binding_limit"],
+            "explanation": res["explanation"], "recommended": best,
+            "min_power": res["min_power"], "min_mass": res["min_mass"], "designs": designs,
+        }, indent=1))
+        return 0 if res["feasible"] else 1
+    print(f"Coil for {args.moment:g} A m^2 at {args.voltage:g} V, {args.shape} turn of "
+          f"{args.side:g} m; limits {args.max_power:g} W and {args.max_mass:g} kg per coil")
+    print(f"Wires: {label}")
+    if not res["feasible"]:
+        print(f"No feasible design. Binding limit: {res['binding_limit']}.")
+        print(res["explanation"])
+        return 1
+    header = ("d [mm]", "pitch [mm]", "turns", "R [ohm]", "I [mA]", "W [W]", "M [g]", "m [A m^2]")
+    table = [header]
+    for d in np.unique(res["wire_diameter"]):
+        k = res["wire_diameter"] == d
+
+        def span(col, scale=1.0, fmt=".4g", k=k):
+            lo, hi = (res[col][k].min(), res[col][k].max()) if scale == 1.0 else (
+                res[col][k].min() * scale, res[col][k].max() * scale)
+            return f"{lo:{fmt}}" if lo == hi else f"{lo:{fmt}}-{hi:{fmt}}"
+        table.append((f"{d * 1e3:.3f}", f"{res['pitch'][k][0] * 1e3:.3f}", span("turns", fmt="d"),
+                      span("resistance"), span("current", 1e3), span("power"), span("mass", 1e3),
+                      f"{res['moment'][k][0]:.4g}"))
+    widths = [max(len(row[i]) for row in table) for i in range(len(header))]
+    for row in table:
+        print("  ".join(cell.rjust(w) for cell, w in zip(row, widths)))
+    print(f"\n{res['turns'].size} feasible (turns, wire) designs.")
+    for title, d in ((f"Recommended (least {args.minimise})", best),
+                     ("Least power" if args.minimise == "mass" else "Least mass",
+                      res["min_power" if args.minimise == "mass" else "min_mass"])):
+        print(f"{title}: N = {d['turns']}, d = {d['wire_diameter'] * 1e3:.3f} mm: "
+              f"R = {d['resistance']:.4g} ohm, I = {d['current'] * 1e3:.4g} mA, "
+              f"W = {d['power']:.4g} W, M = {d['mass'] * 1e3:.4g} g, m = {d['moment']:.4g} A m^2, "
+              f"{d['layers']} layer(s)")
+    return 0
+
+
 def main(argv=None):
     """Entry point of the ``magbench`` command; returns the exit status."""
     parser = argparse.ArgumentParser(prog="magbench", description=__doc__.splitlines()[0])
@@ -97,8 +194,32 @@ def main(argv=None):
     fig.add_argument("--data", metavar="FILE", help="write the numbers behind the figure as JSON")
     cmp_ = sub.add_parser("compare", help="print every model-vs-measurement row")
     cmp_.add_argument("--json", action="store_true", help="print the rows as a JSON list")
+    coil = sub.add_parser(
+        "design-coil", help="every feasible air-core magnetorquer from a wire table",
+        description=("Every feasible (turns, wire) design of an air-core magnetorquer (thesis §3, "
+                     "eqs. 17-32) and the recommended one. SI units. Exit status 0: feasible; "
+                     "1: no feasible design (the binding limit is named); 2: bad input."))
+    coil.add_argument("--moment", type=float, required=True, help="required dipole moment [A m^2]")
+    coil.add_argument("--voltage", type=float, required=True, help="supply voltage [V]")
+    coil.add_argument("--side", type=float, required=True, help="turn side (square) or diameter (round) [m]")
+    coil.add_argument("--shape", choices=("square", "round"), default="square", help="turn shape")
+    coil.add_argument("--max-power", type=float, required=True, help="Joule power limit per coil [W]")
+    coil.add_argument("--max-mass", type=float, required=True, help="conductor mass limit per coil [kg]")
+    coil.add_argument("--wire-table", choices=("iec60317", "iec60228", "awg"), default="iec60317",
+                      help="wire sizes: IEC 60317-0-1 grade 1 (iec60228 is an alias) or AWG")
+    coil.add_argument("--minimise", choices=("mass", "power"), default="mass",
+                      help="what the recommended design minimises (default: mass)")
+    coil.add_argument("--resistivity", type=float, help="conductor resistivity [ohm m] (default: thesis copper)")
+    coil.add_argument("--density", type=float, help="conductor density [kg/m^3] (default: thesis copper)")
+    coil.add_argument("--winding-length", type=float,
+                      help="axial length of one layer [m] (default: --side, the thesis's single layer)")
+    coil.add_argument("--max-layers", type=int, default=1, help="layers the former holds (default 1)")
+    coil.add_argument("--enamel", type=float, default=10e-6,
+                      help="radial enamel thickness for AWG wires [m] (default 10e-6, an order of magnitude)")
+    coil.add_argument("--json", action="store_true", help="print the result as JSON")
     args = parser.parse_args(argv)
-    handler = {"figures": _cmd_figures, "figure": _cmd_figure, "compare": _cmd_compare}[args.command]
+    handler = {"figures": _cmd_figures, "figure": _cmd_figure, "compare": _cmd_compare,
+               "design-coil": _cmd_design_coil}[args.command]
     return handler(args)
 
 

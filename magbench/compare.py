@@ -22,7 +22,8 @@ from . import geomag, igrf
 from .constants import EARTH_RADIUS
 from .params import chapter_parameters
 
-__all__ = ["CompareRow", "PROVIDERS", "make_row", "all_rows", "geomagnetic_rows", "today_decimal_year"]
+__all__ = ["CompareRow", "PROVIDERS", "make_row", "all_rows", "geomagnetic_rows", "today_decimal_year",
+           "magnetorquer_rows"]
 
 
 @dataclass(frozen=True)
@@ -152,8 +153,64 @@ def geomagnetic_rows(params=None, *, epochs=None):
     return rows
 
 
+def magnetorquer_rows(params=None):
+    """Chapter 3: the built magnetorquers beside the thesis's own formulas.
+
+    One row is a measurement (the coil's resistance, ≈ 55 Ω); the others set a number the
+    thesis printed for the built coil beside what its own equations give for it (square
+    turn of side l, N = 240, 0.2 mm wire, 12 V). The resistance's tolerance is the spread
+    of the model over the wire standard's diameter tolerance (IEC 60317-0-1, ±3 µm at
+    0.2 mm) plus half a unit of the measured value's last digit; the others use half a unit
+    of the printed value's last digit.
+
+    Parameters
+    ----------
+    params : dict, optional
+        Chapter-3 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
+    """
+    from . import magnetorquer as mtq
+    from .data import load_measurements, load_wire_table
+
+    p = params or chapter_parameters("ch03")
+    rho, u, side, n = p["copper_resistivity"], p["mtq_voltage"], p["mtq_side"], p["mtq_turns"]
+    built = load_measurements("thesis")
+    d = built["mtq-wire-diameter"].value
+    table = load_wire_table("iec60317")
+    d_tol = table.tolerance[int(np.argmin(np.abs(np.array(table.nominal_diameter) - d)))]
+
+    def resistance(diameter):
+        return float(mtq.coil_resistance(n, side, mtq.wire_area(diameter), rho, "square"))
+
+    r_model, r_meas = resistance(d), built["mtq-resistance"].value
+    r_spread = max(abs(resistance(d - d_tol) - r_model), abs(resistance(d + d_tol) - r_model))
+    src = "Bui (2016) §3.3"
+    square = mtq.turn_area(side, "square")
+    s_design = mtq.wire_area_for_moment(p["mtq_moment"], u, side, rho)
+    return [
+        make_row("mtq-resistance", "Resistance of a built magnetorquer (0.2 mm wire, N = 240)",
+                 f"{src}, seed line 441 (measured, ≈ 55 Ω)", r_meas, r_model, r_spread + 0.5,
+                 unit="ohm", note=f"model spread over d ± {d_tol * 1e6:.0f} µm: ±{r_spread:.2f} Ω"),
+        make_row("mtq-resistance-computed", "Resistance the thesis computed for the built coil",
+                 f"{src}, seed line 439 (printed)", built["mtq-resistance-computed"].value, r_model,
+                 0.05, unit="ohm"),
+        make_row("mtq-moment", "Dipole moment of the built coil at 12 V (eq. 20)",
+                 f"{src}, seed line 441 (printed)", built["mtq-moment"].value,
+                 mtq.moment_from_voltage(u, side, mtq.wire_area(d), rho), 0.005, unit="A m^2",
+                 note=f"with the measured resistance: {u / r_meas * n * float(square):.3f} A·m²"),
+        make_row("mtq-power", "Joule power of the built coil at 12 V (measured resistance)",
+                 "Bui (2016) §3.2, seed line 435 (the design's 2 W)", p["mtq_max_power"],
+                 mtq.joule_power(u, r_meas), 0.5, unit="W"),
+        make_row("mtq-current-for-moment", "Coil current for 0.4 A·m² (square, N = 240)",
+                 "Bui (2016) §4.2, seed line 516 (printed)", 0.24,
+                 mtq.current_for_moment(p["mtq_moment"], n, square), 0.005, unit="A"),
+        make_row("mtq-winding-length", "Single-layer winding length N·√S_r at N = 240",
+                 "Bui (2016) §3.2, seed line 434 (printed, ≈ 0.1 m)", 0.1,
+                 mtq.winding_length(n, s_design), 0.05, unit="m"),
+    ]
+
+
 #: Row providers by chapter, in book order.
-PROVIDERS = {"ch01": geomagnetic_rows}
+PROVIDERS = {"ch01": geomagnetic_rows, "ch03": magnetorquer_rows}
 
 
 def all_rows():

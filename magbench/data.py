@@ -34,6 +34,9 @@ __all__ = [
     "load_measurements",
     "measurement",
     "load_parameter_set",
+    "WireTable",
+    "WIRE_TABLES",
+    "load_wire_table",
 ]
 
 #: The project's data directory (next to the package in a source checkout).
@@ -44,6 +47,7 @@ _TO_SI = {
     "1": 1.0, "A": 1.0, "V": 1.0, "W": 1.0, "s": 1.0, "m": 1.0, "ohm": 1.0, "A/m": 1.0,
     "T": 1.0, "kg": 1.0, "kg m^2": 1.0, "kg/m^3": 1.0, "ohm m": 1.0, "A m^2": 1.0,
     "rad": 1.0, "rad/s": 1.0, "year": 1.0,
+    "ohm kg/m^2": 1.0, "A/m^2": 1.0, "N m": 1.0, "N m/kg": 1.0, "kg/(N m)": 1.0,
     "mm": 1e-3, "km": 1e3, "cm": 1e-2,
     "deg": math.pi / 180.0,
     "%": 1e-2,
@@ -317,3 +321,86 @@ def load_parameter_set(name="thesis", data_dir=None):
                                 source=table["source"], section=table.get("section"),
                                 seed_line=table.get("seed_line"), note=table.get("note"))
     return params
+
+
+#: Wire tables in ``data/wires/``: name -> file stem. ``iec60228`` is kept as an alias of the
+#: enamelled-wire table because the ``design-coil`` command's contract names it; IEC 60228
+#: itself specifies cable conductors by cross-section, not winding-wire diameters.
+WIRE_TABLES = {"iec60317": "iec60317_grade1", "iec60228": "iec60317_grade1"}
+
+_WIRE_COLUMNS = ["nominal_diameter", "tolerance", "min_increase_grade1", "max_overall_grade1",
+                 "status", "provenance"]
+
+
+@dataclass(frozen=True)
+class WireTable:
+    """A table of enamelled round wires, in SI (metres), one entry per size.
+
+    ``status`` is ``"verified"`` (read from a public copy of the standard's table) or
+    ``"recalled"`` (enamel figures as recalled; see the file's header) for each size.
+    """
+
+    name: str
+    nominal_diameter: tuple
+    tolerance: tuple
+    min_overall_diameter: tuple
+    max_overall_diameter: tuple
+    status: tuple
+    provenance: tuple
+
+
+def load_wire_table(name="iec60317", data_dir=None):
+    """Load a wire table from ``data/wires/`` (sizes in mm in the file, metres here).
+
+    Parameters
+    ----------
+    name : str
+        A key of :data:`WIRE_TABLES` (``"iec60317"``; ``"iec60228"`` is an alias).
+    data_dir : str or Path, optional
+        Data directory; defaults to :data:`DATA_DIR`.
+
+    Returns
+    -------
+    WireTable
+        Sizes sorted by nominal diameter.
+
+    Examples
+    --------
+    >>> t = load_wire_table("iec60317")
+    >>> t.nominal_diameter[9], t.tolerance[9], t.max_overall_diameter[9]
+    (0.0002, 3e-06, 0.000226)
+    """
+    if name not in WIRE_TABLES:
+        raise DataError(f"unknown wire table {name!r}; known: {', '.join(WIRE_TABLES)}")
+    path = Path(data_dir or DATA_DIR) / "wires" / f"{WIRE_TABLES[name]}.csv"
+    lines = verify_checksum(path, data_dir).decode("utf-8").splitlines()
+    header, rows = None, []
+    for lineno, fields in _csv_rows(lines):
+        if header is None:
+            if fields != _WIRE_COLUMNS:
+                raise DataError(f"{path}:{lineno}: header must be {','.join(_WIRE_COLUMNS)}")
+            header = fields
+            continue
+        if len(fields) != len(header):
+            raise DataError(f"{path}:{lineno}: expected {len(header)} columns, got {len(fields)}")
+        rec = dict(zip(header, fields))
+        d, tol, inc, od = (_number(rec[c], path, lineno, c) for c in _WIRE_COLUMNS[:4])
+        if not (d > 0 and 0 <= tol < d and inc > 0 and od >= d + inc):
+            raise DataError(f"{path}:{lineno}: inconsistent sizes (need d > 0, 0 <= tolerance < d, "
+                            f"increase > 0, overall >= d + increase), got {d}, {tol}, {inc}, {od}")
+        if rec["status"] not in ("verified", "recalled"):
+            raise DataError(f"{path}:{lineno}: status must be verified or recalled, got {rec['status']!r}")
+        rows.append((d, tol, inc, od, rec["status"], rec["provenance"]))
+    if not rows:
+        raise DataError(f"{path}: no wire sizes")
+    rows.sort()
+    mm = 1e-3
+    return WireTable(
+        name=name,
+        nominal_diameter=tuple(round(r[0] * mm, 12) for r in rows),
+        tolerance=tuple(round(r[1] * mm, 12) for r in rows),
+        min_overall_diameter=tuple(round((r[0] + r[2]) * mm, 12) for r in rows),
+        max_overall_diameter=tuple(round(r[3] * mm, 12) for r in rows),
+        status=tuple(r[4] for r in rows),
+        provenance=tuple(r[5] for r in rows),
+    )

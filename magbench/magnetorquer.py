@@ -61,10 +61,19 @@ __all__ = [
     "supply_voltage",
     "turns_per_volt_bounds",
     "design_magnetorquer",
+    "awg_diameter",
+    "turns_from_resistance",
+    "wire_diameter_from_resistance",
     "rod_demagnetizing_factor",
     "effective_permeability",
     "magnet_torque_per_mass",
     "magnet_mass_for_torque",
+    "magnetization_curve",
+    "field_for_magnetization",
+    "core_central_magnetization",
+    "electromagnet_design",
+    "magnet_moment_per_mass",
+    "permanent_magnet_min_mass",
 ]
 
 #: The turn shapes understood by the ``shape`` keyword.
@@ -907,6 +916,7 @@ def design_magnetorquer(
     winding_length=None,
     max_layers=1,
     require_fit=False,
+    overall_diameters=None,
 ):
     r"""Every feasible (turns, wire) design of an air-core magnetorquer, and the best two.
 
@@ -950,15 +960,21 @@ def design_magnetorquer(
         Number of layers the former can hold [-].
     require_fit : bool, optional
         If true, designs whose winding does not fit are not feasible [-].
+    overall_diameters : array_like, shape (k,), optional
+        Overall (enamelled) diameter of each wire of ``wire_diameters`` [m], e.g. the
+        maximum overall diameter of a wire standard's table; when given it is the winding
+        pitch and ``enamel_thickness`` is not used. Each must exceed its bare diameter.
 
     Returns
     -------
     dict
         ``"turns"`` (int), ``"wire_diameter"`` [m], ``"wire_area"`` [m²], ``"resistance"``
         [Ω], ``"current"`` [A], ``"power"`` [W], ``"mass"`` [kg], ``"moment"`` [A·m²],
-        ``"layer_length"`` (single-layer winding length N(d + 2t)) [m], ``"layers"`` (int)
-        and ``"fits"`` (bool): one array entry per feasible design, ordered by wire
-        diameter then turns. ``"min_power"`` and ``"min_mass"``: the feasible design of
+        ``"pitch"`` (d + 2t, or the overall diameter) [m], ``"layer_length"``
+        (single-layer winding length N·pitch) [m], ``"layers"`` (int), ``"fits"`` (bool)
+        and ``"fill_factor"`` (conductor cross-section N S_r over the winding window
+        ``winding_length`` × layers·pitch it occupies) [-]: one array entry per feasible
+        design, ordered by wire diameter then turns. ``"min_power"`` and ``"min_mass"``: the feasible design of
         least power and of least mass, each a dict of scalars, or None. ``"feasible"``
         (bool), ``"binding_limit"`` (None, ``"moment"``, ``"power and mass"``,
         ``"integer turns"`` or ``"winding fit"``) and ``"explanation"`` (str).
@@ -993,10 +1009,25 @@ def design_magnetorquer(
         raise ValueError(
             f"wire_diameters must be a non-empty 1-D array, got shape {d_all.shape}"
         )
-    d_all = np.unique(d_all)
+    if overall_diameters is None:
+        d_all = np.unique(d_all)
+        od_all = d_all + 2.0 * float(as_nonnegative("enamel_thickness", enamel_thickness, unit="m"))
+    else:
+        od_all = np.atleast_1d(as_positive("overall_diameters", overall_diameters, unit="m"))
+        if od_all.shape != d_all.shape:
+            raise ValueError(f"overall_diameters must have the shape of wire_diameters {d_all.shape}, "
+                             f"got {od_all.shape}")
+        if np.any(od_all <= d_all):
+            k = int(np.argmax(od_all <= d_all))
+            raise ValueError(f"overall_diameters must exceed the bare diameters, got {od_all[k]!r} m "
+                             f"for wire_diameters {d_all[k]!r} m")
+        if np.unique(d_all).size != d_all.size:
+            raise ValueError("wire_diameters must not repeat a size when overall_diameters are given")
+        order = np.argsort(d_all)
+        d_all, od_all = d_all[order], od_all[order]
     rho = float(as_positive("resistivity", resistivity, unit="Ω·m"))
     gamma = float(as_positive("density", density, unit="kg/m³"))
-    t = float(as_nonnegative("enamel_thickness", enamel_thickness, unit="m"))
+    as_nonnegative("enamel_thickness", enamel_thickness, unit="m")   # checked even when unused
     length_avail = l if winding_length is None else float(
         as_positive("winding_length", winding_length, unit="m"))
     if isinstance(max_layers, bool) or not isinstance(max_layers, (int, np.integer)) or max_layers < 1:
@@ -1006,11 +1037,12 @@ def design_magnetorquer(
     perimeter = float(turn_length(l, shape))
 
     cols = {k: [] for k in ("turns", "wire_diameter", "wire_area", "resistance", "current",
-                            "power", "mass", "moment", "layer_length", "layers", "fits")}
+                            "power", "mass", "moment", "pitch", "layer_length", "layers", "fits",
+                            "fill_factor")}
     adequate = []          # wires that reach the moment: (d, n_lo, n_hi)
     n_rows = 0
     any_power_mass = False
-    for d in d_all:
+    for d, pitch in zip(d_all, od_all):
         s_r = math.pi * d**2 / 4.0
         r = rho * perimeter / s_r
         m_wire = u * l * s_r / (4.0 * rho)
@@ -1029,7 +1061,6 @@ def design_magnetorquer(
                 "tighten the limits or shorten wire_diameters"
             )
         n = np.arange(n_lo, n_hi + 1)
-        pitch = d + 2.0 * t
         per_layer = math.floor(length_avail / pitch * (1.0 + _RTOL))
         if per_layer >= 1:
             layers = -(-n // per_layer)
@@ -1045,9 +1076,13 @@ def design_magnetorquer(
         cols["power"].append(u**2 / resistance)
         cols["mass"].append(gamma * perimeter * s_r * n)
         cols["moment"].append(u / resistance * area * n)
+        cols["pitch"].append(np.full(n.shape, pitch))
         cols["layer_length"].append(n * pitch)
         cols["layers"].append(layers)
         cols["fits"].append(fits)
+        # conductor over the window the layers occupy (layers·pitch deep); 0 if nothing fits
+        depth = np.where(per_layer >= 1, layers * pitch, np.inf)
+        cols["fill_factor"].append(n * s_r / (length_avail * depth))
 
     dtypes = {"turns": np.int64, "layers": np.int64, "fits": bool}
     out = {k: (np.concatenate(v) if v else np.array([], dtype=dtypes.get(k, float)))
@@ -1111,7 +1146,7 @@ def design_magnetorquer(
         out["binding_limit"] = "winding fit"
         out["explanation"] = (
             f"winding fit: designs meet the moment, power and mass limits, but none fits in "
-            f"{max_layers} layer(s) over {length_avail:.4g} m with enamel {t * 1e6:.4g} µm"
+            f"{max_layers} layer(s) over {length_avail:.4g} m at the wires' pitch (enamel included)"
         )
     return out
 
@@ -1263,3 +1298,386 @@ def magnet_mass_for_torque(torque, remanence, field, density):
     tq = as_nonnegative("torque", torque, unit="N·m")
     b = as_positive("field", field, unit="T")
     return tq / magnet_torque_per_mass(remanence, b, density)
+
+
+# --- Wire sizes and the built coil's resistance ------------------------------------------
+
+def awg_diameter(gauge):
+    r"""Bare diameter of an American Wire Gauge size.
+
+    Parameters
+    ----------
+    gauge : array_like
+        AWG number n [-]; 0000, 000, 00 and 0 are −3, −2, −1 and 0. At least −3.
+
+    Returns
+    -------
+    ndarray
+        d = 0.127 mm × 92^((36 − n)/39) [m], exact by the gauge's definition (36 AWG is
+        0.005 in and 0000 AWG is 0.46 in, with 38 geometric steps between them).
+
+    Notes
+    -----
+    Not in the thesis: ASTM B258, the definition of the American Wire Gauge. The thesis's
+    0.2 mm wire lies between 32 AWG (0.202 mm) and 33 AWG (0.180 mm).
+
+    Examples
+    --------
+    >>> round(float(awg_diameter(36)) * 1e3, 4), round(float(awg_diameter(-3)) / 0.0254, 4)
+    (0.127, 0.46)
+    >>> round(float(awg_diameter(32)) * 1e3, 4)
+    0.2019
+    """
+    n = as_finite("gauge", gauge)
+    if np.any(n < -3):
+        raise ValueError(f"gauge must be >= -3 (0000 AWG) [-], got {n[n < -3].ravel()[0]!r}")
+    return 0.127e-3 * 92.0 ** ((36.0 - n) / 39.0)
+
+
+def turns_from_resistance(resistance, side, wire_area, resistivity, shape="round"):
+    r"""Number of turns that gives a coil a given resistance.
+
+    Parameters
+    ----------
+    resistance : array_like
+        Coil resistance R [Ω].
+    side : array_like
+        Turn diameter (round) or side (square) l [m].
+    wire_area : array_like
+        Conductor cross-section S_r [m²].
+    resistivity : array_like
+        Conductor resistivity ρ [Ω·m].
+    shape : {"round", "square"}, optional
+        Turn shape [-].
+
+    Returns
+    -------
+    ndarray
+        N = R/r with r from eq. (19) [-] (not rounded).
+
+    Notes
+    -----
+    Thesis §3.3, seed lines 439–441: the thesis explains the measured ≈ 55 Ω (53.5 Ω
+    computed) by extra turns wound by hand; this is the count that explanation needs.
+
+    Examples
+    --------
+    >>> round(float(turns_from_resistance(55.0, 0.1, wire_area(0.2e-3), 0.0175e-6, "square")), 1)
+    246.8
+    """
+    r = as_positive("resistance", resistance, unit="Ω")
+    return r / turn_resistance(side, wire_area, resistivity, shape)
+
+
+def wire_diameter_from_resistance(resistance, turns, side, resistivity, shape="round"):
+    r"""Bare wire diameter that gives a coil of N turns a given resistance.
+
+    Parameters
+    ----------
+    resistance : array_like
+        Coil resistance R [Ω].
+    turns : array_like
+        Number of turns N [-].
+    side : array_like
+        Turn diameter (round) or side (square) l [m].
+    resistivity : array_like
+        Conductor resistivity ρ [Ω·m].
+    shape : {"round", "square"}, optional
+        Turn shape [-].
+
+    Returns
+    -------
+    ndarray
+        d = √(4ρPN/(πR)), P the turn length [m].
+
+    Notes
+    -----
+    Thesis §3.3, seed lines 439–441, the other explanation of the measured 55 Ω: a wire
+    thinner than its nominal 0.2 mm, within the wire standard's diameter tolerance.
+
+    Examples
+    --------
+    >>> round(float(wire_diameter_from_resistance(55.0, 240, 0.1, 0.0175e-6, "square")) * 1e3, 4)
+    0.1972
+    """
+    r = as_positive("resistance", resistance, unit="Ω")
+    n = as_positive("turns", turns)
+    rho = as_positive("resistivity", resistivity, unit="Ω·m")
+    return np.sqrt(4.0 * rho * turn_length(side, shape) * n / (np.pi * r))
+
+
+# --- Cored electromagnets: saturation (Kovalenko ch. 9) ------------------------------------
+
+def magnetization_curve(field, a, b):
+    r"""Magnetisation of a soft core material, with saturation.
+
+    Parameters
+    ----------
+    field : array_like
+        Field strength inside the material H [A/m], at least 0.
+    a : array_like
+        Saturation magnetisation of the fit, J(H → ∞) [A/m].
+    b : array_like
+        Field of half saturation [A/m].
+
+    Returns
+    -------
+    ndarray
+        J = aH/(H + b) [A/m].
+
+    Notes
+    -----
+    Not in the thesis: Kovalenko (1975) eq. (9.21), p. 183, with a = 1.25·10⁶ A/m,
+    b = 40 A/m for permalloy 50Н and a = 1.92·10⁶, b = 170 A/m for permendur.
+
+    Examples
+    --------
+    >>> round(float(magnetization_curve(500.0, 1.25e6, 40.0)) / 1e6, 3)
+    1.157
+    """
+    h = as_nonnegative("field", field, unit="A/m")
+    a_ = as_positive("a", a, unit="A/m")
+    b_ = as_positive("b", b, unit="A/m")
+    return a_ * h / (h + b_)
+
+
+def field_for_magnetization(magnetization, a, b):
+    r"""Field that magnetises a soft core material to a given magnetisation.
+
+    Parameters
+    ----------
+    magnetization : array_like
+        Magnetisation J [A/m], in [0, a).
+    a : array_like
+        Saturation magnetisation of the fit [A/m].
+    b : array_like
+        Field of half saturation [A/m].
+
+    Returns
+    -------
+    ndarray
+        H = bJ/(a − J) [A/m].
+
+    Notes
+    -----
+    Not in the thesis: Kovalenko (1975) eq. (9.22), p. 183, the inverse of (9.21).
+
+    Examples
+    --------
+    >>> round(float(field_for_magnetization(1.1e6, 1.25e6, 40.0)), 1)
+    293.3
+    """
+    j = as_nonnegative("magnetization", magnetization, unit="A/m")
+    a_ = as_positive("a", a, unit="A/m")
+    b_ = as_positive("b", b, unit="A/m")
+    if np.any(j >= a_):
+        raise ValueError(f"magnetization must be below the saturation a = {np.max(a_)!r} A/m, "
+                         f"got {np.max(j)!r}")
+    return b_ * j / (a_ - j)
+
+
+def core_central_magnetization(coil_field, demagnetizing_factor, a, b):
+    r"""Magnetisation of a rod core's central section in a coil's field, with saturation.
+
+    Parameters
+    ----------
+    coil_field : array_like
+        Field of the magnetising winding H_к [A/m], at least 0.
+    demagnetizing_factor : array_like
+        Central demagnetising factor N_ц in SI [-], in (0, 1].
+    a : array_like
+        Saturation magnetisation of the material's curve (9.21) [A/m].
+    b : array_like
+        Field of half saturation of the curve [A/m].
+
+    Returns
+    -------
+    ndarray
+        J_ц = [(H_к + N_ц a + b) − √((H_к + N_ц a + b)² − 4 N_ц a H_к)]/(2N_ц) [A/m]: the
+        smaller root of J = aH/(H + b) with H = H_к − N_ц J (the physical one, J < a).
+
+    Notes
+    -----
+    Not in the thesis: Kovalenko (1975) eq. (9.23), p. 183 (the minus root; OCR
+    reconstructed). For a weak field it is the linear result H_к/(N_ц + b/a); for
+    H_к → ∞ it tends to a (saturation).
+
+    Examples
+    --------
+    >>> n = rod_demagnetizing_factor(40.0)
+    >>> round(float(core_central_magnetization(2434.0, n, 1.25e6, 40.0)) / 1e6, 3)
+    1.143
+    """
+    hk = as_nonnegative("coil_field", coil_field, unit="A/m")
+    n = as_in_range("demagnetizing_factor", demagnetizing_factor, 0.0, 1.0)
+    if np.any(n == 0):
+        raise ValueError("demagnetizing_factor must lie in (0, 1] [-], got 0.0")
+    a_ = as_positive("a", a, unit="A/m")
+    b_ = as_positive("b", b, unit="A/m")
+    c = hk + n * a_ + b_
+    # c − √(c² − 4nah) loses digits for a weak field: use the equal form 4nah/(c + √…)
+    return 2.0 * a_ * hk / (c + np.sqrt(c**2 - 4.0 * n * a_ * hk))
+
+
+def electromagnet_design(moment, elongation, design_magnetization, design_field,
+                         averaging_factor, current_density, fill_factor, resistivity,
+                         core_density, conductor_density, voltage):
+    r"""A rod electromagnet sized for a moment at a near-saturation core state.
+
+    Parameters
+    ----------
+    moment : float
+        Required moment L_p [A·m²].
+    elongation : float
+        Core elongation p = l/D₁ [-], at least 10.
+    design_magnetization : float
+        Central magnetisation chosen near saturation J° [A/m].
+    design_field : float
+        Field inside the core at that state H° [A/m].
+    averaging_factor : float
+        k = J_c/J_ц, mean over central magnetisation [-], in (0, 1].
+    current_density : float
+        Current density in the winding j [A/m²].
+    fill_factor : float
+        Winding fill factor k_з [-], in (0, 1].
+    resistivity : float
+        Conductor resistivity ρ [Ω·m].
+    core_density : float
+        Core density γ_c [kg/m³].
+    conductor_density : float
+        Conductor density γ_м [kg/m³].
+    voltage : float
+        Supply voltage U [V] (sets the wire diameter only).
+
+    Returns
+    -------
+    dict
+        ``core_diameter`` D₁ (9.64) [m], ``length`` l (9.65) [m], ``demagnetizing_factor``
+        N_ц (9.25) [-], ``coil_field`` H_к = H° + N_ц J° (9.63) [A/m],
+        ``winding_outer_diameter`` D₂ (9.72) [m], ``power`` P = (π/4) l ρ j² k_з (D₂² − D₁²)
+        (9.56) [W], ``current`` P/U [A], ``wire_diameter`` √(4P/(πjU)) (9.73) [m],
+        ``core_mass`` γ_c π D₁² l/4 [kg], ``conductor_mass`` P γ_м/(j²ρ) (9.38) [kg],
+        ``mass`` (core + conductor; insulation, casing and supply excluded, as for the
+        air-core coil) [kg].
+
+    Notes
+    -----
+    Not in the thesis: Kovalenko (1975) §9.3, eqs. (9.63)–(9.65), (9.72), (9.56), (9.38),
+    (9.73), pp. 193–198, the "simplified design" in which the core is taken to a chosen
+    state near saturation. The winding's own moment (two orders smaller, (9.33)) is
+    neglected, as Kovalenko does. :func:`core_central_magnetization` checks the state
+    against the material's curve.
+
+    Examples
+    --------
+    >>> em = electromagnet_design(0.4, 40.0, 1.1e6, 500.0, 0.79, 2e6, 0.5, 0.0175e-6,
+    ...                           8.0e3, 8.9e3, 12.0)
+    >>> round(em["length"], 4), round(em["power"], 3), round(em["mass"] * 1e3, 1)
+    (0.0979, 0.128, 19.9)
+    """
+    lp = float(as_positive("moment", moment, unit="A·m²"))
+    p = float(as_finite("elongation", elongation))
+    if p < 10:
+        raise ValueError(f"elongation must be >= 10 [-] (long rods), got {p!r}")
+    j0 = float(as_positive("design_magnetization", design_magnetization, unit="A/m"))
+    h0 = float(as_nonnegative("design_field", design_field, unit="A/m"))
+    k = float(as_in_range("averaging_factor", averaging_factor, 0.0, 1.0))
+    kz = float(as_in_range("fill_factor", fill_factor, 0.0, 1.0))
+    for name, value in (("averaging_factor", k), ("fill_factor", kz)):
+        if value == 0:
+            raise ValueError(f"{name} must lie in (0, 1] [-], got 0.0")
+    j = float(as_positive("current_density", current_density, unit="A/m²"))
+    rho = float(as_positive("resistivity", resistivity, unit="Ω·m"))
+    g_c = float(as_positive("core_density", core_density, unit="kg/m³"))
+    g_m = float(as_positive("conductor_density", conductor_density, unit="kg/m³"))
+    u = float(as_positive("voltage", voltage, unit="V"))
+    d1 = (4.0 * lp / (math.pi * k * j0 * p)) ** (1.0 / 3.0)              # (9.64)
+    length = p * d1                                                        # (9.65)
+    n_c = float(rod_demagnetizing_factor(p))                               # (9.25)
+    h_k = h0 + n_c * j0                                                    # (9.63)
+    d2 = d1 + h_k / (0.5 * j * kz)                                         # (9.72)
+    power = math.pi / 4.0 * length * rho * j**2 * kz * (d2**2 - d1**2)     # (9.56)
+    core_mass = g_c * math.pi * d1**2 * length / 4.0
+    conductor_mass = power * g_m / (j**2 * rho)                            # (9.38)
+    return {
+        "core_diameter": d1, "length": length, "demagnetizing_factor": n_c, "coil_field": h_k,
+        "winding_outer_diameter": d2, "power": power, "current": power / u,
+        "wire_diameter": math.sqrt(4.0 * power / (math.pi * j * u)),       # (9.73)
+        "core_mass": core_mass, "conductor_mass": conductor_mass,
+        "mass": core_mass + conductor_mass,
+    }
+
+
+# --- Permanent magnets (Kovalenko ch. 1 and 10) ----------------------------------------------
+
+def magnet_moment_per_mass(magnetization, density):
+    r"""Magnetic moment per unit mass of a uniformly magnetised magnet.
+
+    Parameters
+    ----------
+    magnetization : array_like
+        Mean magnetisation J_c [A/m] (at most the remanent J_r = B_r/μ0, reached by a
+        long magnet).
+    density : array_like
+        Magnet density γ [kg/m³].
+
+    Returns
+    -------
+    ndarray
+        L/m = J_c/γ [A·m²/kg].
+
+    Notes
+    -----
+    Not in the thesis: Kovalenko (1975) eq. (10.1) L = J_c V divided by the mass γV; with
+    J_c = B_r/μ0 it is the moment behind eq. (1.7).
+
+    Examples
+    --------
+    >>> from magbench.constants import MU_0
+    >>> round(float(magnet_moment_per_mass(1.4 / MU_0, 7.5e3)), 1)
+    148.5
+    """
+    j = as_positive("magnetization", magnetization, unit="A/m")
+    g = as_positive("density", density, unit="kg/m³")
+    return j / g
+
+
+def permanent_magnet_min_mass(moment, magnetization, elongation, density):
+    r"""Least-mass cylindrical permanent magnet for a moment (Kovalenko's case 1).
+
+    Parameters
+    ----------
+    moment : array_like
+        Required moment L_п.р [A·m²].
+    magnetization : array_like
+        Largest mean magnetisation of the material J_c max [A/m], reached at the
+        elongation below.
+    elongation : array_like
+        Length over diameter p₀ at which J_c max is reached [-].
+    density : array_like
+        Magnet density γ_п [kg/m³].
+
+    Returns
+    -------
+    length, diameter, mass : ndarray
+        l = (4p₀² L/(π J_c))^(1/3) (10.18) [m], d = l/p₀ (10.19) [m] and
+        m = γ L/J_c (10.20) [kg].
+
+    Notes
+    -----
+    Not in the thesis: Kovalenko (1975) eqs. (10.17)–(10.20), pp. 209–210. With
+    ЮН13ДК25БА (J_c max ≈ 8.4·10⁵ A/m at p₀ = 7) he prints l ≈ 0.042 ∛L m,
+    d ≈ 0.143 l and m ≈ 0.875·10⁻² L kg (the last implies γ ≈ 7350 kg/m³, not printed).
+
+    Examples
+    --------
+    >>> l, d, m = permanent_magnet_min_mass(1.0, 8.4e5, 7.0, 7350.0)
+    >>> round(float(l), 4), round(float(d / l), 3), round(float(m) * 1e2, 3)
+    (0.042, 0.143, 0.875)
+    """
+    lp = as_positive("moment", moment, unit="A·m²")
+    j = as_positive("magnetization", magnetization, unit="A/m")
+    p = as_positive("elongation", elongation)
+    g = as_positive("density", density, unit="kg/m³")
+    length = (4.0 * p**2 * lp / (np.pi * j)) ** (1.0 / 3.0)
+    return length, length / p, g * lp / j

@@ -34,6 +34,13 @@ CHAPTER_INPUTS = {
         "laboratory_longitude", "thesis_epoch", "orbit_altitude", "orbit_inclination",
         "mockup_inertia", "mockup_initial_rate",
     ],
+    "ch03": [
+        "copper_resistivity", "copper_density", "mtq_moment", "mtq_voltage", "mtq_side",
+        "mtq_turns", "mtq_max_power", "mtq_max_mass", "aluminium_gamma_rho", "magnet_remanence",
+        "magnet_density", "alnico_max_magnetization", "alnico_elongation", "permalloy_a",
+        "permalloy_b", "permalloy_design_magnetization", "permalloy_design_field", "core_density",
+        "core_averaging_factor", "em_fill_factor", "em_current_density", "em_elongation",
+    ],
 }
 
 
