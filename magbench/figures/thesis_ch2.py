@@ -10,7 +10,7 @@ three-axis simulator that cancels the laboratory's field.
 
 import numpy as np
 
-from .. import coils, igrf
+from .. import coils, compare, igrf
 from ..constants import MU_0
 from ..data import load_measurements
 from ..params import chapter_parameters
@@ -507,7 +507,7 @@ def compute_hypotheses(turns, current, coil_radius, built_spacing, wire_diameter
     f = igrf.igrf_field(p["laboratory_latitude"], p["laboratory_longitude"], p["thesis_epoch"])
     earth_h = f.total / MU_0
     rows = hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper_resistivity,
-                      measured, (r_lo, r_hi), earth_h, center_h_tolerance(current, turns, coil_radius))
+                      measured, (r_lo, r_hi), earth_h, compare.simulator_center_h_tolerance(current, turns, coil_radius))
     a, d = coil_radius, built_spacing
     n_axis = np.linspace(40, 150, 111)
     s = np.linspace(0.0, 0.6, 241)
@@ -528,20 +528,6 @@ def compute_hypotheses(turns, current, coil_radius, built_spacing, wire_diameter
     return FigureData("ch02-hypotheses", "", "", {}, series, extra={
         "rows": rows, "measured": measured, "turns_band": (r_lo / r_turn, r_hi / r_turn),
         "separation": d, "radius": a, "turns": turns})
-
-
-def center_h_tolerance(current, turns, radius, spacing_range=(0.50, 0.52), current_digit=0.05):
-    """Spread of the as-built centre field over what the thesis leaves open [A/m].
-
-    The spacing lies between the measured inner and outer distances (0.50–0.52 m) and
-    the current is printed to 0.1 A (±0.05 A); the largest |ΔH| over the corners of
-    that box, from the middle, is the tolerance of the comparison.
-    """
-    d_mid = 0.5 * (spacing_range[0] + spacing_range[1])
-    base = float(coils.helmholtz_center_h(current, turns, radius, d_mid))
-    corners = [float(coils.helmholtz_center_h(current + di, turns, radius, d))
-               for di in (-current_digit, current_digit) for d in spacing_range]
-    return max(abs(c - base) for c in corners)
 
 
 def resistance_range(row):
