@@ -1257,7 +1257,7 @@ def pair_distance_to_h(center_fraction, radius, separation, direction):
     separation : float
         Distance between the coil planes d [m], > 0.
     direction : {"axial", "transverse"}
-        The coil axis, or a line through the centre parallel to the coil planes.
+        The coil axis, or a line through the centre parallel to the coil planes [-].
 
     Returns
     -------
@@ -1311,7 +1311,7 @@ def uniform_zone_length(radius, separation, tolerance, direction):
         Allowed deviation δ = | |B| − B0 | / B0 [-], in (0, 1).
     direction : {"axial", "transverse"}
         The coil axis (thesis Fig. 7) or a line through the centre parallel to the coil
-        planes (thesis Fig. 6).
+        planes (thesis Fig. 6) [-].
 
     Returns
     -------
@@ -1492,7 +1492,7 @@ def coaxial_system_b(points, shapes, sizes, positions, ampere_turns):
     points : array_like, shape (..., 3)
         Observation points [m].
     shapes : sequence of {"circle", "square"}
-        Shape of each coil.
+        Shape of each coil [-].
     sizes : array_like, shape (n,)
         Radius of each circle, side of each square [m], > 0.
     positions : array_like, shape (n,)
@@ -1564,7 +1564,7 @@ def coaxial_system_sphere_nonuniformity(shapes, sizes, positions, ampere_turns, 
     Parameters
     ----------
     shapes : sequence of {"circle", "square"}
-        Shape of each coil.
+        Shape of each coil [-].
     sizes : array_like, shape (n,)
         Radius of each circle, side of each square [m], > 0.
     positions : array_like, shape (n,)
@@ -1605,7 +1605,7 @@ def coaxial_system_cylinder_nonuniformity(shapes, sizes, positions, ampere_turns
     Parameters
     ----------
     shapes : sequence of {"circle", "square"}
-        Shape of each coil.
+        Shape of each coil [-].
     sizes : array_like, shape (n,)
         Radius of each circle, side of each square [m], > 0.
     positions : array_like, shape (n,)
@@ -1650,7 +1650,7 @@ def coaxial_system_uniform_radius(shapes, sizes, positions, ampere_turns, tolera
     Parameters
     ----------
     shapes : sequence of {"circle", "square"}
-        Shape of each coil.
+        Shape of each coil [-].
     sizes : array_like, shape (n,)
         Radius of each circle, side of each square [m], > 0.
     positions : array_like, shape (n,)
