@@ -23,7 +23,7 @@ from .constants import EARTH_RADIUS
 from .params import chapter_parameters
 
 __all__ = ["CompareRow", "PROVIDERS", "make_row", "all_rows", "geomagnetic_rows", "today_decimal_year",
-           "magnetorquer_rows"]
+           "simulator_rows", "simulator_center_h_tolerance", "magnetorquer_rows"]
 
 
 @dataclass(frozen=True)
@@ -153,6 +153,76 @@ def geomagnetic_rows(params=None, *, epochs=None):
     return rows
 
 
+def simulator_center_h_tolerance(current, turns, radius, spacing_range=(0.50, 0.52), current_half_digit=0.05):
+    """Spread of the as-built pair's centre field over what the thesis leaves open [A/m].
+
+    The centre-to-centre spacing lies between the measured inner and outer distances
+    (0.50–0.52 m, thesis §2.4) and the current is printed to 0.1 A (±0.05 A). The
+    largest |ΔH| over the corners of that box, from its middle, is the tolerance.
+    """
+    from . import coils
+
+    d_mid = 0.5 * (spacing_range[0] + spacing_range[1])
+    base = float(coils.helmholtz_center_h(current, turns, radius, d_mid))
+    return max(abs(float(coils.helmholtz_center_h(current + di, turns, radius, d)) - base)
+               for di in (-current_half_digit, current_half_digit) for d in spacing_range)
+
+
+#: The band that defines "uniform" for the COMSOL zone lengths: fixed before comparing
+#: (a common engineering choice; the thesis names none). ch02-zone-criterion shows
+#: how the lengths depend on it.
+ZONE_TOLERANCE = 0.01
+
+
+def simulator_rows(params=None):
+    """Chapter 2: the field simulator as measured and as COMSOL-modelled, beside the
+    exact thin-loop model (:mod:`magbench.coils`).
+
+    Parameters
+    ----------
+    params : dict, optional
+        Chapter-2 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
+    """
+    from . import coils
+    from .data import load_measurements
+
+    p = params or chapter_parameters("ch02")
+    m = load_measurements("thesis")
+    n, i = p["sim_turns"], p["sim_current"]
+    a, d_built, d_comsol = p["sim_built_radius"], p["sim_built_spacing"], p["sim_comsol_spacing"]
+    src = "thesis §2.4 (measured)"
+    centre = m["sim-center-h"]
+    h_built = float(coils.helmholtz_center_h(i, n, a, d_built))
+    h_comsol = float(coils.helmholtz_center_h(i, n, a, d_comsol))
+    tol_built = simulator_center_h_tolerance(i, n, a)
+    tol_comsol = max(abs(float(coils.helmholtz_center_h(i + s * 0.05, n, a, d_comsol)) - h_comsol)
+                     for s in (-1, 1))
+    res = m["sim-coil-resistance"]
+    r_model = float(coils.winding_resistance(a, n, p["sim_wire_diameter"], p["copper_resistivity"]))
+    r_tol = 0.5 * (res.value_high - res.value_low) + res.uncertainty     # range plus the stated ±1 Ω
+    rows = [
+        make_row("sim-center-h", "Field at the centre of the built simulator, 2.3 A per coil", src,
+                 centre.value, h_built, tol_built, unit="A/m",
+                 note="model: exact thin loops, a = 0.5 m, d = 0.51 m, 110 turns; tolerance: d in "
+                      "0.50-0.52 m and I to its printed digit"),
+        make_row("comsol-max-h", "Largest field in the COMSOL model (d = 0.5 m)", "thesis §2.3 (COMSOL)",
+                 m["comsol-max-h"].value, h_comsol, tol_comsol, unit="A/m",
+                 note="the exact field's maximum on both lines is its centre value"),
+        make_row("sim-coil-resistance", "Resistance of each simulator coil", src, res.value, r_model, r_tol,
+                 unit="ohm", uncertainty=res.uncertainty,
+                 note="model: R = 2 pi a rho N / S0 with the thesis's copper"),
+    ]
+    for key, direction, fig in (("comsol-uniform-transverse", "transverse", 6), ("comsol-uniform-axial", "axial", 7)):
+        row = m[key]
+        length = coils.uniform_zone_length(a, d_comsol, ZONE_TOLERANCE, direction)
+        rows.append(make_row(
+            key, f"Uniform zone {'across the axis' if direction == 'transverse' else 'on the axis'} "
+                 f"(Fig. {fig}), within {100 * ZONE_TOLERANCE:g} %", "thesis §2.3 (COMSOL, read off)",
+            row.value, length, 0.05, unit="cm", scale=0.01,
+            note="tolerance: 'of order' read as +-5 cm"))
+    return rows
+
+
 def magnetorquer_rows(params=None):
     """Chapter 3: the built magnetorquers beside the thesis's own formulas.
 
@@ -210,7 +280,7 @@ def magnetorquer_rows(params=None):
 
 
 #: Row providers by chapter, in book order.
-PROVIDERS = {"ch01": geomagnetic_rows, "ch03": magnetorquer_rows}
+PROVIDERS = {"ch01": geomagnetic_rows, "ch02": simulator_rows, "ch03": magnetorquer_rows}
 
 
 def all_rows():

@@ -19,7 +19,7 @@ from .params import chapter_parameters
 from .units import ampere_per_meter_to_oersted, tesla_to_oersted
 
 __all__ = ["SourceCheck", "CHECK_PROVIDERS", "source_checks", "errata", "geomagnetic_checks",
-           "kovalenko_field_checks"]
+           "kovalenko_field_checks", "simulator_field_checks"]
 
 
 @dataclass(frozen=True)
@@ -397,8 +397,111 @@ def simulator_checks():
     ]
 
 
+def simulator_field_checks():
+    """Thesis §2.1–2.4 beyond the coil design (eq. 15, the centre-field deviation, the
+    electrics at the current limit) and Kovalenko's uniform-field coil systems (§3.4)."""
+    from . import coils
+
+    p = load_parameter_set("thesis")
+    m = load_measurements("thesis")
+    v = {k: p[k].value_si for k in ("mockup_inertia", "mockup_magnet_moment", "oscillation_period",
+                                    "oscillation_amplitude", "sim_built_radius", "sim_built_spacing",
+                                    "sim_turns", "sim_current", "sim_wire_diameter", "copper_resistivity")}
+    h_printed_eq = float(coils.oscillation_field_h(v["mockup_inertia"], v["mockup_magnet_moment"],
+                                                   v["oscillation_period"]))
+    h_with_a = float(coils.oscillation_field_h(v["mockup_inertia"], v["mockup_magnet_moment"],
+                                               v["oscillation_period"], v["oscillation_amplitude"]))
+    a, d, n, i = v["sim_built_radius"], v["sim_built_spacing"], v["sim_turns"], v["sim_current"]
+    h_built = float(coils.helmholtz_center_h(i, n, a, d))
+    measured = m["sim-center-h"].value
+    r_max, i_max = m["sim-coil-resistance-max"].value, m["sim-current-max"].value
+    circle2, helm = ["circle"] * 2, ([1.0, 1.0], [-0.5, 0.5], [1.0, 1.0])
+    four = (["circle"] * 4, [1.0] * 4, [-1.0, -0.25, 0.25, 1.0], [7.0, 3.0, 3.0, 7.0])
+    four_dev = coils.coaxial_system_sphere_nonuniformity(*four, 2.0 / 3.0)
+    rubens = (["square"] * 5, [1.0] * 5, [-0.5, -0.25, 0.0, 0.25, 0.5], [19.0, 4.0, 10.0, 4.0, 19.0])
+    return [
+        SourceCheck(
+            id="thesis-eq15-required-field", chapter="ch02", source="thesis",
+            location="eq. (15), seed lines 238–240", quantity="Field for a 60 s swing, eq. (15) as printed",
+            printed=200.0, computed=h_printed_eq, tolerance=50.0, unit="A/m",
+            explanation=("4π²J/(μ0 m T²) with J = 0.005 kg·m², m = 0.6 A·m², T = 60 s is 72.7 A/m. The "
+                         "printed ≈ 200 A/m needs the amplitude factor A = π that line 236 defines and "
+                         "eq. (15) drops (228.5 A/m), a factor with no place in a small-oscillation period."),
+            computation="magbench.coils.oscillation_field_h"),
+        SourceCheck(
+            id="thesis-eq15-with-amplitude", chapter="ch02", source="thesis",
+            location="eq. (15) with A = π, seed line 240", quantity="Field for a 60 s swing, with the factor A = π",
+            printed=200.0, computed=h_with_a, tolerance=50.0, unit="A/m",
+            explanation="4π²JA/(μ0 m T²) = 228.5 A/m, which '≈ 200' rounds down (one printed digit).",
+            computation="magbench.coils.oscillation_field_h"),
+        SourceCheck(
+            id="thesis-sim-coil-voltage", chapter="ch02", source="thesis",
+            location="seed line 282", quantity="Supply voltage of a simulator coil, N = 110, I = 2.3 A",
+            printed=32.0, computed=float(coils.winding_voltage(a, n, v["sim_wire_diameter"],
+                                                               v["copper_resistivity"], i)),
+            tolerance=0.5, unit="V",
+            explanation=("U = RI = 31.48 V, just outside the printed digit; U depends on NI only and "
+                         "NI = 258 (the slipped eq. 16) gives 32.1 V, like R and P computed for N = 100."),
+            computation="magbench.coils.winding_voltage"),
+        SourceCheck(
+            id="thesis-sim-power-at-limit", chapter="ch02", source="thesis",
+            location="§2.4, seed line 316", quantity="Power of one coil at 2.6 A and 13 Ω",
+            printed=m["sim-coil-power-max"].value, computed=i_max**2 * r_max, tolerance=0.05, unit="W",
+            explanation="I²R = 2.6² × 13 = 87.88 W (with the measured 13 Ω; 13.69 Ω would give 92.5 W).",
+            computation="I**2 * R"),
+        SourceCheck(
+            id="thesis-sim-center-deviation", chapter="ch02", source="thesis",
+            location="§2.4, seed line 318", quantity="Deviation of the measured 262 A/m from the calculated field",
+            printed=m["sim-center-h-deviation"].value * 100, computed=100 * (measured - h_built) / h_built,
+            tolerance=0.05, unit="%",
+            explanation=("(262 − 250)/250 = 4.8 % compares with the design target, not with what the coils "
+                         "as built should give: eq. (16) with 110 turns, 2.3 A, a = 0.5 m, d = 0.51 m gives "
+                         "357.7 A/m, 27 % above the measurement. The agreement rests on the NI slip."),
+            computation="magbench.coils.helmholtz_center_h"),
+        SourceCheck(
+            id="kovalenko-helmholtz-cylinder", chapter="ch02", source="kovalenko",
+            location="§3.4, p. 60 (seed line 61)",
+            quantity="Helmholtz pair: largest deviation in a cylinder of radius 0.1r, length 0.2r",
+            printed=0.02, computed=100 * coils.coaxial_system_cylinder_nonuniformity(circle2, *helm, 0.1, 0.2),
+            tolerance=0.005, unit="%", explanation="Exact loop fields on a grid of the solid cylinder.",
+            computation="magbench.coils.coaxial_system_cylinder_nonuniformity"),
+        SourceCheck(
+            id="kovalenko-square-pair-spacing", chapter="ch02", source="kovalenko",
+            location="§3.4, p. 60 (seed line 61)", quantity="Square Helmholtz pair: spacing / side",
+            printed=0.5445, computed=float(coils.square_pair_spacing(1.0)), tolerance=0.00005, unit="1",
+            explanation="Zero curvature of the axial field at the centre.",
+            computation="magbench.coils.square_pair_spacing"),
+        SourceCheck(
+            id="kovalenko-rubens-cylinder", chapter="ch02", source="kovalenko",
+            location="§3.4, pp. 61–62 (seed lines 62, 64)",
+            quantity="Rubens coils: largest deviation in a cylinder of length a/2, radius a/4",
+            printed=1.0, computed=100 * coils.coaxial_system_cylinder_nonuniformity(*rubens, 0.25, 0.5),
+            tolerance=0.5, unit="%",
+            explanation="Five squares at 0, ±a/4, ±a/2 with ampere-turns 10 : 4 : 19; 1.15 % rounds to 1 %.",
+            computation="magbench.coils.coaxial_system_cylinder_nonuniformity"),
+        SourceCheck(
+            id="kovalenko-four-coil-sphere", chapter="ch02", source="kovalenko",
+            location="§3.4, p. 61 (seed line 62)",
+            quantity="Four-coil system: largest deviation in a sphere of radius 2r/3",
+            printed=0.5, computed=100 * four_dev, tolerance=0.05, unit="%",
+            explanation=("Equal radii r, inner coils at ±0.25r, outer at ±r, ampere-turns 7 : 3 give 1.46 % "
+                         "in a sphere of radius 2r/3; 0.5 % holds only to a radius of about r/2."),
+            computation="magbench.coils.coaxial_system_sphere_nonuniformity"),
+        SourceCheck(
+            id="kovalenko-four-coil-helmholtz-size", chapter="ch02", source="kovalenko",
+            location="§3.4, p. 61 (seed line 62)",
+            quantity="Helmholtz radius / four-coil radius for the same uniformity in the same sphere",
+            printed=2.0, computed=(2.0 / 3.0) / coils.uniform_sphere_radius(1.0, 1.0, four_dev),
+            tolerance=0.5, unit="1",
+            explanation=("A Helmholtz pair reaches the four-coil system's computed deviation in the sphere "
+                         "of radius 2r/3 only with radius 1.9r: 'twice the size' holds."),
+            computation="magbench.coils.uniform_sphere_radius"),
+    ]
+
+
 #: Source-check providers by chapter, in book order.
-CHECK_PROVIDERS = {"ch01": [geomagnetic_checks, kovalenko_field_checks], "ch02": [simulator_checks],
+CHECK_PROVIDERS = {"ch01": [geomagnetic_checks, kovalenko_field_checks],
+                   "ch02": [simulator_checks, simulator_field_checks],
                    "ch03": [magnetorquer_checks, magnetorquer_design_checks, kovalenko_actuator_checks]}
 
 

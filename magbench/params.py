@@ -34,6 +34,13 @@ CHAPTER_INPUTS = {
         "laboratory_longitude", "thesis_epoch", "orbit_altitude", "orbit_inclination",
         "mockup_inertia", "mockup_initial_rate",
     ],
+    "ch02": [
+        "mockup_inertia", "mockup_magnet_moment", "oscillation_period", "oscillation_amplitude",
+        "sim_design_h", "sim_coil_radius", "sim_spacing_ratio", "sim_turns", "sim_current",
+        "sim_wire_diameter", "copper_resistivity", "copper_density", "sim_comsol_spacing",
+        "sim_built_spacing", "sim_built_radius", "laboratory_latitude", "laboratory_longitude",
+        "thesis_epoch",
+    ],
     "ch03": [
         "copper_resistivity", "copper_density", "mtq_moment", "mtq_voltage", "mtq_side",
         "mtq_turns", "mtq_max_power", "mtq_max_mass", "aluminium_gamma_rho", "magnet_remanence",
