@@ -60,7 +60,7 @@ _BLOCK = 256
 
 def _wrap(angle):
     """Angle mapped into [−π, π] [rad] (round-to-nearest turn: cheaper than a remainder)."""
-    return angle - (2.0 * np.pi) * np.round(angle * (0.5 / np.pi))
+    return angle - (2.0 * np.pi) * np.rint(angle * (0.5 / np.pi))
 
 
 @dataclass(frozen=True)
@@ -271,7 +271,7 @@ def quantise_duty(duty, levels):
     d = np.asarray(duty, dtype=float)
     if not levels:
         return d
-    return np.round(d * levels) / levels
+    return np.rint(d * levels) / levels
 
 
 def _angular_acceleration(psi, omega, m1, m2, field, inertia, stiffness, neutral):
@@ -404,7 +404,8 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
     members : int, optional
         Number of members [-]; default: the length of the per-member inputs (or 1).
     moment_scale : array_like, optional
-        Factor on each coil's full-scale moment, shape (members, 2) or broadcastable [-].
+        Factor on each coil's full-scale moment [-], broadcast to (members, 2): a scalar
+        for all, shape (2,) per coil, (members, 1) per member, (members, 2) for each.
     thread_stiffness : array_like, optional
         Torsion constant per member [N·m/rad]; default ``setup.thread_stiffness``.
     rng : numpy.random.Generator, optional
@@ -451,8 +452,11 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
     window = float(as_in_range("window", window, 0.0, steps * dt, unit="s"))
     if members is None:
         sizes = [np.size(v) for v in (release_angle, release_rate, thread_stiffness) if v is not None]
-        sizes.append(np.shape(moment_scale)[0] if np.ndim(moment_scale) == 2 else np.size(moment_scale))
-        members = max(sizes)
+        if np.ndim(moment_scale) == 2:
+            sizes.append(np.shape(moment_scale)[0])
+        if sensor_errors is not None:
+            sizes.append(np.shape(sensor_errors[0])[-1])
+        members = max(sizes + [1])
     members = int(as_positive("members", members))
     psi = _member_array("release_angle", release_angle, members)
     omega = _member_array("release_rate", release_rate, members)
@@ -461,8 +465,7 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
     as_nonnegative("thread_stiffness", kappa)
     scale = as_positive("moment_scale", moment_scale)
     try:
-        scale = np.broadcast_to(scale if scale.ndim == 2 else scale.reshape(-1, 1) if scale.ndim == 1
-                                else scale, (members, 2))
+        scale = np.broadcast_to(scale, (members, 2))
     except ValueError:
         raise ValueError(f"moment_scale must broadcast to ({members}, 2), got shape {scale.shape}") from None
     every = 1 if record_interval is None else float(as_positive("record_interval", record_interval, unit="s")) / dt
@@ -487,6 +490,7 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
     full_nominal = setup.full_scale_moments
     full_actual = full_nominal * scale                       # (members, 2)
     duty_gain = 1.0 / full_nominal
+    full_1, full_2 = np.ascontiguousarray(full_actual[:, 0]), np.ascontiguousarray(full_actual[:, 1])
 
     n_rec = steps // every + 1
     rec = {k: np.empty((n_rec, members)) for k in ("psi", "rate", "estimate")}
@@ -496,7 +500,6 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
     first_in_window = int(np.ceil((steps * dt - window) / dt - 1e-9))
     estimate = None
     integral = np.zeros(members)
-    moments = np.zeros((members, 2))
     for start in range(0, steps, _BLOCK):
         count = min(_BLOCK, steps - start)
         if sensor_errors is not None:
@@ -518,19 +521,20 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
             u, integral = control.pid_step(error, -gyro, integral, dt, kp, ki, kd, limit)
             u_over_b = u / np.sqrt(bx * bx + by * by)
             # Thesis allocation with m_z = -u: M_x = u b_y, M_y = -u b_x (torque B0 u).
-            duty_1 = quantise_duty(u_over_b * by * duty_gain[0], levels)
-            duty_2 = quantise_duty(u_over_b * bx * -duty_gain[1], levels)
-            moments = np.stack([duty_1, duty_2], axis=-1) * full_actual
+            moment_1 = quantise_duty(u_over_b * by * duty_gain[0], levels) * full_1
+            moment_2 = quantise_duty(u_over_b * bx * -duty_gain[1], levels) * full_2
             if k % every == 0:
                 i = k // every
-                rec["psi"][i], rec["rate"][i], rec["estimate"][i], rec_m[i] = psi, omega, estimate, moments
+                rec["psi"][i], rec["rate"][i], rec["estimate"][i] = psi, omega, estimate
+                rec_m[i, :, 0], rec_m[i, :, 1] = moment_1, moment_2
             if k >= first_in_window:
                 np.maximum(band, np.abs(_wrap(psi - psi_des)), out=band)
                 np.maximum(band_est, np.abs(_wrap(estimate - psi_des)), out=band_est)
-            psi, omega = plant_step(psi, omega, moments[:, 0], moments[:, 1], dt, field=b0,
+            psi, omega = plant_step(psi, omega, moment_1, moment_2, dt, field=b0,
                                     inertia=inertia, thread_stiffness=kappa, thread_neutral_angle=neutral)
     if steps % every == 0:
-        rec["psi"][-1], rec["rate"][-1], rec["estimate"][-1], rec_m[-1] = psi, omega, estimate, moments
+        rec["psi"][-1], rec["rate"][-1], rec["estimate"][-1] = psi, omega, estimate
+        rec_m[-1, :, 0], rec_m[-1, :, 1] = moment_1, moment_2
     else:
         for key in rec:
             rec[key] = rec[key][:-1]

@@ -177,12 +177,12 @@ def load_bench_log(path):
 
     Examples
     --------
-    >>> import tempfile, os
+    >>> import tempfile
     >>> header = ",".join(f"{n} [{u or 'duty'}]" for n, u in COLUMNS)
     >>> with tempfile.TemporaryDirectory() as d:
-    ...     p = os.path.join(d, "synthetic.csv")
-    ...     _ = open(p, "w").write(header + "\\n" + "0,0,0,0,0,0,9.8,3e-4,0,0,0,0\\n"
-    ...                            + "0.01,0,0,0,0,0,9.8,3e-4,0,0,0.5,0\\n")
+    ...     p = Path(d) / "synthetic.csv"
+    ...     _ = p.write_text(header + "\\n" + "0,0,0,0,0,0,9.8,3e-4,0,0,0,0\\n"
+    ...                      + "0.01,0,0,0,0,0,9.8,3e-4,0,0,0.5,0\\n")
     ...     log = load_bench_log(p)
     >>> log.time.tolist(), log.coil_unit
     ([0.0, 0.01], 'duty')
