@@ -23,7 +23,8 @@ from .constants import EARTH_RADIUS
 from .params import chapter_parameters
 
 __all__ = ["CompareRow", "PROVIDERS", "make_row", "all_rows", "geomagnetic_rows", "today_decimal_year",
-           "simulator_rows", "simulator_center_h_tolerance", "magnetorquer_rows"]
+           "simulator_rows", "simulator_center_h_tolerance", "magnetorquer_rows",
+           "bench_rows"]
 
 
 @dataclass(frozen=True)
@@ -279,8 +280,44 @@ def magnetorquer_rows(params=None):
     ]
 
 
+def bench_rows(params=None):
+    """Chapter 4, the bench: the predicted final error band beside the thesis's 10°.
+
+    The model is a nominal run of :func:`magbench.bench.simulate_bench` (release along
+    the field at rest, datasheet sensor noise seeded with ``bench_seed``) for each of
+    the thesis's two targets; its value is max |ψ − ψ_des| over the last
+    ``bench_error_window`` of the run. The thesis prints "10 град. (~ 0.17 рад)" (seed
+    line 616) without an uncertainty or a metric, so the tolerance is half a unit of
+    its last printed digit, 0.5°.
+
+    Parameters
+    ----------
+    params : dict, optional
+        Chapter-4 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
+    """
+    from . import bench
+    from .data import measurement
+
+    p = params or chapter_parameters("ch04")
+    setup = bench.BenchSetup.from_parameters(p)
+    measured = measurement("orientation-error")
+    deg = np.pi / 180
+    rows = []
+    for tag, label, target in (("pi3", "π/3 (Fig. 19)", np.pi / 3), ("2pi3", "2π/3 (Fig. 20)", 2 * np.pi / 3)):
+        run = bench.simulate_bench(setup, target, duration=p["bench_duration"],
+                                   rng=np.random.default_rng(int(p["bench_seed"])),
+                                   window=p["bench_error_window"])
+        rows.append(make_row(
+            f"bench-error-{tag}", f"Orientation error on the bench, ψ_des = {label}",
+            "thesis §4.4, seed line 616 (measured; metric not stated)", measured.value,
+            float(run.error_band[0]), 0.5 * deg, unit="deg", scale=deg,
+            note="model: error band of the last window of a nominal simulated run"))
+    return rows
+
+
 #: Row providers by chapter, in book order.
-PROVIDERS = {"ch01": geomagnetic_rows, "ch02": simulator_rows, "ch03": magnetorquer_rows}
+PROVIDERS = {"ch01": geomagnetic_rows, "ch02": simulator_rows, "ch03": magnetorquer_rows,
+             "ch04": bench_rows}
 
 
 def all_rows():

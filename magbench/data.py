@@ -46,7 +46,7 @@ DATA_DIR = Path(__file__).resolve().parent.parent / "data"
 _TO_SI = {
     "1": 1.0, "A": 1.0, "V": 1.0, "W": 1.0, "s": 1.0, "m": 1.0, "ohm": 1.0, "A/m": 1.0,
     "T": 1.0, "kg": 1.0, "kg m^2": 1.0, "kg/m^3": 1.0, "ohm m": 1.0, "A m^2": 1.0,
-    "rad": 1.0, "rad/s": 1.0, "year": 1.0,
+    "rad": 1.0, "rad/s": 1.0, "year": 1.0, "N m/rad": 1.0,
     "ohm kg/m^2": 1.0, "A/m^2": 1.0, "N m": 1.0, "N m/kg": 1.0, "kg/(N m)": 1.0,
     "mm": 1e-3, "km": 1e3, "cm": 1e-2,
     "deg": math.pi / 180.0,

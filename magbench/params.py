@@ -48,6 +48,16 @@ CHAPTER_INPUTS = {
         "permalloy_b", "permalloy_design_magnetization", "permalloy_design_field", "core_density",
         "core_averaging_factor", "em_fill_factor", "em_current_density", "em_elongation",
     ],
+    "ch04": [
+        # the bench experiments (book/ch04-bench.md, magbench.bench)
+        "mockup_inertia", "mtq_voltage", "mtq_turns", "mtq_side", "sim_design_h",
+        "bench_field_h", "bench_background_h", "bench_background_azimuth",
+        "bench_coil_resistance", "bench_moment_tolerance", "bench_pwm_levels",
+        "bench_sample_interval", "bench_duration", "bench_error_window",
+        "bench_filter_coefficient", "bench_bandwidth", "bench_thread_stiffness",
+        "bench_thread_stiffness_factor", "bench_release_angle_spread", "bench_release_rate_std",
+        "bench_gyro_bias", "bench_members", "bench_seed",
+    ],
 }
 
 

@@ -10,7 +10,8 @@ import sys
 import pytest
 
 PHYSICS = ["magbench.geomag", "magbench.attitude", "magbench.coils", "magbench.magnetorquer",
-           "magbench.estimation", "magbench.control", "magbench.units"]
+           "magbench.estimation", "magbench.control", "magbench.units", "magbench.sensors",
+           "magbench.bench"]
 SOURCE_LINE = re.compile(r"Thesis (eqs?\.|§)|Not in the (thesis|sources)|Kovalenko \(1975\)")
 
 

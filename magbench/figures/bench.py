@@ -1,0 +1,186 @@
+"""Figures of the bench experiments (thesis §4.4, Figs. 19–20) and their Monte Carlo.
+
+The thesis's Figs. 19–20 are measured angle traces whose data were never published.
+``thesis-fig19`` and ``thesis-fig20`` therefore show what the model of
+:mod:`magbench.bench` predicts for those runs (nominal run, and the spread of a small
+seeded Monte Carlo), with the thesis's 10° marked, and overlay any bench log found in
+``data/bench/`` (:mod:`magbench.benchlog`). ``ch04-montecarlo`` is the distribution of
+the final error over the uncertain inputs, for both targets.
+"""
+
+import numpy as np
+
+from .. import bench, benchlog
+from ..data import load_parameter_set, measurement
+from ..params import CHAPTER_INPUTS, chapter_parameters
+from . import FigureData, FigureParameter, FigureSpec, Series, register
+
+SOURCE = "Bui (2016), thesis §4.4 (Figs. 19–20, seed lines 612–623); model: magbench.bench"
+DEG = np.pi / 180.0
+
+#: Chapter-4 inputs the bench figures take as parameters (all of the bench's).
+BENCH_INPUTS = [n for n in CHAPTER_INPUTS["ch04"] if n != "sim_design_h"]
+
+_SI_UNITS = {"deg": "rad", "%": "1", "kg m^2": "kg m^2"}
+
+
+def _input_parameters():
+    table = load_parameter_set("thesis")
+    values = chapter_parameters("ch04", overrides="")
+    params = {}
+    for name in BENCH_INPUTS:
+        p = table[name]
+        note = (p.note or p.source).split(";")[0]
+        params[name] = FigureParameter(values[name], _SI_UNITS.get(p.unit, p.unit), note)
+    return params
+
+
+def _setup(p):
+    return bench.BenchSetup.from_parameters(p)
+
+
+def _logs_for(psi_des, alpha):
+    """Series of the bench logs in data/bench whose target is psi_des (or unstated)."""
+    series = []
+    for log in benchlog.load_bench_logs():
+        target = log.psi_des
+        if target is not None and abs(bench._wrap(target - psi_des)) > 1e-6:
+            continue
+        series.append(Series(f"bench log {log.path.name}", {
+            "time": ("s", log.time),
+            "psi_filtered": ("deg", np.degrees(benchlog.log_filtered_angle(log, alpha)))}))
+    return series
+
+
+def compute_trace(psi_des, release_angle, release_rate, envelope_members, **p):
+    """Predicted angle traces of one bench run, a Monte Carlo envelope and any logs."""
+    setup = _setup(p)
+    seed = int(p["bench_seed"])
+    run = bench.simulate_bench(setup, psi_des, duration=p["bench_duration"], release_angle=release_angle,
+                               release_rate=release_rate, rng=np.random.default_rng(seed),
+                               window=p["bench_error_window"])
+    n_env = int(round(envelope_members))
+    if n_env < 2:
+        raise ValueError(f"envelope_members must be >= 2, got {envelope_members!r}")
+    mc = bench.monte_carlo(setup, psi_des, members=n_env, seed=seed + 1, duration=p["bench_duration"],
+                           moment_tolerance=p["bench_moment_tolerance"],
+                           release_angle_spread=p["bench_release_angle_spread"],
+                           release_rate_std=p["bench_release_rate_std"],
+                           thread_stiffness_factor=p["bench_thread_stiffness_factor"],
+                           record_interval=0.1, window=p["bench_error_window"])
+    # Angles of members are compared with the target modulo whole turns.
+    offset = np.degrees(bench._wrap(mc.psi - psi_des))
+    lo, hi = np.percentile(offset, [5.0, 95.0], axis=1)
+    series = [
+        Series("nominal run", {"time": ("s", run.time), "psi": ("deg", np.degrees(run.psi[:, 0])),
+                               "psi_filtered": ("deg", np.degrees(run.estimate[:, 0])),
+                               "moment_1": ("A m^2", run.moments[:, 0, 0]),
+                               "moment_2": ("A m^2", run.moments[:, 0, 1])}),
+        Series(f"Monte Carlo, {n_env} members, 5-95 %", {
+            "time": ("s", mc.time), "psi_low": ("deg", np.degrees(psi_des) + lo),
+            "psi_high": ("deg", np.degrees(psi_des) + hi)}),
+    ]
+    logs = _logs_for(psi_des, p["bench_filter_coefficient"])
+    error = measurement("orientation-error")
+    return FigureData("", "", "", {}, series + logs, extra={
+        "psi_des": psi_des, "measured_error": error.value, "error_band": float(run.error_band[0]),
+        "indicated_error_band": float(run.indicated_error_band[0]), "n_logs": len(logs),
+        "window": p["bench_error_window"], "mc_error_band": mc.error_band})
+
+
+def plot_trace(data):
+    """Angle against time with the ±10° band about the target, and the coil moments."""
+    import matplotlib.pyplot as plt
+
+    e = data.extra
+    target, tol = np.degrees(e["psi_des"]), np.degrees(e["measured_error"])
+    nominal, envelope = data.series[0], data.series[1]
+    c = {k: v for k, (u, v) in nominal.columns.items()}
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(8.0, 6.0), sharex=True,
+                                 gridspec_kw={"height_ratios": [2.2, 1.0]})
+    env = {k: v for k, (u, v) in envelope.columns.items()}
+    a1.fill_between(env["time"], env["psi_low"], env["psi_high"], color="C0", alpha=0.2,
+                    label=envelope.label)
+    a1.axhspan(target - tol, target + tol, color="C3", alpha=0.08,
+               label=f"target ± {tol:.0f}° (thesis's error)")
+    a1.axhline(target, color="C3", linewidth=0.8)
+    a1.plot(c["time"], c["psi"], color="C0", label="nominal run: true angle")
+    a1.plot(c["time"], c["psi_filtered"], color="C1", linestyle="--", linewidth=0.9,
+            label="nominal run: filtered angle (eq. 39)")
+    for s in data.series[2:]:
+        cols = {k: v for k, (u, v) in s.columns.items()}
+        a1.plot(cols["time"], cols["psi_filtered"], color="k", linewidth=1.0, label=s.label)
+    if not e["n_logs"]:
+        a1.text(0.99, 0.03, "no bench log in data/bench/: the thesis's traces are unpublished",
+                transform=a1.transAxes, ha="right", va="bottom", fontsize=8, color="0.3")
+    a1.set_ylabel("ψ, angle from field to coil 1 [deg]")
+    a1.legend(fontsize=7, loc="center right")
+    a1.set_title(f"Predicted bench run, ψ_des = {target:.0f}° (thesis Fig. "
+                 f"{19 if abs(target - 60.0) < 1e-6 else 20 if abs(target - 120.0) < 1e-6 else '19-20'})")
+    a2.plot(c["time"], c["moment_1"], label="coil 1")
+    a2.plot(c["time"], c["moment_2"], label="coil 2")
+    a2.set_xlabel("time since release [s]")
+    a2.set_ylabel("moment [A·m²]")
+    a2.legend(fontsize=7)
+    fig.tight_layout()
+    return fig
+
+
+def compute_montecarlo(**p):
+    """Final error band of a seeded Monte Carlo for ψ_des = π/3 and 2π/3."""
+    setup = _setup(p)
+    series = []
+    for k, target in enumerate((np.pi / 3.0, 2.0 * np.pi / 3.0)):
+        run = bench.monte_carlo(setup, target, members=int(round(p["bench_members"])),
+                                seed=int(p["bench_seed"]) + 10 * (k + 1), duration=p["bench_duration"],
+                                moment_tolerance=p["bench_moment_tolerance"],
+                                release_angle_spread=p["bench_release_angle_spread"],
+                                release_rate_std=p["bench_release_rate_std"],
+                                thread_stiffness_factor=p["bench_thread_stiffness_factor"],
+                                record_interval=p["bench_duration"], window=p["bench_error_window"])
+        series.append(Series(f"ψ_des = {np.degrees(target):.0f}°", {
+            "error_band": ("deg", np.degrees(run.error_band)),
+            "indicated_error_band": ("deg", np.degrees(run.indicated_error_band)),
+            "release_angle": ("deg", np.degrees(run.inputs["release_angle"])),
+            "thread_stiffness": ("N m/rad", run.inputs["thread_stiffness"])}))
+    return FigureData("", "", "", {}, series,
+                      extra={"measured_error": measurement("orientation-error").value})
+
+
+def plot_montecarlo(data):
+    """Histograms of the final error band (log scale) with the thesis's 10° marked."""
+    import matplotlib.pyplot as plt
+
+    measured = np.degrees(data.extra["measured_error"])
+    values = [s.columns["error_band"][1] for s in data.series]
+    low = min(float(np.min(v)) for v in values)
+    edges = np.logspace(np.floor(np.log10(max(low, 1e-6))), np.log10(3.0 * measured), 60)
+    fig, ax = plt.subplots(figsize=(8.0, 4.0))
+    for s, v in zip(data.series, values):
+        ax.hist(v, bins=edges, histtype="step", linewidth=1.4,
+                label=f"{s.label}: median {np.median(v):.3g}°, 99 % ≤ {np.percentile(v, 99):.3g}°")
+    ax.axvline(measured, color="C3", linewidth=2, label=f"thesis: {measured:.0f}° (metric not stated)")
+    ax.set_xscale("log")
+    ax.set_xlabel("final error band max |ψ − ψ_des| over the last window [deg]")
+    ax.set_ylabel("members")
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(0.42, 0.98))
+    ax.set_title(f"Monte Carlo of the bench: {len(values[0])} members per target")
+    fig.tight_layout()
+    return fig
+
+
+def _trace_parameters(psi_des):
+    params = {"psi_des": FigureParameter(psi_des, "rad", "target angle from the field to coil 1"),
+              "release_angle": FigureParameter(0.0, "rad", "true angle at release (ours: along the field)"),
+              "release_rate": FigureParameter(0.0, "rad/s", "rate at release (ours)"),
+              "envelope_members": FigureParameter(100.0, "1", "Monte Carlo members of the envelope")}
+    params.update(_input_parameters())
+    return params
+
+
+register(FigureSpec("thesis-fig19", "Bench run for ψ_des = π/3: model prediction (thesis Fig. 19)",
+                    SOURCE, compute_trace, plot_trace, _trace_parameters(np.pi / 3.0)))
+register(FigureSpec("thesis-fig20", "Bench run for ψ_des = 2π/3: model prediction (thesis Fig. 20)",
+                    SOURCE, compute_trace, plot_trace, _trace_parameters(2.0 * np.pi / 3.0)))
+register(FigureSpec("ch04-montecarlo", "Monte Carlo of the bench's final error",
+                    SOURCE, compute_montecarlo, plot_montecarlo, _input_parameters()))
