@@ -277,6 +277,30 @@ def _first_order_lowpass(signal, dt, tau):
     return complementary_filter(np.zeros_like(signal), signal, dt, alpha)
 
 
+def _lowpass_from_mean(signal, dt, tau, order):
+    """Low-pass along axis 0, started from the running mean of the first tau seconds.
+
+    Until tau has elapsed the output is the mean of the samples so far (the best estimate
+    of a constant from that many samples); the IIR filter then starts in steady state at
+    that mean. This is how VQF initialises its filters (Laidig & Seel 2023, §3); starting
+    from the first sample alone would carry that sample's error for several tau.
+    """
+    warmup = min(len(signal), max(1, int(round(tau / dt))))
+    out = np.empty_like(signal)
+    out[:warmup] = np.cumsum(signal[:warmup], axis=0) / np.arange(1, warmup + 1)[:, np.newaxis]
+    rest = signal[warmup:]
+    if len(rest):
+        start = out[warmup - 1]
+        if order == 1:
+            alpha = tau / (tau + dt)
+            # Eq. (39) with no gyro term: θ_k = A θ_{k-1} + (1 - A) x_k.
+            out[warmup:] = complementary_filter(np.zeros_like(rest), rest, dt, alpha, initial_angle=start)
+        else:
+            b, a = butter(2, np.sqrt(2.0) / (2.0 * np.pi * tau), fs=1.0 / dt)
+            out[warmup:], _ = lfilter(b, a, rest, axis=0, zi=lfilter_zi(b, a)[:, np.newaxis] * start)
+    return out
+
+
 def rest_gyro_bias(gyro, accel, dt, *, rate_threshold=np.radians(2.0), accel_threshold=0.5,
                    min_rest_time=1.5, rest_filter_tau=0.5):
     r"""Gyro bias estimated, causally, from the periods in which the sensor is at rest.
@@ -387,8 +411,9 @@ def complementary_tilt(gyro, accel, dt, *, tau=3.0, order=2, rest_bias=True):
     Laidig & Seel (2023, "VQF: highly accurate IMU orientation estimation with bias
     estimation and magnetic disturbance rejection", Information Fusion 91, 187–204),
     whose default accelerometer time constant is also 3 s, with its rest detector for
-    the gyro bias but without its bias estimation during motion. The filter starts from the first accelerometer sample (the sensor
-    should be still then). Everything is vectorised: a prefix product, one IIR pass and
+    the gyro bias but without its bias estimation during motion. During the first τ the
+    low-pass returns the running mean of the rotated accelerometer (VQF's
+    initialisation), so no single start-up sample dominates. Everything is vectorised: a prefix product, one IIR pass and
     one rotation per sample.
 
     Examples
@@ -411,17 +436,10 @@ def complementary_tilt(gyro, accel, dt, *, tau=3.0, order=2, rest_bias=True):
         rate = rate - rest_gyro_bias(rate, acc, step)[0]
     gyro_frame = strapdown_orientation(rate, step)
     acc_inertial = _rotations(gyro_frame).apply(acc)
-    if order == 1:
-        smooth = _first_order_lowpass(acc_inertial, step, time_constant)
-    else:
-        cutoff = np.sqrt(2.0) / (2.0 * np.pi * time_constant)
-        nyquist = 0.5 / step
-        if cutoff >= nyquist:
-            raise ValueError(f"tau must exceed {np.sqrt(2.0) / (np.pi * nyquist * 2.0):g} s for order 2 "
-                             f"(cut-off below the Nyquist frequency {nyquist:g} Hz), got {time_constant!r}")
-        b, a = butter(2, cutoff, fs=1.0 / step)
-        smooth, _ = lfilter(b, a, acc_inertial, axis=0,
-                            zi=lfilter_zi(b, a)[:, np.newaxis] * acc_inertial[0])
+    if order == 2 and np.sqrt(2.0) / (2.0 * np.pi * time_constant) >= 0.5 / step:
+        raise ValueError(f"tau must exceed {2.0 * np.sqrt(2.0) * step / (2.0 * np.pi):g} s for order 2 "
+                         f"(cut-off below the Nyquist frequency {0.5 / step:g} Hz), got {time_constant!r}")
+    smooth = _lowpass_from_mean(acc_inertial, step, time_constant, order)
     correction = accelerometer_tilt(smooth)
     return _quaternions(_rotations(correction) * _rotations(gyro_frame))
 
