@@ -25,7 +25,6 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
 from . import estimation
 
@@ -141,9 +140,9 @@ def error_quaternion_earth(estimate, reference):
     out = np.full(np.broadcast_shapes(est.shape, ref.shape), np.nan)
     est_v = np.broadcast_to(est, out.shape)[valid]
     ref_v = np.broadcast_to(ref, out.shape)[valid]
-    product = (Rotation.from_quat(est_v, scalar_first=True)
-               * Rotation.from_quat(ref_v, scalar_first=True).inv())
-    out[valid] = product.as_quat(scalar_first=True)
+    # q_est ⊗ conj(q_ref), as BROAD's quatmult(imu_quat, invquat(opt_quat)).
+    product = estimation._hamilton_product(est_v, ref_v * [1.0, -1.0, -1.0, -1.0])
+    out[valid] = product / np.linalg.norm(product, axis=-1, keepdims=True)
     return out
 
 

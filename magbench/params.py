@@ -34,6 +34,10 @@ CHAPTER_INPUTS = {
         "laboratory_longitude", "thesis_epoch", "orbit_altitude", "orbit_inclination",
         "mockup_inertia", "mockup_initial_rate",
     ],
+    "ch04": [
+        "sim_design_h", "filter_coefficient_low", "filter_coefficient_high",
+        "filter_sample_interval", "gyro_residual_bias",
+    ],
 }
 
 
