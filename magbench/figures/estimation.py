@@ -253,7 +253,8 @@ def _trial(name):
 
 
 def _missing(figure_id):
-    return FigureData(figure_id, "", "", {}, [], extra={"missing": broad.MISSING_MESSAGE})
+    return FigureData(figure_id, "", "", {}, [Series("no BROAD trials found", {"trials": ("1", [0.0])})],
+                      extra={"missing": broad.MISSING_MESSAGE})
 
 
 def _plot_missing(data):
@@ -280,9 +281,13 @@ def compute_broad_tilt(tau, order):
                                                             methods["accelerometer only"][0])
     t = np.arange(len(trial.gyro)) * trial.dt
     step = max(1, int(round(0.05 / trial.dt)))      # plot at 20 Hz
-    columns = {"time": ("s", t[::step]), "movement": ("1", trial.movement[::step].astype(float))}
-    for label, q in methods.items():
-        columns[label] = ("rad", broad.inclination_error(q, trial.reference)[::step])
+    errors = {label: broad.inclination_error(q, trial.reference)[::step] for label, q in methods.items()}
+    # Samples where the optical reference is missing (NaN) have no error; leave them out.
+    known = np.all(np.isfinite(trial.reference[::step]), axis=1)
+    columns = {"time": ("s", t[::step][known]),
+               "movement": ("1", trial.movement[::step][known].astype(float))}
+    for label, err in errors.items():
+        columns[label] = ("rad", err[known])
     series = [Series(trial.name, columns)]
     table = {}
     for name in names:
