@@ -129,7 +129,7 @@ def plot_filter_alpha(data):
         lambda a: a * data.parameters["sample_interval"] / np.clip(1 - a, 1e-9, None),
         lambda tau: tau / (tau + data.parameters["sample_interval"])))
     top.set_xlabel("time constant τ = AΔt/(1−A) [s]")
-    top.set_xticks([0.05, 0.2, 0.5, 1, 2, 5])
+    top.set_xticks([0.05, 0.1, 0.2, 0.5, 1])
     fig.tight_layout()
     return fig
 
