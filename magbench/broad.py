@@ -50,7 +50,8 @@ BROAD_DIR_ENV = "MAGBENCH_BROAD_DIR"
 MISSING_MESSAGE = (
     "BROAD recordings not found: download the .mat files (and trials.json) from the "
     "folder data_mat of https://github.com/dlaidig/broad (CC BY 4.0, Laidig et al. 2021) "
-    f"and set ${BROAD_DIR_ENV} to that folder (default: <repository>/../shared/external/broad)."
+    f"and set ${BROAD_DIR_ENV} to that folder (default: shared/external/broad beside the "
+    "repository's folder)."
 )
 
 
