@@ -49,6 +49,9 @@ CHAPTER_INPUTS = {
         "core_averaging_factor", "em_fill_factor", "em_current_density", "em_elongation",
     ],
     "ch04": [
+        # sensors and estimation (book/ch04-estimation.md)
+        "filter_coefficient_low", "filter_coefficient_high", "filter_sample_interval",
+        "gyro_residual_bias",
         # the bench experiments (book/ch04-bench.md, magbench.bench)
         "mockup_inertia", "mtq_voltage", "mtq_turns", "mtq_side", "sim_design_h",
         "bench_field_h", "bench_background_h", "bench_background_azimuth",

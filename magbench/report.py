@@ -50,9 +50,16 @@ def figure(figure_id, **params):
 
 
 def glue_number(key, value):
-    """Glue a number for ``{glue:text}`key:format``` in prose; returns the value."""
+    """Glue a number for ``{glue:text}`key:format``` in prose; returns the value.
+
+    numpy scalars are glued as Python numbers: their repr (``np.float64(…)``) would
+    otherwise reach the text and defeat the format spec.
+    """
+    import numpy as np
     from myst_nb import glue
 
+    if isinstance(value, np.generic) or (isinstance(value, np.ndarray) and value.ndim == 0):
+        value = value.item()
     glue(key, value, display=False)
     return value
 

@@ -1,0 +1,385 @@
+"""Figures of chapter 4, estimation: the eq. (39) filter, heading from the magnetometer,
+and the 3-D tilt filter on real recordings (BROAD)."""
+
+from functools import lru_cache
+
+import numpy as np
+
+from .. import broad, estimation, sensors
+from ..constants import MU_0
+from ..params import chapter_parameters
+from . import FigureData, FigureParameter, FigureSpec, Series, register
+
+SOURCE = "Bui (2016), thesis §4, eq. (39)"
+GRAVITY = 9.80665
+
+
+def _defaults():
+    return chapter_parameters("ch04", overrides="")
+
+
+# --- eq. (39): what the coefficient A does -------------------------------------------------
+
+VIBRATION_FREQUENCY = 7.0   # [Hz] of the simulated vibration (a fan or motor; assumed)
+
+
+def single_axis_readings(sample_interval, gyro_bias, duration, amplitude, frequency,
+                         vibration_amplitude, seed):
+    """A tilting mock-up (roll θ = amplitude·sin 2πft) read by a simulated MPU-6050.
+
+    Returns time [s], true angle [rad], gyro rate [rad/s] and the accelerometer angle
+    atan2(a_y, a_z) [rad]: the inputs of eq. (39).
+    """
+    rng = np.random.default_rng(int(seed))
+    n = int(round(duration / sample_interval))
+    t = np.arange(n) * sample_interval
+    angle = amplitude * np.sin(2 * np.pi * frequency * t)
+    # Gyro sample k carries the mean rate over the interval before it (consistent with eq. 39).
+    rate = np.diff(angle, prepend=angle[0]) / sample_interval
+    gyro = sensors.gyro_readings(rate, sample_interval, rng=rng, bias=gyro_bias)
+    force = GRAVITY * np.stack([np.zeros(n), np.sin(angle), np.cos(angle)], axis=1)
+    accel = sensors.accelerometer_readings(force, sample_interval, rng=rng,
+                                           vibration_amplitude=[0.0, vibration_amplitude, 0.0],
+                                           vibration_frequency=[0.0, VIBRATION_FREQUENCY, 0.0])
+    return t, angle, gyro, np.arctan2(accel[:, 1], accel[:, 2])
+
+
+def filter_error_terms(sample_interval, alpha, gyro_bias, vibration_amplitude, motion_amplitude):
+    """Closed-form steady-state error terms of eq. (39) with the simulated MPU-6050.
+
+    Returns (bias offset, accelerometer white noise, vibration, gyro noise), each [rad]:
+    a gyro bias b gives the constant offset b·τ with τ = AΔt/(1−A);
+    accelerometer noise (angle std σ_a/g) passes the low-pass with variance gain
+    (1−A)/(1+A); the vibration (angle amplitude ≈ a_v cosθ/g) passes with the gain
+    |H| = |(1−A)/(1−A e^{−jωΔt})| at its frequency; gyro noise σ_ω is integrated with
+    gain AΔt, variance gain A²Δt²/(1−A²).
+    """
+    tau = estimation.complementary_time_constant(sample_interval, alpha)
+    acc_std = sensors.noise_std_from_density(sensors.MPU6050_ACCEL_NOISE_DENSITY, sample_interval) / GRAVITY
+    gyro_std = sensors.noise_std_from_density(sensors.MPU6050_GYRO_NOISE_DENSITY, sample_interval)
+    # RMS of cos θ over a sine of amplitude θ0: sqrt((1 + J0(2θ0))/2).
+    from scipy.special import j0
+    cos_rms = np.sqrt(0.5 * (1 + j0(2 * motion_amplitude)))
+    z = np.exp(1j * 2 * np.pi * VIBRATION_FREQUENCY * sample_interval)
+    gain = np.abs((1 - alpha) / (1 - alpha / z))
+    vib = vibration_amplitude / GRAVITY * cos_rms / np.sqrt(2) * gain
+    acc = acc_std * np.sqrt((1 - alpha) / (1 + alpha))
+    gyr = gyro_std * alpha * sample_interval / np.sqrt(1 - alpha**2)
+    return gyro_bias * tau, acc, vib, gyr
+
+
+def compute_filter_alpha(sample_interval, gyro_bias, alpha_low, alpha_high, duration, amplitude,
+                         frequency, vibration_amplitude, seed):
+    """RMS error of eq. (39) against A, simulated and in closed form, and example traces."""
+    t, angle, gyro, acc_angle = single_axis_readings(sample_interval, gyro_bias, duration, amplitude,
+                                                     frequency, vibration_amplitude, seed)
+    alphas = np.linspace(0.80, 0.998, 67)
+    settle = t > 10.0          # skip the start-up transient (a few τ at most)
+    rms, mean_err = [], []
+    for a in alphas:
+        err = estimation.complementary_filter(gyro, acc_angle, sample_interval, a) - angle
+        rms.append(np.sqrt(np.mean(err[settle] ** 2)))
+        mean_err.append(np.mean(err[settle]))
+    bias_term, acc_term, vib_term, gyro_term = filter_error_terms(
+        sample_interval, alphas, gyro_bias, vibration_amplitude, amplitude)
+    closed = np.sqrt(bias_term**2 + acc_term**2 + vib_term**2 + gyro_term**2)
+    series = [Series("error against A", {
+        "alpha": ("1", alphas), "tau": ("s", estimation.complementary_time_constant(sample_interval, alphas)),
+        "rms_error": ("rad", np.array(rms)), "mean_error": ("rad", np.array(mean_err)),
+        "closed_form_rms": ("rad", closed), "bias_term": ("rad", bias_term),
+        "accel_noise_term": ("rad", np.hypot(acc_term, vib_term)), "gyro_noise_term": ("rad", gyro_term)})]
+    window = (t >= 20.0) & (t < 30.0)
+    for a in (alpha_low, alpha_high):
+        est = estimation.complementary_filter(gyro, acc_angle, sample_interval, a)
+        series.append(Series(f"A = {a:g}", {"time": ("s", t[window]), "estimate": ("rad", est[window])}))
+    series.append(Series("truth and accelerometer", {
+        "time": ("s", t[window]), "angle": ("rad", angle[window]), "accel_angle": ("rad", acc_angle[window])}))
+    return FigureData("ch04-filter-alpha", "", "", {}, series,
+                      extra={"alpha_range": (alpha_low, alpha_high)})
+
+
+def plot_filter_alpha(data):
+    """Left: traces for the thesis's two A; right: RMS error against A with the closed form."""
+    import matplotlib.pyplot as plt
+
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10.0, 4.0))
+    truth = data.series[-1].columns
+    ax1.plot(truth["time"][1], np.degrees(truth["accel_angle"][1]), color="0.75", lw=0.6,
+             label="accelerometer angle")
+    ax1.plot(truth["time"][1], np.degrees(truth["angle"][1]), "k", lw=1.2, label="true angle")
+    for s, color in zip(data.series[1:3], ("C0", "C3")):
+        ax1.plot(s.columns["time"][1], np.degrees(s.columns["estimate"][1]), color=color, lw=1,
+                 label=f"eq. (39), {s.label}")
+    ax1.set_xlabel("time [s]")
+    ax1.set_ylabel("roll angle [°]")
+    ax1.legend(fontsize=7, loc="upper right")
+    c = data.series[0].columns
+    alpha = c["alpha"][1]
+    ax2.semilogy(alpha, np.degrees(c["rms_error"][1]), "k", lw=1.5, label="simulated RMS error")
+    ax2.semilogy(alpha, np.degrees(c["closed_form_rms"][1]), "C1--", lw=1.2, label="closed form")
+    ax2.semilogy(alpha, np.degrees(c["bias_term"][1]), "C3:", label="gyro bias × τ")
+    ax2.semilogy(alpha, np.degrees(c["accel_noise_term"][1]), "C0:", label="accelerometer noise")
+    ax2.semilogy(alpha, np.degrees(c["gyro_noise_term"][1]), "C2:", label="gyro noise")
+    lo, hi = data.extra["alpha_range"]
+    ax2.axvspan(lo, hi, color="0.9", label="thesis's range")
+    ax2.set_xlabel("filter coefficient A [-]")
+    ax2.set_ylabel("error [°]")
+    ax2.legend(fontsize=7, loc="lower left")
+    top = ax2.secondary_xaxis("top", functions=(
+        lambda a: a * data.parameters["sample_interval"] / np.clip(1 - a, 1e-9, None),
+        lambda tau: tau / (tau + data.parameters["sample_interval"])))
+    top.set_xlabel("time constant τ = AΔt/(1−A) [s]")
+    top.set_xticks([0.05, 0.1, 0.2, 0.5, 1])
+    fig.tight_layout()
+    return fig
+
+
+def _alpha_parameters():
+    p = _defaults()
+    return {
+        "sample_interval": FigureParameter(p["filter_sample_interval"], "s", "filter loop period (assumed)"),
+        "gyro_bias": FigureParameter(p["gyro_residual_bias"], "rad/s", "residual gyro bias (assumed)"),
+        "alpha_low": FigureParameter(p["filter_coefficient_low"], "1", "thesis's lower A"),
+        "alpha_high": FigureParameter(p["filter_coefficient_high"], "1", "thesis's upper A"),
+        "duration": FigureParameter(120.0, "s", "simulated time"),
+        "amplitude": FigureParameter(np.radians(20.0), "rad", "roll amplitude of the motion"),
+        "frequency": FigureParameter(0.2, "Hz", "roll frequency"),
+        "vibration_amplitude": FigureParameter(0.5, "m/s^2", "7 Hz vibration on the accelerometer"),
+        "seed": FigureParameter(4.0, "1", "random seed of the sensor noise"),
+    }
+
+
+register(FigureSpec("ch04-filter-alpha", "Eq. (39): error and time constant against the coefficient A",
+                    SOURCE, compute_filter_alpha, plot_filter_alpha, _alpha_parameters()))
+
+
+# --- heading: gravity cannot see it, the magnetometer can -----------------------------------
+
+def heading_readings(sample_interval, gyro_bias, field, duration, seed):
+    """The mock-up turning about the vertical, read by simulated MPU-6050 and HMC5883L.
+
+    The motion is a decaying swing ψ(t) = (π/2) e^{−t/100 s} cos(2πt/30 s) (the thesis's
+    ψ0 = π/2), the field is horizontal with magnitude ``field`` plus no vertical part.
+    Returns t, ψ, gyro z [rad/s], accelerometer readings (N, 3) [m/s²], magnetometer (N, 3) [T].
+    """
+    rng = np.random.default_rng(int(seed))
+    n = int(round(duration / sample_interval))
+    t = np.arange(n) * sample_interval
+    psi = 0.5 * np.pi * np.exp(-t / 100.0) * np.cos(2 * np.pi * t / 30.0)
+    rate = np.diff(psi, prepend=psi[0]) / sample_interval
+    gyro = sensors.gyro_readings(rate, sample_interval, rng=rng, bias=gyro_bias)
+    # Turning about the vertical leaves the specific force (0, 0, g) unchanged: gravity is
+    # parallel to the rotation axis.
+    force = np.tile([0.0, 0.0, GRAVITY], (n, 1))
+    accel = sensors.accelerometer_readings(force, sample_interval, rng=rng)
+    b_true = field * np.stack([np.cos(psi), -np.sin(psi), np.zeros(n)], axis=1)
+    mag = sensors.magnetometer_readings(b_true, sample_interval, rng=rng)
+    return t, psi, gyro, accel, mag
+
+
+def compute_heading_fusion(sample_interval, gyro_bias, field_h, alpha, duration, seed):
+    """Heading by gyro alone, eq. (39) with an accelerometer 'angle', and eq. (39) with the magnetometer."""
+    field = MU_0 * field_h
+    t, psi, gyro, accel, mag = heading_readings(sample_interval, gyro_bias, field, duration, seed)
+    gyro_only = estimation.complementary_filter(gyro, psi[0] * np.ones_like(psi), sample_interval, 1.0,
+                                                initial_angle=psi[0])
+    # What the thesis's recipe gives about the vertical: an accelerometer "angle" in the
+    # horizontal plane, atan2(a_y, a_x), which is the direction of noise only.
+    accel_angle = np.arctan2(accel[:, 1], accel[:, 0])
+    # (Not unwrapped: unwrapping a noise direction makes it a random walk of many turns.)
+    with_accel = estimation.complementary_filter(gyro, accel_angle, sample_interval, alpha)
+    mag_heading = np.unwrap(estimation.magnetometer_heading(mag))
+    with_mag = estimation.complementary_filter(gyro, mag_heading, sample_interval, alpha)
+    # The accelerometer's true input is identical for every heading: spread of the specific
+    # force R_z(ψ)ᵀ(0, 0, g) over the whole motion, exactly zero.
+    from scipy.spatial.transform import Rotation
+    force = Rotation.from_rotvec(np.outer(psi, [0.0, 0.0, 1.0])).inv().apply([0.0, 0.0, GRAVITY])
+    series = [Series("heading", {
+        "time": ("s", t), "true": ("rad", psi), "gyro_only": ("rad", gyro_only),
+        "accel_reference": ("rad", with_accel), "magnetometer_reference": ("rad", with_mag),
+        "magnetometer_heading": ("rad", mag_heading)})]
+    return FigureData("ch04-heading-fusion", "", "", {}, series,
+                      extra={"accel_spread": float(np.ptp(force, axis=0).max())})
+
+
+def plot_heading_fusion(data):
+    """Top: headings; bottom: their errors."""
+    import matplotlib.pyplot as plt
+
+    c = data.series[0].columns
+    t = c["time"][1]
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(9.0, 5.6), sharex=True)
+    ax1.plot(t, np.degrees(c["magnetometer_heading"][1]), color="0.8", lw=0.5, label="magnetometer heading")
+    ax1.plot(t, np.degrees(c["true"][1]), "k", lw=1.2, label="true ψ")
+    labels = {"gyro_only": ("gyro integral (A = 1)", "C3"),
+              "accel_reference": ("eq. (39) with an accelerometer angle", "C1"),
+              "magnetometer_reference": ("eq. (39) with the magnetometer heading", "C0")}
+    for key, (label, color) in labels.items():
+        ax1.plot(t, np.degrees(c[key][1]), color=color, lw=1, label=label)
+        ax2.plot(t, np.degrees(c[key][1] - c["true"][1]), color=color, lw=1, label=label)
+    ax1.set_ylabel("heading ψ [°]")
+    ax1.legend(fontsize=7, loc="upper right")
+    ax2.set_xlabel("time [s]")
+    ax2.set_ylabel("error [°]")
+    ax2.set_yscale("symlog", linthresh=1.0)
+    fig.tight_layout()
+    return fig
+
+
+def _heading_parameters():
+    p = _defaults()
+    return {
+        "sample_interval": FigureParameter(p["filter_sample_interval"], "s", "filter loop period (assumed)"),
+        "gyro_bias": FigureParameter(p["gyro_residual_bias"], "rad/s", "residual gyro bias (assumed)"),
+        "field_h": FigureParameter(p["sim_design_h"], "A/m", "simulator's field (design value)"),
+        "alpha": FigureParameter(p["filter_coefficient_high"], "1", "eq. (39) coefficient A"),
+        "duration": FigureParameter(300.0, "s", "simulated time"),
+        "seed": FigureParameter(5.0, "1", "random seed of the sensor noise"),
+    }
+
+
+register(FigureSpec("ch04-heading-fusion", "Heading about the vertical: gyro, accelerometer, magnetometer",
+                    SOURCE, compute_heading_fusion, plot_heading_fusion, _heading_parameters()))
+
+
+# --- BROAD: the 3-D tilt filter on real recordings ------------------------------------------
+
+BROAD_SOURCE = "Laidig et al. (2021), BROAD dataset (CC BY 4.0); not in the thesis"
+
+
+@lru_cache(maxsize=8)
+def _trial(name):
+    return broad.load_trial(name)
+
+
+def _missing(figure_id):
+    return FigureData(figure_id, "", "", {}, [Series("no BROAD trials found", {"trials": ("1", [0.0])})],
+                      extra={"missing": broad.MISSING_MESSAGE})
+
+
+def _plot_missing(data):
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(8.0, 2.0))
+    ax.axis("off")
+    ax.text(0.5, 0.5, data.extra["missing"], ha="center", va="center", wrap=True, fontsize=9)
+    return fig
+
+
+def compute_broad_tilt(tau, order):
+    """Inclination error over time for one trial, and the RMSE of each method on every trial."""
+    names = broad.available_trials()
+    if not names:
+        return _missing("ch04-broad-tilt")
+    trial = _trial(names[0])
+    methods = {
+        "accelerometer only": estimation.accelerometer_tilt(trial.accel),
+        "complementary_tilt": estimation.complementary_tilt(trial.gyro, trial.accel, trial.dt,
+                                                            tau=tau, order=int(order)),
+    }
+    methods["gyro only"] = estimation.strapdown_orientation(trial.gyro, trial.dt,
+                                                            methods["accelerometer only"][0])
+    t = np.arange(len(trial.gyro)) * trial.dt
+    step = max(1, int(round(0.05 / trial.dt)))      # plot at 20 Hz
+    errors = {label: broad.inclination_error(q, trial.reference)[::step] for label, q in methods.items()}
+    # Samples where the optical reference is missing (NaN) have no error; leave them out.
+    known = np.all(np.isfinite(trial.reference[::step]), axis=1)
+    columns = {"time": ("s", t[::step][known]),
+               "movement": ("1", trial.movement[::step][known].astype(float))}
+    for label, err in errors.items():
+        columns[label] = ("rad", err[known])
+    series = [Series(trial.name, columns)]
+    table = {}
+    for name in names:
+        table[name] = broad.evaluate_trial(_trial(name), tau=tau, order=int(order))
+    series.append(Series("rmse", {
+        "complementary": ("rad", [table[n]["complementary"] for n in names]),
+        "accelerometer": ("rad", [table[n]["accelerometer"] for n in names]),
+        "gyro": ("rad", [table[n]["gyro"] for n in names])}))
+    return FigureData("ch04-broad-tilt", "", "", {}, series, extra={"trials": names, "table": table})
+
+
+def plot_broad_tilt(data):
+    """Left: inclination error against time on one trial; right: RMSE of each method per trial."""
+    import matplotlib.pyplot as plt
+
+    if "missing" in data.extra:
+        return _plot_missing(data)
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10.5, 4.0), gridspec_kw={"width_ratios": [1.6, 1]})
+    c = data.series[0].columns
+    t = c["time"][1]
+    colors = {"accelerometer only": "C1", "gyro only": "C3", "complementary_tilt": "C0"}
+    for label, color in colors.items():
+        ax1.plot(t, np.degrees(c[label][1]), color=color, lw=0.8, label=label)
+    moving = c["movement"][1] > 0.5
+    ax1.fill_between(t, 0, 1, where=moving, color="0.92", transform=ax1.get_xaxis_transform(),
+                     label="movement phase (scored)")
+    ax1.set_yscale("log")
+    ax1.set_ylim(1e-2, 180)
+    ax1.set_xlabel("time [s]")
+    ax1.set_ylabel("inclination error [°]")
+    ax1.set_title(data.series[0].label, fontsize=9)
+    ax1.legend(fontsize=7, loc="lower right")
+    r = data.series[1].columns
+    names = data.extra["trials"]
+    x = np.arange(len(names))
+    for k, (key, label) in enumerate((("accelerometer", "accelerometer only"), ("gyro", "gyro only"),
+                                      ("complementary", "complementary_tilt"))):
+        ax2.bar(x + (k - 1) * 0.27, np.degrees(r[key][1]), 0.27, color=colors[label], label=label)
+    ax2.set_yscale("log")
+    ax2.set_xticks(x, [n[:2] for n in names])
+    ax2.set_xlabel("BROAD trial")
+    ax2.set_ylabel("inclination RMSE, movement phases [°]")
+    ax2.legend(fontsize=7)
+    fig.tight_layout()
+    return fig
+
+
+def compute_tau_sensitivity(tau_min, tau_max, default_tau):
+    """Inclination RMSE of complementary_tilt against tau, first and second order, every trial."""
+    names = broad.available_trials()
+    if not names:
+        return _missing("ch04-tau-sensitivity")
+    taus = np.geomspace(tau_min, tau_max, 11)
+    series = []
+    for name in names:
+        trial = _trial(name)
+        columns = {"tau": ("s", taus)}
+        for order in (1, 2):
+            rmse = []
+            for tau in taus:
+                q = estimation.complementary_tilt(trial.gyro, trial.accel, trial.dt, tau=tau, order=order)
+                rmse.append(broad.inclination_rmse(q, trial.reference, trial.movement))
+            columns[f"order_{order}"] = ("rad", np.array(rmse))
+        series.append(Series(name, columns))
+    return FigureData("ch04-tau-sensitivity", "", "", {}, series, extra={"default_tau": default_tau})
+
+
+def plot_tau_sensitivity(data):
+    """RMSE against tau on log axes, one colour per trial, solid second order, dashed first."""
+    import matplotlib.pyplot as plt
+
+    if "missing" in data.extra:
+        return _plot_missing(data)
+    fig, ax = plt.subplots(figsize=(7.0, 4.0))
+    for k, s in enumerate(data.series):
+        c = s.columns
+        ax.loglog(c["tau"][1], np.degrees(c["order_2"][1]), "o-", color=f"C{k}", ms=3, label=f"{s.label} (order 2)")
+        ax.loglog(c["tau"][1], np.degrees(c["order_1"][1]), "--", color=f"C{k}", lw=1, label=f"{s.label} (order 1)")
+    ax.axvline(data.extra["default_tau"], color="0.5", lw=1, ls=":", label="default τ")
+    ax.set_xlabel("accelerometer time constant τ [s]")
+    ax.set_ylabel("inclination RMSE [°]")
+    ax.legend(fontsize=6)
+    fig.tight_layout()
+    return fig
+
+
+register(FigureSpec("ch04-broad-tilt", "complementary_tilt on BROAD: inclination error and RMSE",
+                    BROAD_SOURCE, compute_broad_tilt, plot_broad_tilt,
+                    {"tau": FigureParameter(3.0, "s", "accelerometer time constant (default)"),
+                     "order": FigureParameter(2.0, "1", "low-pass order (1 or 2)")}))
+register(FigureSpec("ch04-tau-sensitivity", "Sensitivity of the BROAD RMSE to the time constant",
+                    BROAD_SOURCE, compute_tau_sensitivity, plot_tau_sensitivity,
+                    {"tau_min": FigureParameter(0.3, "s", "smallest τ"),
+                     "tau_max": FigureParameter(30.0, "s", "largest τ"),
+                     "default_tau": FigureParameter(3.0, "s", "the filter's default τ")}))
