@@ -173,3 +173,11 @@ def test_bad_monte_carlo_input_is_rejected():
         bench.monte_carlo(SETUP, 1.0, **{**kw, "thread_stiffness_factor": 0.5})
     with pytest.raises(ValueError, match="setup"):
         bench.simulate_bench("not a setup", 1.0, duration=1.0, window=0.5)
+
+
+def test_bench_inputs_are_chapter_4_inputs():
+    """The bench figures' parameters are declared chapter inputs, so overrides reach them."""
+    from magbench.figures.bench import BENCH_INPUTS
+    from magbench.params import CHAPTER_INPUTS
+
+    assert set(BENCH_INPUTS) <= set(CHAPTER_INPUTS["ch04"])

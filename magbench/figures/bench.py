@@ -12,14 +12,22 @@ import numpy as np
 
 from .. import bench, benchlog
 from ..data import load_parameter_set, measurement
-from ..params import CHAPTER_INPUTS, chapter_parameters
+from ..params import chapter_parameters
 from . import FigureData, FigureParameter, FigureSpec, Series, register
 
 SOURCE = "Bui (2016), thesis §4.4 (Figs. 19–20, seed lines 612–623); model: magbench.bench"
 DEG = np.pi / 180.0
 
 #: Chapter-4 inputs the bench figures take as parameters (all of the bench's).
-BENCH_INPUTS = [n for n in CHAPTER_INPUTS["ch04"] if n != "sim_design_h"]
+#: The bench's inputs (a subset of chapter 4's: the chapter's other sections have their own).
+BENCH_INPUTS = [
+    "mockup_inertia", "mtq_voltage", "mtq_turns", "mtq_side", "bench_field_h",
+    "bench_background_h", "bench_background_azimuth", "bench_coil_resistance",
+    "bench_moment_tolerance", "bench_pwm_levels", "bench_sample_interval", "bench_duration",
+    "bench_error_window", "bench_filter_coefficient", "bench_bandwidth", "bench_thread_stiffness",
+    "bench_thread_stiffness_factor", "bench_release_angle_spread", "bench_release_rate_std",
+    "bench_gyro_bias", "bench_members", "bench_seed",
+]
 
 _SI_UNITS = {"deg": "rad", "%": "1", "kg m^2": "kg m^2"}
 
