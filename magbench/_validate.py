@@ -55,6 +55,14 @@ def as_in_range(name, value, low, high, *, unit=""):
     return arr
 
 
+def as_positive_scalar(name, value, *, unit=""):
+    """Return ``value`` as a float, raising unless it is a single finite number > 0."""
+    arr = as_positive(name, value, unit=unit)
+    if arr.ndim != 0:
+        raise ValueError(f"{name} must be a scalar{(' [' + unit + ']') if unit else ''}, got shape {arr.shape}")
+    return float(arr)
+
+
 def as_vectors(name, value):
     """Return ``value`` as a finite float array whose trailing axis has length 3."""
     arr = as_finite(name, value)

@@ -9,7 +9,8 @@ import numpy as np
 from scipy.signal import butter, lfilter, lfilter_zi
 from scipy.spatial.transform import Rotation
 
-from ._validate import as_finite, as_in_range, as_nonnegative, as_positive, as_vectors
+from ._validate import (as_finite, as_in_range, as_nonnegative, as_positive, as_positive_scalar,
+                        as_vectors)
 
 __all__ = [
     "complementary_filter", "complementary_filter_step", "complementary_time_constant",
@@ -172,13 +173,6 @@ def _check_series3(name, value):
     return arr
 
 
-def _check_scalar_dt(dt):
-    step = as_positive("dt", dt, unit="s")
-    if step.ndim != 0:
-        raise ValueError(f"dt must be a scalar sample interval [s], got shape {step.shape}")
-    return float(step)
-
-
 def accelerometer_tilt(accel):
     r"""Tilt from the accelerometer alone: the shortest rotation that turns the measured
     specific force to the Earth's up axis.
@@ -255,7 +249,7 @@ def strapdown_orientation(gyro, dt, initial_orientation=None):
     [0.707106781187, 0.0, 0.0, 0.707106781187]
     """
     rate = _check_series3("gyro", gyro)
-    step = _check_scalar_dt(dt)
+    step = as_positive_scalar("dt", dt, unit="s")
     prefix = _quaternions(Rotation.from_rotvec(rate * step))
     shift = 1
     while shift < len(prefix):
@@ -350,7 +344,7 @@ def rest_gyro_bias(gyro, accel, dt, *, rate_threshold=np.radians(2.0), accel_thr
     acc = _check_series3("accel", accel)
     if rate.shape != acc.shape:
         raise ValueError(f"gyro and accel must have the same shape (N, 3), got {rate.shape} and {acc.shape}")
-    step = _check_scalar_dt(dt)
+    step = as_positive_scalar("dt", dt, unit="s")
     rate_th = float(as_positive("rate_threshold", rate_threshold, unit="rad/s"))
     acc_th = float(as_positive("accel_threshold", accel_threshold, unit="m/s²"))
     min_time = float(as_nonnegative("min_rest_time", min_rest_time, unit="s"))
@@ -428,7 +422,7 @@ def complementary_tilt(gyro, accel, dt, *, tau=3.0, order=2, rest_bias=True):
     acc = _check_series3("accel", accel)
     if rate.shape != acc.shape:
         raise ValueError(f"gyro and accel must have the same shape (N, 3), got {rate.shape} and {acc.shape}")
-    step = _check_scalar_dt(dt)
+    step = as_positive_scalar("dt", dt, unit="s")
     time_constant = float(as_positive("tau", tau, unit="s"))
     if order not in (1, 2):
         raise ValueError(f"order must be 1 or 2, got {order!r}")

@@ -32,7 +32,7 @@ Datasheets
 import numpy as np
 from scipy.constants import g as STANDARD_GRAVITY
 
-from ._validate import as_finite, as_nonnegative, as_positive
+from ._validate import as_finite, as_nonnegative, as_positive, as_positive_scalar
 
 __all__ = [
     "MPU6050_GYRO_NOISE_DENSITY",
@@ -99,13 +99,6 @@ def _check_series(name, value):
     return arr
 
 
-def _check_dt(dt):
-    step = as_positive("dt", dt, unit="s")
-    if step.ndim != 0:
-        raise ValueError(f"dt must be a scalar sample interval [s], got shape {step.shape}")
-    return float(step)
-
-
 def _channel(name, value, sample_shape, *, nonnegative=False):
     arr = as_nonnegative(name, value) if nonnegative else as_finite(name, value)
     try:
@@ -145,7 +138,7 @@ def noise_std_from_density(density, dt, bandwidth=None):
     0.05
     """
     rho = as_nonnegative("density", density)
-    step = _check_dt(dt)
+    step = as_positive_scalar("dt", dt, unit="s")
     nyquist = 0.5 / step
     if bandwidth is None:
         band = nyquist
@@ -201,7 +194,7 @@ def gyro_readings(true_rate, dt, *, rng, noise_density=MPU6050_GYRO_NOISE_DENSIT
     """
     rng = _check_rng(rng)
     rate = _check_series("true_rate", true_rate)
-    step = _check_dt(dt)
+    step = as_positive_scalar("dt", dt, unit="s")
     sample = rate.shape[1:]
     sigma = _channel("noise_density", noise_std_from_density(noise_density, step, bandwidth), sample)
     offset = _channel("bias", bias, sample)
@@ -260,7 +253,7 @@ def accelerometer_readings(true_specific_force, dt, *, rng,
     """
     rng = _check_rng(rng)
     force = _check_series("true_specific_force", true_specific_force)
-    step = _check_dt(dt)
+    step = as_positive_scalar("dt", dt, unit="s")
     sample = force.shape[1:]
     sigma = _channel("noise_density", noise_std_from_density(noise_density, step, bandwidth), sample)
     offset = _channel("bias", bias, sample)
@@ -312,7 +305,7 @@ def magnetometer_readings(true_field, dt, *, rng, noise_std=HMC5883L_NOISE_FLOOR
     """
     rng = _check_rng(rng)
     field = _check_series("true_field", true_field)
-    _check_dt(dt)
+    as_positive_scalar("dt", dt, unit="s")
     sample = field.shape[1:]
     sigma = _channel("noise_std", noise_std, sample, nonnegative=True)
     bias = _channel("offset", offset, sample)
