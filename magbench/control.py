@@ -646,7 +646,7 @@ def gain_reading_scale(reading, field, moment_limit):
     Parameters
     ----------
     reading : str
-        A key of :data:`GAIN_READINGS`.
+        A key of :data:`GAIN_READINGS` [-].
     field : float
         B0 [T], > 0 (the true field: used by the torque-output reading).
     moment_limit : float
