@@ -344,7 +344,8 @@ class ClosedLoopResult:
     torque: np.ndarray     #: torque about the vertical [N·m]
 
 
-def simulate_pid(loop, psi0, omega0, t_end, *, sample_interval=None, output_interval=0.1):
+def simulate_pid(loop, psi0, omega0, t_end, *, sample_interval=None, output_interval=0.1,
+                 method="RK45"):
     r"""Run the closed loop from an initial state, continuous or sampled.
 
     Parameters
@@ -362,6 +363,9 @@ def simulate_pid(loop, psi0, omega0, t_end, *, sample_interval=None, output_inte
         :func:`pid_continuous_rhs` with solve_ivp (RK45, rtol 1e-9).
     output_interval : float, optional
         Spacing of the returned samples [s], > 0 (rounded to whole controller samples).
+    method : str, optional
+        solve_ivp method for the continuous loop [-]; "LSODA" or "Radau" for stiff loops
+        (gains so large that the real pole lies far beyond the oscillation).
 
     Returns
     -------
@@ -388,7 +392,7 @@ def simulate_pid(loop, psi0, omega0, t_end, *, sample_interval=None, output_inte
     if sample_interval is None:
         t = np.linspace(0.0, t_end, int(round(t_end / out)) + 1)
         sol = solve_ivp(pid_continuous_rhs, (0.0, t_end), [psi0, omega0, 0.0], args=(loop,),
-                        t_eval=t, rtol=1e-9, atol=1e-12, max_step=min(out, 1.0))
+                        t_eval=t, rtol=1e-9, atol=1e-12, max_step=min(out, 1.0), method=method)
         if not sol.success:
             raise RuntimeError(f"solve_ivp failed: {sol.message}")
         psi, omega, integral = sol.y

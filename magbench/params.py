@@ -34,6 +34,12 @@ CHAPTER_INPUTS = {
         "laboratory_longitude", "thesis_epoch", "orbit_altitude", "orbit_inclination",
         "mockup_inertia", "mockup_initial_rate",
     ],
+    "ch04": [
+        "mockup_inertia", "mockup_mass", "mockup_cm_offset", "mtq_moment", "sim_design_h",
+        "mockup_initial_angle", "mockup_initial_angle_alt", "oscillation_period",
+        "oscillation_amplitude", "pid_kp", "pid_ki", "pid_kd", "pid_bandwidth",
+        "pid_sample_interval",
+    ],
 }
 
 
