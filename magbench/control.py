@@ -228,7 +228,10 @@ class PidLoop:
     ``kp`` [A·m²/rad], ``ki`` [A·m²/(rad·s)], ``kd`` [A·m²·s/rad], ``target`` ψ_des
     [rad], ``moment_limit`` the largest dipole demand |m_z| [A·m²] (the coils' maximum;
     |M_x|, |M_y| ≤ |m_z| then holds for either coil), ``allocation`` "exact" or
-    "small-angle" (the thesis's matrix), ``anti_windup`` conditional integration.
+    "small-angle" (the thesis's matrix), ``anti_windup``: conditional integration in the
+    sampled loop (:func:`pid_step`), back-calculation with ``tracking_time`` T_t [s]
+    (default √(K_d/K_i), Åström and Hägglund's rule of thumb √(T_i T_d)) in the continuous
+    one, where conditional integration would chatter along the saturation boundary.
     Checked once here.
     """
 
@@ -241,6 +244,14 @@ class PidLoop:
     moment_limit: float = np.inf
     allocation: str = "exact"
     anti_windup: bool = True
+    tracking_time: float | None = None
+
+    @property
+    def tracking(self):
+        """Back-calculation time T_t [s] of the continuous anti-windup."""
+        if self.tracking_time is not None:
+            return float(self.tracking_time)
+        return float(np.sqrt(self.kd / self.ki)) if self.kd > 0 and self.ki > 0 else 1.0
 
     def __post_init__(self):
         as_positive("inertia", self.inertia, unit="kg·m²")
@@ -249,6 +260,8 @@ class PidLoop:
             as_finite(name, getattr(self, name))
         if not float(self.moment_limit) > 0:
             raise ValueError(f"moment_limit must be > 0 A·m² (inf for none), got {self.moment_limit!r}")
+        if self.tracking_time is not None:
+            as_positive("tracking_time", self.tracking_time, unit="s")
         if self.allocation not in ALLOCATIONS:
             raise ValueError(f"allocation must be one of {ALLOCATIONS}, got {self.allocation!r}")
 
@@ -308,14 +321,17 @@ def pid_continuous_rhs(t, state, loop):
     Returns
     -------
     ndarray, shape (3, ...)
-        (ω, τ/J, ė_I) [rad/s, rad/s², rad]: the integral stops while the command is
-        saturated and the error drives it further into saturation (anti-windup).
+        (ω, τ/J, d∫e/dt) [rad/s, rad/s², rad]. With anti-windup the integral is
+        back-calculated, :math:`\dot I = e + (u - u_{raw})/(K_i T_t)`, which bleeds it
+        off while the command is saturated and is smooth, so solve_ivp does not chatter.
 
     Notes
     -----
     Thesis eqs. (36)–(38), seed lines 508–541: u = sat(K_p e + K_i ∫e + K_d ė),
     e = ψ_des − ψ, ė = −ω (the gyro rate: derivative on the measurement, no kick).
     Use as ``solve_ivp(pid_continuous_rhs, span, (psi0, omega0, 0.0), args=(loop,))``.
+    The anti-windup scheme is ours (Åström and Hägglund, back-calculation); the thesis
+    states none (inventory gap G16).
 
     Examples
     --------
@@ -327,9 +343,10 @@ def pid_continuous_rhs(t, state, loop):
     error = loop.target - psi
     raw = loop.kp * error + loop.ki * integral - loop.kd * omega
     command = np.clip(raw, -loop.moment_limit, loop.moment_limit)
-    winding = (command != raw) & (np.sign(loop.ki * error) == np.sign(raw)) & loop.anti_windup
-    return np.array([omega, loop_torque(psi, command, loop) / loop.inertia,
-                     np.where(winding, 0.0, error)])
+    rate = error
+    if loop.anti_windup and loop.ki != 0:
+        rate = error + (command - raw) / (loop.ki * loop.tracking)
+    return np.array([omega, loop_torque(psi, command, loop) / loop.inertia, rate])
 
 
 @dataclass(frozen=True)

@@ -255,12 +255,25 @@ def test_sampled_pid_converges_to_the_continuous_loop():
     assert errors[-1] < 1e-2
 
 
-def test_anti_windup_freezes_the_integral_in_saturation():
-    loop = control.PidLoop(J, B0, 1.0, 1.0, 0.0, moment_limit=0.4)
-    assert control.pid_continuous_rhs(0.0, [-1.0, 0.0, 0.0], loop)[2] == 0.0     # saturated, error > 0
-    assert control.pid_continuous_rhs(0.0, [-0.1, 0.0, 0.0], loop)[2] == pytest.approx(0.1)
+def test_back_calculation_bleeds_the_integral_in_saturation():
+    loop = control.PidLoop(J, B0, 1.0, 1.0, 1.0, moment_limit=0.4)
+    assert loop.tracking == 1.0                                      # √(Kd/Ki)
+    # Saturated (raw 1.0 > 0.4): İ = e + (u − raw)/(Ki Tt) = 1 − 0.6.
+    assert control.pid_continuous_rhs(0.0, [-1.0, 0.0, 0.0], loop)[2] == pytest.approx(0.4)
+    assert control.pid_continuous_rhs(0.0, [-0.1, 0.0, 0.0], loop)[2] == pytest.approx(0.1)   # linear
     free = control.PidLoop(J, B0, 1.0, 1.0, 0.0, moment_limit=0.4, anti_windup=False)
     assert control.pid_continuous_rhs(0.0, [-1.0, 0.0, 0.0], free)[2] == 1.0
+
+
+def test_saturated_continuous_and_sampled_loops_agree():
+    # The two anti-windup schemes differ only while saturated; from a large error both
+    # settle on the target, and the sampled loop stays within the coil limit.
+    kp, ki, kd = control.pid_gains_for_triple_pole(J, B0, 0.1)      # Kp·2π/3 ≈ 1 A·m² > 0.4
+    loop = control.PidLoop(J, B0, kp, ki, kd, target=2 * np.pi / 3, moment_limit=0.4)
+    cont = control.simulate_pid(loop, 0.0, 0.0, 600.0, output_interval=1.0)
+    samp = control.simulate_pid(loop, 0.0, 0.0, 600.0, sample_interval=0.05, output_interval=1.0)
+    assert np.max(np.abs(cont.command)) == pytest.approx(0.4)          # it does saturate
+    assert_allclose([cont.psi[-1], samp.psi[-1]], 2 * np.pi / 3, atol=2e-3)
 
 
 def test_saturated_run_respects_the_coil_limit():

@@ -82,7 +82,7 @@ class FigureSpec:
 
 #: Figure id -> FigureSpec, filled by the modules in :data:`_MODULES` on first use.
 REGISTRY = {}
-_MODULES = ["magbench.figures.thesis_ch1"]
+_MODULES = ["magbench.figures.thesis_ch1", "magbench.figures.thesis_ch4"]
 _loaded = False
 
 
