@@ -22,7 +22,8 @@ from . import geomag, igrf
 from .constants import EARTH_RADIUS
 from .params import chapter_parameters
 
-__all__ = ["CompareRow", "PROVIDERS", "make_row", "all_rows", "geomagnetic_rows", "today_decimal_year"]
+__all__ = ["CompareRow", "PROVIDERS", "CH04_PROVIDERS", "make_row", "all_rows", "geomagnetic_rows",
+           "chapter4_rows", "today_decimal_year"]
 
 
 @dataclass(frozen=True)
@@ -152,8 +153,21 @@ def geomagnetic_rows(params=None, *, epochs=None):
     return rows
 
 
+#: Chapter 4 has three pages (dynamics, estimation, bench); each appends its own
+#: ``(params) -> list[CompareRow]`` provider here and :func:`chapter4_rows` joins them.
+CH04_PROVIDERS = []
+
+
+def chapter4_rows(params=None):
+    """Chapter 4: the rows of every provider in :data:`CH04_PROVIDERS`, in order."""
+    rows = []
+    for provider in CH04_PROVIDERS:
+        rows.extend(provider(params))
+    return rows
+
+
 #: Row providers by chapter, in book order.
-PROVIDERS = {"ch01": geomagnetic_rows}
+PROVIDERS = {"ch01": geomagnetic_rows, "ch04": chapter4_rows}
 
 
 def all_rows():

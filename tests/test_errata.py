@@ -27,6 +27,8 @@ EXPECTED_ERRATA = {
     "thesis-mtq-winding-length": "N·√S_r = 0.037 m, printed ≈ 0.1 m",
     "thesis-mtq-wire-area": "eq. (21) gives 2.333e-8 m², printed 2.34e-8",
     "kovalenko-e02-torque-per-mass": "B_r B/(μ0 γ) = 0.743e-2, printed 0.75e-2",
+    "thesis-eq14-design-amplitude": "60 s at m = 0.4, H = 250 only up to ~134°; infinite period at π",
+    "thesis-pid-gains-stable-si": "all six printed gain sets are unstable in SI (Routh–Hurwitz)",
 }
 
 CHECKS = source_checks()
