@@ -19,7 +19,7 @@ from .params import chapter_parameters
 from .units import ampere_per_meter_to_oersted, tesla_to_oersted
 
 __all__ = ["SourceCheck", "CHECK_PROVIDERS", "source_checks", "errata", "geomagnetic_checks",
-           "kovalenko_field_checks", "simulator_field_checks"]
+           "kovalenko_field_checks", "simulator_field_checks", "dynamics_checks"]
 
 
 @dataclass(frozen=True)
@@ -500,9 +500,49 @@ def simulator_field_checks():
 
 
 #: Source-check providers by chapter, in book order.
+def dynamics_checks(params=None):
+    """Thesis §4 (equations of motion and the PID): the sizing amplitude and the gains."""
+    from . import control
+    from .constants import MU_0
+
+    p = params or chapter_parameters("ch04")
+    j, m = p["mockup_inertia"], p["mtq_moment"]
+    b0 = MU_0 * p["sim_design_h"]
+    amplitude = attitude.amplitude_for_period(p["oscillation_period"], j, m, b0)
+    sets = [(0.1, 0.5, 0.5), (0.2, 0.5, 0.5), (0.3, 0.5, 0.5), (0.1, 0.5, 1.0), (0.1, 0.5, 2.0),
+            (0.1, 0.5, 3.0)]
+    stable = sum(bool(np.all(control.closed_loop_poles(j, b0, *g).real < 0)) for g in sets)
+    return [
+        SourceCheck(
+            id="thesis-eq14-design-amplitude", chapter="ch04", source="thesis",
+            location="§2.1 and §3.2, seed lines 236–240, 396–398 (eqs. 14–15 with A = π)",
+            quantity="Amplitude at which the built design (m = 0.4 A·m², H = 250 A/m) swings with the design period 60 s",
+            printed=float(np.degrees(p["oscillation_amplitude"])), computed=float(np.degrees(amplitude)),
+            tolerance=0.5, unit="deg",
+            explanation=("The thesis sizes field and coils with the small-angle eq. (14) at an amplitude "
+                         "of π, where the exact period (an elliptic integral) is infinite: released upside "
+                         "down the pendulum never leaves. The design swings with a 60 s period only up to "
+                         "134°; at 180° no finite field gives 60 s."),
+            computation="magbench.attitude.amplitude_for_period"),
+        SourceCheck(
+            id="thesis-pid-gains-stable-si", chapter="ch04", source="thesis",
+            location="§4.1, seed lines 565–579 (Figs. 15–18)",
+            quantity="Printed PID gain sets that give a stable loop with the gains read in SI",
+            printed=float(len(sets)), computed=float(stable), tolerance=0.0, unit="1",
+            explanation=("Figs. 15–18 are presented as damped responses for six gain sets, but in SI "
+                         "(m in A·m², ψ in rad, B0 = μ0·250 A/m, J = 0.005 kg·m²) each violates the "
+                         "Routh–Hurwitz condition K_i < B0 K_p K_d / J by a factor 26–160: every loop is "
+                         "unstable. Only readings that multiply the gains by more than 160 (field in "
+                         "gauss or A/m, a torque-valued output) give damped curves."),
+            computation="magbench.control.closed_loop_poles"),
+    ]
+
+
+#: Source-check providers by chapter, in book order.
 CHECK_PROVIDERS = {"ch01": [geomagnetic_checks, kovalenko_field_checks],
                    "ch02": [simulator_checks, simulator_field_checks],
-                   "ch03": [magnetorquer_checks, magnetorquer_design_checks, kovalenko_actuator_checks]}
+                   "ch03": [magnetorquer_checks, magnetorquer_design_checks, kovalenko_actuator_checks],
+                   "ch04": [dynamics_checks]}
 
 
 def source_checks(chapter=None):

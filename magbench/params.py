@@ -49,6 +49,10 @@ CHAPTER_INPUTS = {
         "core_averaging_factor", "em_fill_factor", "em_current_density", "em_elongation",
     ],
     "ch04": [
+        # equations of motion and the PID (book/ch04-mockup.md)
+        "mockup_mass", "mockup_cm_offset", "mtq_moment", "mockup_initial_angle",
+        "mockup_initial_angle_alt", "oscillation_period", "oscillation_amplitude", "pid_kp",
+        "pid_ki", "pid_kd", "pid_bandwidth", "pid_sample_interval",
         # sensors and estimation (book/ch04-estimation.md)
         "filter_coefficient_low", "filter_coefficient_high", "filter_sample_interval",
         "gyro_residual_bias",

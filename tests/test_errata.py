@@ -35,6 +35,8 @@ EXPECTED_ERRATA = {
     "thesis-mtq-current-025": "m = ISN gives 0.167 A, printed 0.25 (line 524)",
     "kovalenko-table5-power-law": "4π·0.93·75.63^-1.7 = 0.00748, printed 0.00738",
     "kovalenko-table5-nu-p40": "Table 5's own columns give ν = -2.24 %, printed -0.22",
+    "thesis-eq14-design-amplitude": "60 s at m = 0.4, H = 250 only up to ~134°; infinite period at π",
+    "thesis-pid-gains-stable-si": "all six printed gain sets are unstable in SI (Routh–Hurwitz)",
 }
 
 CHECKS = source_checks()

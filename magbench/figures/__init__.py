@@ -83,7 +83,7 @@ class FigureSpec:
 #: Figure id -> FigureSpec, filled by the modules in :data:`_MODULES` on first use.
 REGISTRY = {}
 _MODULES = ["magbench.figures.thesis_ch1", "magbench.figures.thesis_ch2", "magbench.figures.thesis_ch3",
-            "magbench.figures.estimation", "magbench.figures.bench"]
+            "magbench.figures.thesis_ch4", "magbench.figures.estimation", "magbench.figures.bench"]
 _loaded = False
 
 

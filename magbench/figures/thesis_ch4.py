@@ -1,0 +1,740 @@
+"""Figures of thesis chapter 4: the mock-up on a thread, its PID loop and the linear analysis.
+
+python-control (``control``) is imported inside the functions that use it: the block
+diagram is drawn from its interconnection, and the root locus, margins and linear step
+responses come from it.
+"""
+
+import numpy as np
+
+from .. import attitude, control
+from ..constants import MU_0
+from ..params import chapter_parameters
+from . import FigureData, FigureParameter, FigureSpec, Series, register
+
+SOURCE = "Bui (2016), thesis §4"
+DEG = np.pi / 180.0
+#: The gain sets of thesis Figs. 15–18 (seed lines 565–579), as (kp, ki, kd).
+KP_SWEEP = ((0.1, 0.5, 0.5), (0.2, 0.5, 0.5), (0.3, 0.5, 0.5))
+KD_SWEEP = ((0.1, 0.5, 1.0), (0.1, 0.5, 2.0), (0.1, 0.5, 3.0))
+PRINTED_SETS = KP_SWEEP + KD_SWEEP
+STYLES = ("-", "--", ":")
+
+
+def _defaults():
+    return chapter_parameters("ch04", overrides="")
+
+
+def _plant_parameters():
+    p = _defaults()
+    return {
+        "inertia": FigureParameter(p["mockup_inertia"], "kg m^2", "moment of inertia J about the vertical"),
+        "field": FigureParameter(MU_0 * p["sim_design_h"], "T", "horizontal field B0 (μ0 · 250 A/m; never stated)"),
+        "moment": FigureParameter(p["mtq_moment"], "A m^2", "coil-1 moment m1 / the coils' maximum moment"),
+    }
+
+
+# --- thesis Figs. 10–11: frames and forces of the mock-up on a thread --------------------
+
+def compute_geometry(psi, theta, phi, cm_offset, mass, field, moment):
+    """Frames, points and forces of the mock-up at one attitude (thesis Figs. 10–11)."""
+    from scipy.constants import g
+
+    r = attitude.euler_313_matrix(psi, theta, phi)
+    a = np.zeros(3)
+    c = attitude.thread_centre_of_mass(0.0, 0.0, psi, theta, cm_offset)
+    b0 = np.array([field, 0.0, 0.0])
+    m_vec = moment * r[:, 0]                       # coil 1 along x'
+    torque = np.cross(m_vec, b0)
+    weight = np.array([0.0, 0.0, -mass * g])
+    cols = {
+        "A": ("m", a), "C": ("m", c),
+        "x_body": ("1", r[:, 0]), "y_body": ("1", r[:, 1]), "z_body": ("1", r[:, 2]),
+        "gravity_F_t": ("N", weight), "reaction_N": ("N", -weight),
+        "field_B0": ("T", b0), "dipole_m": ("A m^2", m_vec), "magnetic_torque": ("N m", torque),
+        "gravity_torque_about_A": ("N m", np.cross(c - a, weight)),
+    }
+    return FigureData("", "", "", {}, [Series("mock-up", cols)],
+                      extra={"angles": (psi, theta, phi), "d": cm_offset})
+
+
+def _arrow(ax, start, vec, color, label, scale=1.0, **kw):
+    v = np.asarray(vec) * scale
+    ax.quiver(*start, *v, color=color, arrow_length_ratio=0.12, **kw)
+    ax.text(*(np.asarray(start) + 1.08 * v), label, color=color, fontsize=9)
+
+
+def _frame_axes(ax, lim):
+    ax.set_xlim(-lim, lim)
+    ax.set_ylim(-lim, lim)
+    ax.set_zlim(-1.6 * lim, 0.4 * lim)
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.set_zlabel("z [m]")
+
+
+def plot_fig10(data):
+    """Fixed axes Oxyz, body axes Ax'y'z' and the centre of mass C below A."""
+    import matplotlib.pyplot as plt
+
+    c = {k: v for k, (u, v) in data.series[0].columns.items()}
+    d = data.extra["d"]
+    fig = plt.figure(figsize=(6.4, 5.6))
+    ax = fig.add_subplot(projection="3d")
+    L = 1.2 * d
+    origin = np.array([-0.8 * L, -0.8 * L, 0.25 * L])
+    for k, name in enumerate("xyz"):
+        _arrow(ax, origin, np.eye(3)[k], "0.4", name, scale=0.5 * L)
+    ax.text(*origin, "O ", color="0.4", ha="right")
+    for key, name, col in (("x_body", "x'", "C0"), ("y_body", "y'", "C2"), ("z_body", "z'", "C3")):
+        _arrow(ax, c["A"], c[key], col, name, scale=0.8 * L)
+    ax.plot(*np.stack([c["A"], c["A"] + [0, 0, 0.35 * L]]).T, "k-", linewidth=2)     # the thread
+    ax.plot(*np.stack([c["A"], c["C"]]).T, "k--", linewidth=1)
+    ax.scatter(*c["A"], color="k")
+    ax.scatter(*c["C"], color="C1", s=40)
+    ax.text(*c["A"], "  A", fontsize=10)
+    ax.text(*c["C"], "  C (0, 0, −d)", fontsize=9, color="C1")
+    _frame_axes(ax, L)
+    psi, theta, phi = (np.degrees(v) for v in data.extra["angles"])
+    ax.set_title(f"Frames (thesis Fig. 10): ψ = {psi:.0f}°, θ = {theta:.0f}°, φ = {phi:.0f}°, d = {d:.2g} m",
+                 fontsize=10)
+    return fig
+
+
+def plot_fig11(data):
+    """Gravity at C, the thread's reaction at A, the field and the magnetic torque."""
+    import matplotlib.pyplot as plt
+
+    c = {k: v for k, (u, v) in data.series[0].columns.items()}
+    d = data.extra["d"]
+    L = 1.2 * d
+    fig = plt.figure(figsize=(6.4, 5.6))
+    ax = fig.add_subplot(projection="3d")
+    fscale = 0.8 * L / np.linalg.norm(c["gravity_F_t"])
+    ax.plot(*np.stack([c["A"], c["C"]]).T, "k--", linewidth=1)
+    ax.plot(*np.stack([c["A"], c["A"] + [0, 0, 0.35 * L]]).T, "k-", linewidth=2)
+    _arrow(ax, c["C"], c["gravity_F_t"], "C3", f"F_t = {np.linalg.norm(c['gravity_F_t']):.2f} N", fscale)
+    _arrow(ax, c["A"], c["reaction_N"], "C0", "N", fscale)
+    _arrow(ax, c["A"] + [-L, -0.6 * L, -0.2 * L], c["field_B0"] / np.linalg.norm(c["field_B0"]), "C2",
+           f"B0 = {np.linalg.norm(c['field_B0']) * 1e6:.0f} µT", L)
+    _arrow(ax, c["C"], c["dipole_m"] / np.linalg.norm(c["dipole_m"]), "C4", "m (coil 1)", 0.7 * L)
+    tq = c["magnetic_torque"]
+    _arrow(ax, c["C"], tq / np.linalg.norm(tq), "C1", f"m × B0 = {np.linalg.norm(tq) * 1e6:.0f} µN·m", 0.7 * L)
+    ax.scatter(*c["A"], color="k")
+    ax.scatter(*c["C"], color="k")
+    ax.text(*c["A"], "  A")
+    ax.text(*c["C"], "  C")
+    _frame_axes(ax, L)
+    ax.set_title("Forces and torque on the mock-up (thesis Fig. 11)\nN does no work: A stays in its plane",
+                 fontsize=10)
+    return fig
+
+
+def _geometry_parameters():
+    p = _defaults()
+    pp = _plant_parameters()
+    return {
+        "psi": FigureParameter(35 * DEG, "rad", "precession angle ψ (illustrative)"),
+        "theta": FigureParameter(20 * DEG, "rad", "nutation angle θ (illustrative)"),
+        "phi": FigureParameter(15 * DEG, "rad", "proper rotation φ (illustrative)"),
+        "cm_offset": FigureParameter(p["mockup_cm_offset"], "m", "d, centre of mass below the suspension point"),
+        "mass": FigureParameter(p["mockup_mass"], "kg", "mock-up mass M"),
+        "field": pp["field"], "moment": pp["moment"],
+    }
+
+
+# --- thesis Figs. 12–13: the free magnetic pendulum ---------------------------------------
+
+def compute_free_pendulum(inertia, field, moment, initial_angle, initial_angle_alt, duration):
+    """Eq. (35) from rest at both printed initial angles (solve_ivp, rtol 1e-10)."""
+    from scipy.integrate import solve_ivp
+
+    if not 1.0 <= duration <= 3600.0:
+        raise ValueError(f"duration must lie in [1, 3600] s, got {duration!r}")
+    plant = attitude.Mockup(inertia, field, moment)
+    t = np.linspace(0.0, duration, 3001)
+    series = []
+    for label, psi0 in (("ψ0 = π/2 (seed line 516)", initial_angle), ("ψ0 = π/4 (seed line 524)", initial_angle_alt)):
+        sol = solve_ivp(attitude.pendulum_rhs, (0.0, duration), [psi0, 0.0], args=(plant,), t_eval=t,
+                        rtol=1e-10, atol=1e-13)
+        energy = attitude.pendulum_energy(sol.y[0], sol.y[1], inertia, moment, field)
+        series.append(Series(label, {"t": ("s", t), "psi": ("rad", sol.y[0]), "omega": ("rad/s", sol.y[1]),
+                                     "energy_drift": ("1", (energy - energy[0]) / (moment * field))}))
+    return FigureData("", "", "", {}, series, extra={
+        "periods": [float(attitude.pendulum_period(a, inertia, moment, field)) for a in (initial_angle, initial_angle_alt)],
+        "small_angle_period": float(attitude.small_angle_period(inertia, moment, field))})
+
+
+def _plot_free(data, key, ylabel, title):
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7.0, 3.6))
+    for s, style, period in zip(data.series, ("-", "--"), data.extra["periods"]):
+        ax.plot(s.columns["t"][1], s.columns[key][1], style, label=f"{s.label}: T = {period:.1f} s")
+    ax.axhline(0, color="0.8", linewidth=0.6)
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel(ylabel)
+    ax.set_title(f"{title}; small-angle eq. (14): T0 = {data.extra['small_angle_period']:.1f} s", fontsize=10)
+    ax.legend(fontsize=8, loc="upper right")
+    fig.tight_layout()
+    return fig
+
+
+def plot_fig12(data):
+    """ω(t) of the free pendulum (thesis Fig. 12, captioned "Fig. 3" in the thesis)."""
+    return _plot_free(data, "omega", "ω [rad/s]", "Angular velocity (thesis Fig. 12)")
+
+
+def plot_fig13(data):
+    """ψ(t) of the free pendulum (thesis Fig. 13)."""
+    return _plot_free(data, "psi", "ψ [rad]", "Rotation angle (thesis Fig. 13)")
+
+
+def _free_parameters():
+    p = _defaults()
+    params = _plant_parameters()
+    params.update({
+        "initial_angle": FigureParameter(p["mockup_initial_angle"], "rad", "ψ0 of the parameter list"),
+        "initial_angle_alt": FigureParameter(p["mockup_initial_angle_alt"], "rad", "ψ0 of the discussion"),
+        "duration": FigureParameter(150.0, "s", "time span (not stated in the thesis)"),
+    })
+    return params
+
+
+# --- the exact period against eq. (14) ------------------------------------------------------
+
+def compute_period_ratio(inertia, moment, field, period, amplitude_checks):
+    """T/T0 against the amplitude, solve_ivp spot checks, and the field for a given period."""
+    from scipy.integrate import solve_ivp
+
+    n_checks = int(amplitude_checks)
+    if not 0 <= n_checks <= 20:
+        raise ValueError(f"amplitude_checks must lie in [0, 20], got {amplitude_checks!r}")
+    amp = np.linspace(0.0, 0.999 * np.pi, 500)
+    t0 = float(attitude.small_angle_period(inertia, moment, field))
+    ratio = attitude.pendulum_period(amp, inertia, moment, field) / t0
+    plant = attitude.Mockup(inertia, field, moment)
+    check_amp = np.linspace(0.2, 0.97 * np.pi, n_checks)
+    check_ratio = []
+    for a in check_amp:
+        def turn(t, y, p):
+            return y[1]
+        turn.direction = 1.0
+        sol = solve_ivp(attitude.pendulum_rhs, (0, 50 * t0), [a, 0.0], args=(plant,), events=turn,
+                        rtol=1e-11, atol=1e-13)
+        check_ratio.append(2 * sol.t_events[0][0] / t0)
+    h_exact = attitude.field_for_period(period, amp, inertia, moment) / MU_0
+    h_eq15 = 4 * np.pi**2 * inertia * np.maximum(amp, 1e-300) / (MU_0 * moment * period**2)
+    a60 = attitude.amplitude_for_period(period, inertia, moment, field) if period > t0 else 0.0
+    return FigureData("", "", "", {}, [
+        Series("exact / eq. (14)", {"amplitude": ("deg", np.degrees(amp)), "ratio": ("1", ratio)}),
+        Series("solve_ivp", {"amplitude": ("deg", np.degrees(check_amp)), "ratio": ("1", np.array(check_ratio))}),
+        Series("field for the period", {"amplitude": ("deg", np.degrees(amp)), "H_exact": ("A/m", h_exact),
+                                         "H_eq15_as_used": ("A/m", h_eq15)}),
+    ], extra={"t0": t0, "period": period, "h_design": field / MU_0, "a_design": a60})
+
+
+def plot_period_ratio(data):
+    """Left: T/T0 against amplitude. Right: the field that gives the period, exact and by eq. (15)."""
+    import matplotlib.pyplot as plt
+
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10.0, 3.9))
+    c, chk, h = ({k: v for k, (u, v) in s.columns.items()} for s in data.series)
+    a1.semilogy(c["amplitude"], c["ratio"], label="exact, 4K(sin²(A/2))/ω0")
+    a1.semilogy(chk["amplitude"], chk["ratio"], "o", mfc="none", label="solve_ivp")
+    a1.axhline(1.0, color="0.5", linestyle=":", label="eq. (14)")
+    a1.set_xlabel("amplitude A [deg]")
+    a1.set_ylabel("T / T0")
+    a1.set_xlim(0, 180)
+    a1.legend(fontsize=8)
+    a1.set_title("Period against amplitude (diverges at A = 180°)", fontsize=10)
+    a2.semilogy(h["amplitude"], h["H_exact"], label=f"exact: T = {data.extra['period']:.0f} s")
+    a2.semilogy(h["amplitude"], h["H_eq15_as_used"], "--", label="eq. (15) with A (thesis)")
+    a2.axhline(data.extra["h_design"], color="C3", linewidth=0.8, label=f"built design {data.extra['h_design']:.0f} A/m")
+    if data.extra["a_design"] > 0:
+        a2.axvline(np.degrees(data.extra["a_design"]), color="C3", linestyle=":", linewidth=0.8)
+    a2.set_xlabel("amplitude A [deg]")
+    a2.set_ylabel("field strength H [A/m]")
+    a2.set_xlim(0, 180)
+    a2.set_ylim(1, 1e5)
+    a2.legend(fontsize=8, loc="upper left")
+    a2.set_title("Field needed for the design period", fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def _period_parameters():
+    p = _defaults()
+    pp = _plant_parameters()
+    return {"inertia": pp["inertia"], "moment": pp["moment"], "field": pp["field"],
+            "period": FigureParameter(p["oscillation_period"], "s", "design period (seed line 240)"),
+            "amplitude_checks": FigureParameter(8.0, "1", "number of solve_ivp spot checks")}
+
+
+# --- thesis Fig. 14: the loop, drawn from its python-control interconnection ---------------
+
+def build_interconnection(inertia, field, kp, ki, kd, moment_limit):
+    """The closed loop as a python-control interconnection of named blocks."""
+    import control as ct
+
+    loop = control.PidLoop(inertia, field, kp, ki, kd, moment_limit=moment_limit)
+    summing = ct.summing_junction(inputs=["psi_des", "-psi"], output="e", name="sum")
+    pid = ct.nlsys(lambda t, x, u, p: [u[0]], lambda t, x, u, p: [kp * u[0] + ki * x[0] - kd * u[1]],
+                   inputs=["e", "omega"], outputs=["u"], states=["integral"],
+                   name="pid")
+    sat = ct.nlsys(None, lambda t, x, u, p: np.clip(u, -moment_limit, moment_limit), inputs=["u"],
+                   outputs=["u_sat"], name="saturation")
+    # m_z = −u; M = (0, 0, m_z) × (cos ψ, −sin ψ, 0) = (−u sin ψ, −u cos ψ, 0).
+    alloc = ct.nlsys(None, lambda t, x, u, p: [-u[0] * np.sin(u[1]), -u[0] * np.cos(u[1])],
+                     inputs=["u_sat", "psi"], outputs=["M_x", "M_y"], name="allocation")
+    plant = ct.nlsys(lambda t, x, u, p: [x[1], float(attitude.two_coil_torque(x[0], u[0], u[1], field)) / inertia],
+                     lambda t, x, u, p: x, inputs=["M_x", "M_y"], outputs=["psi", "omega"],
+                     states=["psi", "omega"], name="mockup")
+    system = ct.interconnect([summing, pid, sat, alloc, plant], inplist=["psi_des"], outlist=["psi", "omega"],
+                             name="closed loop")
+    return system, loop
+
+
+#: What each block of the interconnection computes (the drawing's labels).
+BLOCK_LABELS = {
+    "sum": "Σ\ne = ψ_des − ψ", "pid": "PID, eq. (37)\nKp e + Ki ∫e − Kd ω",
+    "saturation": "saturation\n|u| ≤ m_max", "allocation": "allocation\nM = (0, 0, −u) × b",
+    "mockup": "mock-up, eq. (36)\nJ dω/dt = −B0(Mx sinψ + My cosψ)",
+}
+
+
+def compute_block_diagram(inertia, field, moment):
+    """Blocks and signals of the interconnection (names, inputs, outputs, wiring)."""
+    p = _defaults()
+    system, _ = build_interconnection(inertia, field, p["pid_kp"], p["pid_ki"], p["pid_kd"], moment)
+    blocks = [(s.name, list(s.input_labels), list(s.output_labels)) for s in system.syslist]
+    producer = {out: k for k, (_, _, outs) in enumerate(blocks) for out in outs}
+    edges = [(producer.get(sig, -1), k, sig) for k, (_, ins, _) in enumerate(blocks) for sig in ins]
+    return FigureData("", "", "", {}, [Series("edges", {
+        "from_block": ("1", np.array([e[0] for e in edges], float)),
+        "to_block": ("1", np.array([e[1] for e in edges], float))})],
+        extra={"blocks": blocks, "edges": edges})
+
+
+def plot_block_diagram(data):
+    """Boxes in signal order; forward signals along the row, feedback below it."""
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import FancyBboxPatch
+
+    blocks, edges = data.extra["blocks"], data.extra["edges"]
+    fig, ax = plt.subplots(figsize=(11.5, 3.8))
+    w, h, gap = 1.9, 1.0, 0.75
+    x = [k * (w + gap) for k in range(len(blocks))]
+    for k, (name, _, _) in enumerate(blocks):
+        ax.add_patch(FancyBboxPatch((x[k], 0), w, h, boxstyle="round,pad=0.05", fc="0.95", ec="k"))
+        ax.text(x[k] + w / 2, h / 2, BLOCK_LABELS.get(name, name), ha="center", va="center", fontsize=7.5)
+    depth = {}
+    for src, dst, sig in edges:
+        label = {"psi": "ψ", "omega": "ω", "psi_des": "ψ_des", "u_sat": "u_sat"}.get(sig, sig)
+        if src < 0:                                   # external input
+            ax.annotate("", (x[dst], 0.5 * h), (x[dst] - 0.7 * gap - 0.3, 0.5 * h),
+                        arrowprops={"arrowstyle": "->"})
+            ax.text(x[dst] - gap - 0.25, 0.62 * h, label, fontsize=9)
+        elif src < dst:                               # forward path
+            y = h * (0.5 if sig not in ("M_y",) else 0.25) + (0.25 * h if sig == "M_x" else 0)
+            ax.annotate("", (x[dst], y), (x[src] + w, y), arrowprops={"arrowstyle": "->"})
+            ax.text(x[src] + w + 0.08, y + 0.06, label, fontsize=8)
+        else:                                         # feedback from the plant
+            level = depth.setdefault(sig, -0.45 - 0.35 * len(depth))
+            xs = x[src] + w + 0.2
+            xd = x[dst] + w * (0.35 if sig == "psi" else 0.65)
+            ax.plot([x[src] + w, xs, xs], [0.5 * h, 0.5 * h, level], "k-", linewidth=0.8)
+            ax.plot([xs, xd], [level, level], "k-", linewidth=0.8)
+            ax.annotate("", (xd, -0.05), (xd, level), arrowprops={"arrowstyle": "->", "linewidth": 0.8})
+            ax.text(xd + 0.05, level + 0.05, label, fontsize=8)
+    ax.annotate("", (x[-1] + w + 0.8, 0.5 * h), (x[-1] + w, 0.5 * h), arrowprops={"arrowstyle": "->"})
+    ax.text(x[-1] + w + 0.3, 0.6 * h, "ψ, ω", fontsize=9)
+    ax.set_xlim(-1.6, x[-1] + w + 1.0)
+    ax.set_ylim(-0.45 - 0.35 * max(len(depth), 1) - 0.1, h + 0.3)
+    ax.set_axis_off()
+    ax.set_title("The PID loop (thesis Fig. 14), drawn from its python-control interconnection", fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+# --- thesis Figs. 15–18: the gain sweeps, literally in SI and under a unit hypothesis -------
+
+def compute_sweep(inertia, field, moment, initial_angle, duration, hypothesis_scale, sweep):
+    """Closed-loop runs for one gain sweep: in SI (saturated at the coils' maximum) and with
+    every gain and the limit multiplied by ``hypothesis_scale`` (a unit reading)."""
+    if not 1.0 <= duration <= 3600.0:
+        raise ValueError(f"duration must lie in [1, 3600] s, got {duration!r}")
+    if not hypothesis_scale > 0:
+        raise ValueError(f"hypothesis_scale must be > 0, got {hypothesis_scale!r}")
+    series = []
+    for tag, scale in (("SI", 1.0), ("hypothesis", hypothesis_scale)):
+        for kp, ki, kd in sweep:
+            loop = control.PidLoop(inertia, field, scale * kp, scale * ki, scale * kd,
+                                   moment_limit=scale * moment)
+            # The large-gain readings are stiff (a real pole far beyond the oscillation).
+            run = control.simulate_pid(loop, initial_angle, 0.0, duration, output_interval=0.25,
+                                       method="RK45" if scale < 100 else "LSODA")
+            poles = control.closed_loop_poles(inertia, field, scale * kp, scale * ki, scale * kd)
+            series.append(Series(f"{tag}: Kp = {kp:g}, Ki = {ki:g}, Kd = {kd:g}", {
+                "t": ("s", run.t), "psi": ("rad", run.psi), "omega": ("rad/s", run.omega),
+                "command_fraction": ("1", run.command / loop.moment_limit),
+                "max_real_pole": ("1/s", [poles[0].real])}))
+    return FigureData("", "", "", {}, series, extra={"scale": hypothesis_scale})
+
+
+def _plot_sweep(data, key, ylabel, title):
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(1, 2, figsize=(10.5, 3.8))
+    half = len(data.series) // 2
+    for ax, group, head in ((axes[0], data.series[:half], "literally in SI, |m| ≤ 0.4 A·m² (unstable)"),
+                            (axes[1], data.series[half:], f"gains × {data.extra['scale']:.3g} (unit hypothesis)")):
+        for s, style in zip(group, STYLES):
+            lab = s.label.split(": ", 1)[1] + f"  (max Re λ = {s.columns['max_real_pole'][1][0]:+.3g} 1/s)"
+            ax.plot(s.columns["t"][1], s.columns[key][1], style, label=lab, linewidth=1.1)
+        ax.set_title(head, fontsize=9)
+        ax.set_xlabel("t [s]")
+        ax.axhline(0, color="0.8", linewidth=0.6)
+        ax.legend(fontsize=7, loc="upper right")
+    axes[0].set_ylabel(ylabel)
+    fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def compute_fig15(inertia, field, moment, initial_angle, duration, hypothesis_scale):
+    """The K_p sweep of thesis Figs. 15–16."""
+    return compute_sweep(inertia, field, moment, initial_angle, duration, hypothesis_scale, KP_SWEEP)
+
+
+def compute_fig17(inertia, field, moment, initial_angle, duration, hypothesis_scale):
+    """The K_d sweep of thesis Figs. 17–18."""
+    return compute_sweep(inertia, field, moment, initial_angle, duration, hypothesis_scale, KD_SWEEP)
+
+
+def plot_fig15(data):
+    """ω(t), K_d = K_i = 0.5, K_p = 0.1/0.2/0.3 (thesis Fig. 15)."""
+    return _plot_sweep(data, "omega", "ω [rad/s]", "Angular velocity, Kd = Ki = 0.5 (thesis Fig. 15)")
+
+
+def plot_fig16(data):
+    """ψ(t), same gains (thesis Fig. 16)."""
+    return _plot_sweep(data, "psi", "ψ [rad]", "Rotation angle, Kd = Ki = 0.5 (thesis Fig. 16)")
+
+
+def plot_fig17(data):
+    """ω(t), K_p = 0.1, K_i = 0.5, K_d = 1/2/3 (thesis Fig. 17)."""
+    return _plot_sweep(data, "omega", "ω [rad/s]", "Angular velocity, Kp = 0.1, Ki = 0.5 (thesis Fig. 17)")
+
+
+def plot_fig18(data):
+    """ψ(t), same gains (thesis Fig. 18)."""
+    return _plot_sweep(data, "psi", "ψ [rad]", "Rotation angle, Kp = 0.1, Ki = 0.5 (thesis Fig. 18)")
+
+
+def _sweep_parameters():
+    p = _defaults()
+    params = _plant_parameters()
+    params.update({
+        "initial_angle": FigureParameter(p["mockup_initial_angle"], "rad", "ψ0 (Figs. 12–13's value; not stated for 15–18)"),
+        "duration": FigureParameter(300.0, "s", "time span (not stated)"),
+        "hypothesis_scale": FigureParameter(1.0 / MU_0, "1", "factor on the printed gains (default: B0 entered as H in A/m)"),
+    })
+    return params
+
+
+# --- which reading of the gain units gives damped curves? ----------------------------------
+
+def reading_evidence(inertia, field, moment, initial_angle, duration=300.0):
+    """One row per reading of the thesis's gain units: stability, damping and demand.
+
+    For each reading (a factor s on the printed gains, :data:`magbench.control.GAIN_READINGS`)
+    and each of the six printed gain sets: the linearised poles, the damping ratio and
+    2 % settling time (4/|Re λ|) of the slowest mode, and the peak PID output of the
+    unsaturated linear loop released at ``initial_angle`` [rad], as a fraction of the
+    coils' maximum in the reading's own units (the thesis says the gains were chosen to
+    stay below it, seed line 565) and in SI (what the coils can do).
+    """
+    import control as ct
+
+    rows = []
+    t = np.linspace(0.0, duration, 6001)
+    for reading in control.GAIN_READINGS:
+        s = control.gain_reading_scale(reading, field, moment)
+        per_set = []
+        for kp, ki, kd in PRINTED_SETS:
+            kp_, ki_, kd_ = s * kp, s * ki, s * kd
+            poles = control.closed_loop_poles(inertia, field, kp_, ki_, kd_)
+            slow = poles[0]
+            zeta = -slow.real / abs(slow)
+            stable = bool(np.all(poles.real < 0))
+            # Linear loop from rest at ψ0: states (ψ, ω, ∫e), output u = −Kp ψ + Ki ∫e − Kd ω.
+            a = np.array([[0, 1, 0], [-field * kp_ / inertia, -field * kd_ / inertia, field * ki_ / inertia],
+                          [-1, 0, 0]])
+            sys = ct.ss(a, np.zeros((3, 1)), [[-kp_, -kd_, ki_]], [[0]])
+            u = ct.initial_response(sys, t, [initial_angle, 0, 0]).outputs if stable else np.array([np.inf])
+            peak = float(np.max(np.abs(u)))
+            per_set.append((stable, zeta, 4 / abs(slow.real) if stable else np.inf, peak))
+        stable = [p for p in per_set if p[0]]
+        field_reading = {"field-in-gauss": 1e4 * field, "field-in-A/m": field / MU_0}.get(reading, field)
+        rows.append({
+            "reading": reading, "scale": s, "stable_sets": len(stable),
+            "zeta_min": min((p[1] for p in stable), default=np.nan),
+            "zeta_max": max((p[1] for p in stable), default=np.nan),
+            "settling_max": max((p[2] for p in stable), default=np.nan),
+            "demand_own_units": max((p[3] / s / moment for p in stable), default=np.nan),
+            "demand_si": max((p[3] / moment for p in stable), default=np.nan),
+            "free_period": float(attitude.pendulum_period(initial_angle, inertia, moment, field_reading)),
+            "critical_scale_max": max(float(control.critical_gain_scale(inertia, field, *g)) for g in PRINTED_SETS),
+        })
+    return rows
+
+
+def compute_gain_readings(inertia, field, moment):
+    """Largest real part of the closed-loop poles against a common factor on the gains."""
+    scales = np.logspace(-1, 6.5, 400)
+    series = []
+    for kp, ki, kd in PRINTED_SETS:
+        worst = [control.closed_loop_poles(inertia, field, s * kp, s * ki, s * kd)[0] for s in scales]
+        worst = np.array(worst)
+        series.append(Series(f"Kp = {kp:g}, Ki = {ki:g}, Kd = {kd:g}", {
+            "scale": ("1", scales), "max_real": ("1/s", worst.real),
+            "zeta": ("1", -worst.real / np.abs(worst))}))
+    marks = {r: control.gain_reading_scale(r, field, moment) for r in control.GAIN_READINGS}
+    return FigureData("", "", "", {}, series, extra={"marks": marks})
+
+
+def plot_gain_readings(data):
+    """Two panels: max Re λ and the slowest mode's damping against the gain factor."""
+    import matplotlib.pyplot as plt
+
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10.5, 4.0), sharex=True)
+    for k, s in enumerate(data.series):
+        c = {n: v for n, (u, v) in s.columns.items()}
+        style = STYLES[k % 3]
+        color = "C0" if k < 3 else "C1"
+        a1.semilogx(c["scale"], c["max_real"], style, color=color, label=s.label)
+        a2.semilogx(c["scale"], c["zeta"], style, color=color)
+    top = a1.get_ylim()[1]
+    for name, scale in data.extra["marks"].items():
+        for ax in (a1, a2):
+            ax.axvline(scale, color="0.6", linewidth=0.7)
+        a1.text(scale, top, name, rotation=90, fontsize=7, va="top", ha="right")
+    a1.axhline(0, color="k", linewidth=0.7)
+    a1.set_ylabel("largest Re λ [1/s] (> 0: unstable)")
+    a2.set_ylabel("damping ratio of the slowest mode")
+    a2.axhline(0, color="k", linewidth=0.7)
+    for ax in (a1, a2):
+        ax.set_xlabel("factor s on the printed gains (K_SI = s K)")
+    a1.legend(fontsize=7, loc="lower left")
+    fig.suptitle("The printed gain sets under every reading of their units", fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+# --- the small-angle allocation ---------------------------------------------------------------
+
+def compute_allocation_error():
+    """Exact against the thesis's small-angle allocation, over the body angle ψ."""
+    psi = np.linspace(0.0, np.pi, 721)
+    world = np.array([1.0, 0.0, 0.0])
+    loop = control.PidLoop(1.0, 1.0, 0.0, 0.0, 0.0, allocation="small-angle")
+    gain = control.loop_torque(psi, 1.0, loop)                    # torque per unit command, B0 = 1
+    b_small = control.body_field_small_angle(psi, world)
+    b_exact = control.body_field_exact(psi, world)
+    coils = control.dipole_allocation(np.array([0.0, 0.0, 1.0]), b_small)
+    angle_err = np.arctan2(np.cross(b_exact, b_small)[:, 2], np.sum(b_exact * b_small, axis=1))
+    zero = float(psi[np.argmax(gain < 0)]) if np.any(gain < 0) else np.nan
+    return FigureData("", "", "", {}, [Series("small-angle / exact", {
+        "psi": ("deg", np.degrees(psi)), "torque_ratio": ("1", gain),
+        "coil_moment_ratio": ("1", np.linalg.norm(coils, axis=1)),
+        "direction_error": ("deg", np.degrees(angle_err))})], extra={"sign_flip": zero})
+
+
+def plot_allocation_error(data):
+    """Torque gain, coil demand and field-direction error of the small-angle allocation."""
+    import matplotlib.pyplot as plt
+
+    c = {k: v for k, (u, v) in data.series[0].columns.items()}
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10.0, 3.8))
+    a1.plot(c["psi"], c["torque_ratio"], label="torque / commanded (ψ sinψ + cosψ)")
+    a1.plot(c["psi"], c["coil_moment_ratio"], "--", label="|coil moments| / |m_z| (√(1+ψ²))")
+    a1.axhline(1.0, color="0.5", linestyle=":")
+    a1.axhline(0.0, color="k", linewidth=0.6)
+    a1.set_ylabel("ratio to the exact allocation")
+    a2.plot(c["psi"], c["direction_error"], color="C2")
+    a2.set_ylabel("error of the field direction b [deg]")
+    for ax in (a1, a2):
+        for target, name in ((60, "π/3"), (120, "2π/3")):
+            ax.axvline(target, color="C3", linewidth=0.7, linestyle=":")
+            ax.text(target, ax.get_ylim()[1], f" ψ_des = {name}", fontsize=7, va="top", color="C3")
+        ax.set_xlabel("body angle ψ from the field [deg]")
+    a1.legend(fontsize=8, loc="lower left")
+    fig.suptitle("The thesis's small-angle field rotation used for the allocation M = m × b", fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+# --- linear analysis: root locus, margins, linear against nonlinear -----------------------
+
+def _design_gains(inertia, field, bandwidth):
+    return tuple(float(k) for k in control.pid_gains_for_triple_pole(inertia, field, bandwidth))
+
+
+def compute_root_locus(inertia, field, bandwidth):
+    """Root locus of our SI design over a common loop gain k, with the printed sets' poles."""
+    import control as ct
+
+    kp, ki, kd = _design_gains(inertia, field, bandwidth)
+    loop = ct.tf(field * np.array([kd, kp, ki]), [inertia, 0, 0, 0])
+    gains = np.concatenate([np.logspace(-3, 3, 600), [1.0 / 9.0]])
+    gains.sort()
+    rl = ct.root_locus_map(loop, gains)
+    loci = rl.loci
+    series = [Series(f"branch {k + 1}", {"gain": ("1", gains), "re": ("1/s", loci[:, k].real),
+                                         "im": ("1/s", loci[:, k].imag)}) for k in range(loci.shape[1])]
+    printed = np.array([control.closed_loop_poles(inertia, field, *g) for g in PRINTED_SETS]).ravel()
+    series.append(Series("printed gain sets, SI", {"re": ("1/s", printed.real), "im": ("1/s", printed.imag)}))
+    design = control.closed_loop_poles(inertia, field, kp, ki, kd)
+    series.append(Series("design k = 1", {"re": ("1/s", design.real), "im": ("1/s", design.imag)}))
+    gm, pm, _, wg, wp, _ = ct.stability_margins(loop)
+    return FigureData("", "", "", {}, series, extra={"gm": gm, "pm": pm, "wg": wg, "wp": wp,
+                                                      "gains": (kp, ki, kd)})
+
+
+def plot_root_locus(data):
+    """Loci of the three closed-loop poles; the printed SI gain sets in the right half-plane."""
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7.0, 5.0))
+    for s in data.series[:-2]:
+        ax.plot(s.columns["re"][1], s.columns["im"][1], color="C0", linewidth=1)
+    pr, de = data.series[-2], data.series[-1]
+    ax.plot(pr.columns["re"][1], pr.columns["im"][1], "x", color="C3", label=pr.label)
+    ax.plot(de.columns["re"][1], de.columns["im"][1], "o", mfc="none", color="C2", label="our design (triple pole)")
+    ax.axvline(0, color="k", linewidth=0.6)
+    ax.axhline(0, color="0.7", linewidth=0.6)
+    ax.set_xlim(-0.4, 0.2)
+    ax.set_ylim(-0.3, 0.3)
+    ax.set_xlabel("Re s [1/s]")
+    ax.set_ylabel("Im s [1/s]")
+    kp, ki, kd = data.extra["gains"]
+    ax.set_title(f"Root locus of k·C(s)·B0/(J s²), Kp = {kp:.3g}, Ki = {ki:.3g}, Kd = {kd:.3g}\n"
+                 f"lower gain margin {data.extra['gm']:.3f} (= 1/9), phase margin {data.extra['pm']:.1f}°",
+                 fontsize=9)
+    ax.legend(fontsize=8, loc="lower left")
+    fig.tight_layout()
+    return fig
+
+
+def _root_locus_parameters():
+    p = _defaults()
+    pp = _plant_parameters()
+    return {"inertia": pp["inertia"], "field": pp["field"],
+            "bandwidth": FigureParameter(p["pid_bandwidth"], "rad/s", "triple-pole magnitude of our SI design")}
+
+
+def compute_step_response(inertia, field, moment, bandwidth, sample_interval, small_step, large_step, duration):
+    """Linear (python-control) against the nonlinear, saturated loop for a small and a large step."""
+    import control as ct
+
+    if not 0 < small_step <= np.pi and 0 < large_step <= np.pi:
+        raise ValueError(f"steps must lie in (0, π] rad, got {small_step!r} and {large_step!r}")
+    kp, ki, kd = _design_gains(inertia, field, bandwidth)
+    closed = ct.tf(field * np.array([kp, ki]), control.closed_loop_polynomial(inertia, field, kp, ki, kd))
+    series = []
+    for name, step in (("small", small_step), ("large", large_step)):
+        runs = {
+            "linear (python-control)": None,
+            "nonlinear, saturated": control.PidLoop(inertia, field, kp, ki, kd, target=step, moment_limit=moment),
+            "sampled, saturated": control.PidLoop(inertia, field, kp, ki, kd, target=step, moment_limit=moment),
+            "small-angle allocation": control.PidLoop(inertia, field, kp, ki, kd, target=step, moment_limit=moment,
+                                                      allocation="small-angle"),
+        }
+        for label, loop in runs.items():
+            if loop is None:
+                t = np.linspace(0.0, duration, int(duration / 0.5) + 1)
+                psi = ct.forced_response(closed, t, step * np.ones_like(t)).outputs
+                u = np.full_like(t, np.nan)
+            else:
+                r = control.simulate_pid(loop, 0.0, 0.0, duration, output_interval=0.5,
+                                         sample_interval=sample_interval if label.startswith("sampled") else None)
+                t, psi, u = r.t, r.psi, r.command
+            cols = {"t": ("s", t), "psi": ("rad", psi)}
+            if loop is not None:
+                cols["command"] = ("A m^2", u)
+            series.append(Series(f"{name} step: {label}", cols))
+    return FigureData("", "", "", {}, series, extra={"steps": (small_step, large_step), "gains": (kp, ki, kd)})
+
+
+def plot_step_response(data):
+    """ψ/ψ_des for both steps (left, middle) and the commands of the large step (right)."""
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(1, 3, figsize=(12.0, 3.8))
+    styles = ("k-", "C0--", "C1:", "C2-.")
+    for ax, name, step in zip(axes[:2], ("small", "large"), data.extra["steps"]):
+        for s, st in zip([s for s in data.series if s.label.startswith(name)], styles):
+            ax.plot(s.columns["t"][1], s.columns["psi"][1] / step, st, label=s.label.split(": ")[1], linewidth=1.1)
+        ax.set_title(f"step of {np.degrees(step):.0f}°", fontsize=10)
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel("ψ / ψ_des")
+        ax.axhline(1.0, color="0.8", linewidth=0.6)
+    axes[0].legend(fontsize=7)
+    for s, st in zip([s for s in data.series if s.label.startswith("large") and "command" in s.columns], styles[1:]):
+        axes[2].plot(s.columns["t"][1], s.columns["command"][1], st, label=s.label.split(": ")[1], linewidth=1.1)
+    axes[2].set_title("PID output u, large step", fontsize=10)
+    axes[2].set_xlabel("t [s]")
+    axes[2].set_ylabel("u [A·m²]")
+    axes[2].legend(fontsize=7)
+    fig.tight_layout()
+    return fig
+
+
+def _step_parameters():
+    p = _defaults()
+    params = _root_locus_parameters()
+    params["bandwidth"] = FigureParameter(2 * p["pid_bandwidth"], "rad/s",
+                                          "triple-pole magnitude: twice the chapter's design, so that the large step saturates")
+    params.update({
+        "moment": _plant_parameters()["moment"],
+        "sample_interval": FigureParameter(p["pid_sample_interval"], "s", "controller interval of the sampled loop"),
+        "small_step": FigureParameter(5 * DEG, "rad", "small target step"),
+        "large_step": FigureParameter(2 * np.pi / 3, "rad", "large target step (the bench's 2π/3)"),
+        "duration": FigureParameter(300.0, "s", "time span"),
+    })
+    return params
+
+
+_GEO = _geometry_parameters()
+register(FigureSpec("thesis-fig10", "Frames of the mock-up on a thread (thesis Fig. 10)", "Bui (2016), Fig. 10",
+                    compute_geometry, plot_fig10, _GEO))
+register(FigureSpec("thesis-fig11", "Forces on the mock-up (thesis Fig. 11)", "Bui (2016), Fig. 11",
+                    compute_geometry, plot_fig11, _GEO))
+register(FigureSpec("thesis-fig12", "Angular velocity of the free mock-up (thesis Fig. 12)",
+                    "Bui (2016), Fig. 12, eq. (35)", compute_free_pendulum, plot_fig12, _free_parameters()))
+register(FigureSpec("thesis-fig13", "Rotation angle of the free mock-up (thesis Fig. 13)",
+                    "Bui (2016), Fig. 13, eq. (35)", compute_free_pendulum, plot_fig13, _free_parameters()))
+register(FigureSpec("ch04-period-ratio", "Exact pendulum period against eq. (14)", "Bui (2016) eqs. (14), (15), (35)",
+                    compute_period_ratio, plot_period_ratio, _period_parameters()))
+register(FigureSpec("thesis-fig14", "The PID loop (thesis Fig. 14)", "Bui (2016), Fig. 14, eqs. (36)–(38)",
+                    compute_block_diagram, plot_block_diagram,
+                    {k: v for k, v in _plant_parameters().items()}))
+_SWEEP = _sweep_parameters()
+register(FigureSpec("thesis-fig15", "Angular velocity, Kp sweep (thesis Fig. 15)", "Bui (2016), Fig. 15",
+                    compute_fig15, plot_fig15, _SWEEP))
+register(FigureSpec("thesis-fig16", "Rotation angle, Kp sweep (thesis Fig. 16)", "Bui (2016), Fig. 16",
+                    compute_fig15, plot_fig16, _SWEEP))
+register(FigureSpec("thesis-fig17", "Angular velocity, Kd sweep (thesis Fig. 17)", "Bui (2016), Fig. 17",
+                    compute_fig17, plot_fig17, _SWEEP))
+register(FigureSpec("thesis-fig18", "Rotation angle, Kd sweep (thesis Fig. 18)", "Bui (2016), Fig. 18",
+                    compute_fig17, plot_fig18, _SWEEP))
+register(FigureSpec("ch04-gain-readings", "The printed gains under every reading of their units",
+                    "Bui (2016) eqs. (37)–(38), Figs. 15–18", compute_gain_readings, plot_gain_readings,
+                    _plant_parameters()))
+register(FigureSpec("ch04-allocation-error", "Error of the small-angle allocation", "Bui (2016) §4.1, seed lines 545–563",
+                    compute_allocation_error, plot_allocation_error, {}))
+register(FigureSpec("ch04-root-locus", "Root locus and margins of a stable SI design", "Not in the thesis",
+                    compute_root_locus, plot_root_locus, _root_locus_parameters()))
+register(FigureSpec("ch04-step-response", "Linear against nonlinear closed loop", "Not in the thesis",
+                    compute_step_response, plot_step_response, _step_parameters()))
