@@ -33,3 +33,10 @@ def test_fingerprint_tracks_library_data_and_overrides(tmp_path, monkeypatch):
     assert len({base, after_data, after_code, after_params}) == 4
     monkeypatch.delenv("MAGBENCH_PARAMS")
     assert fp.fingerprint() == after_code      # deterministic
+
+
+def test_book_check_sees_every_page_including_sections():
+    """tools/check_book.py must check nested toc sections too: every page in book/ is listed."""
+    listed = set(_load("check_book").chapter_files())
+    on_disk = {f"book/{p.stem}" for p in (ROOT / "book").glob("*.md")}
+    assert on_disk == listed

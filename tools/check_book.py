@@ -12,11 +12,16 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 def chapter_files():
+    """Every page of the toc: the root, each part's chapters and their nested sections."""
     toc = yaml.safe_load((ROOT / "_toc.yml").read_text())
-    files = [toc["root"]]
-    for part in toc.get("parts", []):
-        files += [c["file"] for c in part.get("chapters", [])]
-    return files
+
+    def walk(entries):
+        for entry in entries:
+            if "file" in entry:
+                yield entry["file"]
+            yield from walk(entry.get("sections", []))
+
+    return [toc["root"]] + [f for part in toc.get("parts", []) for f in walk(part.get("chapters", []))]
 
 
 def main(html_dir):
