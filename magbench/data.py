@@ -227,21 +227,9 @@ def load_measurements(name="thesis", data_dir=None):
         Rows keyed by their id, in file order.
     """
     path = Path(data_dir or DATA_DIR) / name / "measurements.csv"
-    text = verify_checksum(path, data_dir).decode("utf-8")
-    lines = text.splitlines()
+    lines = verify_checksum(path, data_dir).decode("utf-8").splitlines()
     rows = {}
-    header = None
-    for lineno, fields in _csv_rows(lines):
-        if header is None:
-            if fields != _MEASUREMENT_COLUMNS:
-                raise DataError(f"{path}:{lineno}: header must be {','.join(_MEASUREMENT_COLUMNS)}")
-            header = fields
-            continue
-        if len(fields) != len(header):
-            raise DataError(
-                f"{path}:{lineno}: expected {len(header)} columns, got {len(fields)}"
-            )
-        rec = dict(zip(header, fields))
+    for lineno, rec in _csv_records(lines, _MEASUREMENT_COLUMNS, path):
         low = _number(rec["value_low"], path, lineno, "value_low")
         high = _number(rec["value_high"], path, lineno, "value_high")
         if high < low:
@@ -259,8 +247,6 @@ def load_measurements(name="thesis", data_dir=None):
             section=rec["section"], seed_line=int(_number(rec["seed_line"], path, lineno, "seed_line")),
             method=rec["method"], conditions=rec["conditions"],
         )
-    if header is None:
-        raise DataError(f"{path}: no header row")
     return rows
 
 
@@ -270,6 +256,26 @@ def _csv_rows(lines):
         if not line.strip() or line.startswith("#"):
             continue
         yield lineno, next(csv.reader(io.StringIO(line)))
+
+
+def _csv_records(lines, columns, path):
+    """Yield (line number, {column: text}) for a CSV whose first row must be ``columns``.
+
+    Raises DataError naming the file and line for a wrong header, a row with the wrong
+    number of fields, or a file without a header.
+    """
+    header = None
+    for lineno, fields in _csv_rows(lines):
+        if header is None:
+            if fields != columns:
+                raise DataError(f"{path}:{lineno}: header must be {','.join(columns)}")
+            header = fields
+            continue
+        if len(fields) != len(header):
+            raise DataError(f"{path}:{lineno}: expected {len(header)} columns, got {len(fields)}")
+        yield lineno, dict(zip(header, fields))
+    if header is None:
+        raise DataError(f"{path}: no header row")
 
 
 def measurement(measurement_id, name="thesis"):
@@ -374,16 +380,8 @@ def load_wire_table(name="iec60317", data_dir=None):
         raise DataError(f"unknown wire table {name!r}; known: {', '.join(WIRE_TABLES)}")
     path = Path(data_dir or DATA_DIR) / "wires" / f"{WIRE_TABLES[name]}.csv"
     lines = verify_checksum(path, data_dir).decode("utf-8").splitlines()
-    header, rows = None, []
-    for lineno, fields in _csv_rows(lines):
-        if header is None:
-            if fields != _WIRE_COLUMNS:
-                raise DataError(f"{path}:{lineno}: header must be {','.join(_WIRE_COLUMNS)}")
-            header = fields
-            continue
-        if len(fields) != len(header):
-            raise DataError(f"{path}:{lineno}: expected {len(header)} columns, got {len(fields)}")
-        rec = dict(zip(header, fields))
+    rows = []
+    for lineno, rec in _csv_records(lines, _WIRE_COLUMNS, path):
         d, tol, inc, od = (_number(rec[c], path, lineno, c) for c in _WIRE_COLUMNS[:4])
         if not (d > 0 and 0 <= tol < d and inc > 0 and od >= d + inc):
             raise DataError(f"{path}:{lineno}: inconsistent sizes (need d > 0, 0 <= tolerance < d, "
