@@ -7,7 +7,7 @@ responses come from it.
 
 import numpy as np
 
-from .. import attitude, control
+from .. import attitude, coils, control
 from ..constants import MU_0
 from ..params import chapter_parameters
 from . import FigureData, FigureParameter, FigureSpec, Series, register
@@ -224,7 +224,8 @@ def compute_period_ratio(inertia, moment, field, period, amplitude_checks):
                         rtol=1e-11, atol=1e-13)
         check_ratio.append(2 * sol.t_events[0][0] / t0)
     h_exact = attitude.field_for_period(period, amp, inertia, moment) / MU_0
-    h_eq15 = 4 * np.pi**2 * inertia * np.maximum(amp, 1e-300) / (MU_0 * moment * period**2)
+    # Eq. (15) as the thesis uses it is linear in its amplitude factor A (zero at A = 0).
+    h_eq15 = coils.oscillation_field_h(inertia, moment, period) * amp
     a60 = attitude.amplitude_for_period(period, inertia, moment, field) if period > t0 else 0.0
     return FigureData("", "", "", {}, [
         Series("exact / eq. (14)", {"amplitude": ("deg", np.degrees(amp)), "ratio": ("1", ratio)}),
