@@ -58,7 +58,8 @@ def _cmd_figure(args):
 
             matplotlib.use("Agg")
             fig, data = figures.render(args.id, **overrides)
-            fig.savefig(args.out, dpi=150, metadata={"CreationDate": None} if args.out.endswith(".pdf") else None)
+            fig.savefig(args.out, dpi=150, metadata=_file_metadata(args.out, figures.caption_provenance(
+                args.id, data.parameters)))
         else:
             data = figures.compute(args.id, **overrides)
     except (KeyError, ValueError) as exc:      # unknown parameter name, or a value out of range
@@ -68,6 +69,22 @@ def _cmd_figure(args):
         Path(args.data).write_text(json.dumps(data.to_json_dict(), indent=1), encoding="utf-8")
     print(figures.caption_provenance(args.id, data.parameters))
     return 0
+
+
+def _file_metadata(path, description):
+    """Figure-file metadata: the provenance as its description, no date or version.
+
+    Each format names the fields differently; dates are dropped so that the same
+    figure and parameters give the same file.
+    """
+    suffix = Path(path).suffix.lower()
+    if suffix == ".png":
+        return {"Description": description, "Software": None}
+    if suffix == ".pdf":
+        return {"Subject": description, "CreationDate": None, "Creator": None, "Producer": None}
+    if suffix == ".svg":
+        return {"Description": description, "Date": None, "Creator": None}
+    return None
 
 
 def _cmd_compare(args):

@@ -1,13 +1,25 @@
-"""Helpers for the book's chapters: figures with provenance captions, glued numbers,
-and tables of model-vs-measurement rows and source checks.
+"""Helpers for the book's chapters: figures as images with provenance captions, glued
+numbers and quantities, and captioned tables of model-vs-measurement rows and source
+checks.
 
 This module sits on top of the library (it imports figures, compare and errata) and
 is the only place that knows about myst-nb's ``glue``.
 """
 
+import html
+import math
 from pathlib import Path
 
-__all__ = ["provenance", "figure", "glue_number", "compare_table", "checks_table", "benchmark_result"]
+__all__ = ["provenance", "figure", "figure_png", "glue_number", "glue_text", "glue_quantity",
+           "format_number", "format_quantity", "format_percent", "display_unit", "printed_text",
+           "table", "compare_table", "checks_table", "benchmark_result",
+           "FIGURE_DPI", "CSS_PIXELS_PER_INCH"]
+
+#: Resolution of the PNG files in the book: twice the CSS pixel density, so figures
+#: stay sharp on high-density screens; they are shown at their CSS size.
+FIGURE_DPI = 200
+#: CSS pixels per inch of figure size (a 7 in wide figure is shown 700 px wide).
+CSS_PIXELS_PER_INCH = 100
 
 
 def provenance():
@@ -29,31 +41,53 @@ def provenance():
             f"data manifest sha256 {manifest})")
 
 
+def figure_png(fig):
+    """PNG bytes of a matplotlib figure and its CSS display width [px].
+
+    Rendering goes straight through the Agg canvas, whatever backend is active, so no
+    environment variable (``MPLBACKEND``) can turn a figure into its text repr.
+    Metadata are fixed (no software version or date), so the bytes depend only on the
+    drawing.
+    """
+    import io
+
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    buffer = io.BytesIO()
+    FigureCanvasAgg(fig).print_png(buffer, dpi=FIGURE_DPI, metadata={"Software": None})
+    width_px = round(fig.get_figwidth() * CSS_PIXELS_PER_INCH)
+    return buffer.getvalue(), width_px
+
+
 def figure(figure_id, **params):
-    """Render a registered figure, glue it and its provenance caption; return the data.
+    """Render a registered figure, glue it as a PNG image and its caption provenance.
 
     The chapter shows it with a ``{glue:figure}`` directive named after the id, whose
     caption includes ``{glue:text}`<id>-provenance``` so the rendered caption names the
     figure id, the function and the parameters that differ from the defaults.
+    Returns the figure's data.
     """
     import matplotlib.pyplot as plt
+    from IPython.display import Image
     from myst_nb import glue
 
     from . import figures
 
     fig, data = figures.render(figure_id, **params)
-    glue(figure_id, fig, display=False)
+    png, width = figure_png(fig)
+    plt.close(fig)
+    glue(figure_id, Image(data=png, format="png", width=width), display=False)
     glue(f"{figure_id}-provenance", figures.caption_provenance(figure_id, data.parameters),
          display=False)
-    plt.close(fig)
     return data
 
 
 def glue_number(key, value):
-    """Glue a number for ``{glue:text}`key:format``` in prose; returns the value.
+    """Glue a number for ``{glue:text}`key:format``` in prose.
 
     numpy scalars are glued as Python numbers: their repr (``np.float64(…)``) would
-    otherwise reach the text and defeat the format spec.
+    otherwise reach the text and defeat the format spec. Returns nothing, so a cell
+    that ends with it prints nothing.
     """
     import numpy as np
     from myst_nb import glue
@@ -61,29 +95,160 @@ def glue_number(key, value):
     if isinstance(value, np.generic) or (isinstance(value, np.ndarray) and value.ndim == 0):
         value = value.item()
     glue(key, value, display=False)
-    return value
 
 
-def compare_table(rows):
-    """A pandas DataFrame of :class:`magbench.compare.CompareRow` objects for display."""
+def glue_text(key, text):
+    """Glue a string for ``{glue:text}`key``` (a formatted quantity, a name)."""
+    from myst_nb import glue
+
+    glue(key, str(text), display=False)
+
+
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def format_number(value, digits=3, *, small=1e-3, large=1e5):
+    """A number for prose: ``digits`` significant digits, ``a·10ⁿ`` outside [small, large).
+
+    >>> format_number(6.2213e-41)
+    '6.22·10⁻⁴¹'
+    >>> format_number(228.46)
+    '228'
+    >>> format_number(0.046672, 2)
+    '0.047'
+    """
+    value = float(value)
+    if not math.isfinite(value):
+        return {math.inf: "∞", -math.inf: "−∞"}.get(value, "NaN")
+    if value == 0.0:
+        return "0"
+    magnitude = abs(value)
+    if small <= magnitude < large:
+        decimals = max(digits - 1 - math.floor(math.log10(magnitude)), 0)
+        text = f"{magnitude:.{decimals}f}"
+        if float(text) >= large:     # rounding carried it over the threshold
+            return format_number(value, digits, small=small, large=large)
+    else:
+        mantissa, exponent = f"{magnitude:.{digits - 1}e}".split("e")
+        text = f"{mantissa}·10{str(int(exponent)).translate(_SUPERSCRIPT)}"
+    return ("−" if value < 0 else "") + text
+
+
+_UNITS = {"uT": "µT", "ohm": "Ω", "Ohm": "Ω", "A m^2": "A·m²", "m^2": "m²", "kg m^2": "kg·m²",
+          "N m/kg": "N·m/kg", "N m": "N·m", "deg": "°", "1e22 A m^2": "10²² A·m²", "1": "",
+          "kg/m^3": "kg/m³", "A/m^2": "A/m²", "m/s^2": "m/s²"}
+
+
+def display_unit(unit):
+    """A unit as a reader writes it: ``uT`` → µT, ``A m^2`` → A·m², ``ohm`` → Ω."""
+    return _UNITS.get(unit, unit)
+
+
+def format_quantity(value, unit="", digits=3):
+    """``format_number(value) unit`` with the unit as a reader writes it (no space before °)."""
+    unit = display_unit(unit)
+    number = format_number(value, digits)
+    if not unit:
+        return number
+    return f"{number}{unit}" if unit in ("°", "%") else f"{number} {unit}"
+
+
+def format_percent(fraction, digits=2):
+    """A relative difference as a percentage with a sign: 0.0123 → ``+1.2 %``."""
+    fraction = float(fraction)
+    sign = "+" if fraction > 0 else ("−" if fraction < 0 else "")
+    return f"{sign}{format_number(abs(fraction) * 100.0, digits)} %"
+
+
+def glue_quantity(key, value, unit="", digits=3):
+    """Glue ``format_quantity(value, unit, digits)`` as text for ``{glue:text}`key```."""
+    glue_text(key, format_quantity(value, unit, digits))
+
+
+def printed_text(value, tolerance):
+    """A printed value with the digits the source printed.
+
+    Printed-value tolerances are half a unit of the last printed digit, so the number
+    of printed decimals follows from the tolerance: 0.130 with tolerance 0.0005 is
+    shown as ``0.130``, not ``0.13``. Other tolerances fall back to 4 significant digits.
+
+    >>> printed_text(0.13, 0.0005)
+    '0.130'
+    >>> printed_text(258.0, 0.5)
+    '258'
+    """
+    value, tolerance = float(value), float(tolerance)
+    if tolerance > 0:
+        unit = math.log10(2.0 * tolerance)
+        if abs(unit - round(unit)) < 1e-9 and -12 <= round(unit) <= 12:
+            decimals = max(-round(unit), 0)
+            if abs(value) < 1e5 and (abs(value) >= 1e-3 or value == 0):
+                text = f"{abs(value):.{decimals}f}"
+                return ("−" if value < 0 else "") + text
+            mantissa_digits = max(math.floor(math.log10(abs(value))) - round(unit) + 1, 1)
+            return format_number(value, mantissa_digits)
+    return format_number(value, 4)
+
+
+def table(frame, caption, *, label=None, wide_columns=()):
+    """A captioned HTML table for a remove-input cell (rendered as a real table).
+
+    ``frame`` is a pandas DataFrame whose cells are already formatted text; its index
+    is not shown (make the key a column). ``label`` becomes the table's HTML id, so
+    prose can link to it; ``wide_columns`` name columns allowed to wrap (prose-like).
+    """
+    from IPython.display import HTML
+
+    label_attr = f' id="{html.escape(label)}"' if label else ""
+    head = "".join(f"<th>{html.escape(str(c))}</th>" for c in frame.columns)
+    rows = []
+    for values in frame.itertuples(index=False):
+        cells = []
+        for column, value in zip(frame.columns, values):
+            cls = ' class="wrap"' if column in wide_columns else ""
+            cells.append(f"<td{cls}>{html.escape(str(value))}</td>")
+        rows.append("<tr>" + "".join(cells) + "</tr>")
+    return HTML(f'<div class="magbench-table"><table{label_attr}>'
+                f"<caption>{html.escape(caption)}</caption>"
+                f"<thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table></div>")
+
+
+def compare_table(rows, caption="Model beside measurement", *, label=None):
+    """A captioned table of :class:`magbench.compare.CompareRow` objects.
+
+    Columns: quantity, measured (with its uncertainty), model, difference, verdict; the
+    row's source and tolerance go into the quantity cell so the verdict column fits a
+    1024 px page.
+    """
     import pandas as pd
 
-    return pd.DataFrame([{
-        "quantity": r.quantity, "source": r.source, "measured": f"{r.measured:.5g}",
-        "model": f"{r.model:.5g}", "difference": f"{r.difference:+.3g}",
-        "tolerance": f"{r.tolerance:.2g}", "unit": r.unit, "verdict": r.verdict} for r in rows],
-        index=[r.id for r in rows])
+    def value(x, unit, digits=4):
+        return format_quantity(x, unit, digits)
+
+    frame = pd.DataFrame([{
+        "quantity": f"{r.quantity} ({r.source})",
+        "measured": value(r.measured, r.unit) + (f" ± {format_number(r.uncertainty, 2)}"
+                                                  if r.uncertainty else ""),
+        "model": value(r.model, r.unit),
+        "difference": ("+" if r.difference > 0 else "") + value(r.difference, r.unit, 3),
+        "tolerance": value(r.tolerance, r.unit, 2),
+        "verdict": r.verdict} for r in rows])
+    return table(frame, caption, label=label, wide_columns=("quantity",))
 
 
-def checks_table(checks):
-    """A pandas DataFrame of :class:`magbench.errata.SourceCheck` objects for display."""
+def checks_table(checks, caption="Printed values beside the computation", *, label=None):
+    """A captioned table of :class:`magbench.errata.SourceCheck` objects.
+
+    Printed values keep the source's printed digits (:func:`printed_text`).
+    """
     import pandas as pd
 
-    return pd.DataFrame([{
-        "quantity": c.quantity, "where": c.location, "printed": f"{c.printed:.5g}",
-        "computed": f"{c.computed:.5g}", "tolerance": f"{c.tolerance:.2g}", "unit": c.unit,
-        "verdict": "reproduces" if c.agrees else "does not reproduce"} for c in checks],
-        index=[c.id for c in checks])
+    frame = pd.DataFrame([{
+        "quantity": c.quantity, "where": c.location,
+        "printed": f"{printed_text(c.printed, c.tolerance)} {display_unit(c.unit)}".strip(),
+        "computed": format_quantity(c.computed, c.unit, 4),
+        "verdict": "reproduces" if c.agrees else "does not reproduce"} for c in checks])
+    return table(frame, caption, label=label, wide_columns=("quantity", "where"))
 
 
 def benchmark_result(name):

@@ -3,9 +3,10 @@
 A figure is a pair of functions: ``compute(**params) -> FigureData`` (numbers only,
 tested) and ``plot(data) -> matplotlib Figure`` (drawing only). Both the book and the
 ``magbench figure`` command go through :func:`render`, so they cannot disagree. Each
-figure's parameters have SI defaults taken from ``data/params``; the figure's footer
-and :func:`caption_provenance` name the figure id, the function that made it and the
-parameters that differ from those defaults.
+figure's parameters have SI defaults taken from ``data/params``; :func:`caption_provenance`
+names the figure id, the function that made it and the parameters that differ from
+those defaults: the book puts it in the caption, the command line into the file's
+metadata (the image itself carries no footer).
 """
 
 import importlib
@@ -167,8 +168,6 @@ def render(figure_id, **overrides):
     spec = get_spec(figure_id)
     data = compute(figure_id, **overrides)
     fig = spec.plot(data)
-    fig.text(0.995, 0.005, caption_provenance(figure_id, data.parameters), ha="right",
-             va="bottom", fontsize=6, color="0.4")
     return fig, data
 
 
