@@ -326,3 +326,38 @@ def all_rows():
     for provider in PROVIDERS.values():
         rows.extend(provider())
     return rows
+
+
+#: What the value a row compares with is (its ``measured`` column): a measurement, an
+#: independent reference (a model fitted to measurements, such as IGRF), the source's
+#: own simulation, or a value the source printed as its design or calculation.
+ROW_KINDS = {
+    "measurement": "measured by a person (on the bench or the coils)",
+    "reference": "independent reference (IGRF-14, fitted to observatory and satellite data)",
+    "simulation": "the source's own simulation (COMSOL)",
+    "printed": "printed design or calculated value of the source",
+}
+
+_KIND_BY_ID = (
+    ("dipole-", "reference"), ("pole-", "reference"), ("lab-", "reference"),
+    ("equatorial-dipole-field", "reference"),
+    ("comsol-", "simulation"),
+    ("sim-center-h", "measurement"), ("sim-coil-resistance", "measurement"),
+    ("mtq-resistance-computed", "printed"), ("mtq-resistance", "measurement"),
+    ("mtq-moment", "printed"), ("mtq-power", "printed"), ("mtq-current-for-moment", "printed"),
+    ("mtq-winding-length", "printed"),
+    ("bench-error-", "measurement"),
+)
+
+
+def row_kind(row):
+    """The kind of value a row's ``measured`` column holds: a key of :data:`ROW_KINDS`.
+
+    A row whose id is not classified raises ``KeyError``: every new row must say
+    whether it compares with a measurement, a reference, a simulation or a printed value.
+    """
+    for prefix, kind in _KIND_BY_ID:
+        if row.id == prefix or (prefix.endswith("-") and row.id.startswith(prefix)):
+            return kind
+    raise KeyError(f"compare row {row.id!r} has no kind; add it to compare._KIND_BY_ID "
+                   f"as one of {', '.join(ROW_KINDS)}")

@@ -54,7 +54,8 @@ def figure_png(fig):
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     buffer = io.BytesIO()
-    FigureCanvasAgg(fig).print_png(buffer, dpi=FIGURE_DPI, metadata={"Software": None})
+    FigureCanvasAgg(fig)        # attaches an Agg canvas to the figure, replacing the backend's
+    fig.savefig(buffer, format="png", dpi=FIGURE_DPI, metadata={"Software": None})
     width_px = round(fig.get_figwidth() * CSS_PIXELS_PER_INCH)
     return buffer.getvalue(), width_px
 
@@ -213,12 +214,12 @@ def table(frame, caption, *, label=None, wide_columns=()):
                 f"<thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table></div>")
 
 
-def compare_table(rows, caption="Model beside measurement", *, label=None):
+def compare_table(rows, caption="Model beside measurement", *, label=None, against="measured"):
     """A captioned table of :class:`magbench.compare.CompareRow` objects.
 
-    Columns: quantity, measured (with its uncertainty), model, difference, verdict; the
-    row's source and tolerance go into the quantity cell so the verdict column fits a
-    1024 px page.
+    Columns: quantity (with the row's source), the value compared with (headed
+    ``against``: "measured", "IGRF-14", "printed", … with its uncertainty), model,
+    difference, tolerance, verdict.
     """
     import pandas as pd
 
@@ -227,8 +228,8 @@ def compare_table(rows, caption="Model beside measurement", *, label=None):
 
     frame = pd.DataFrame([{
         "quantity": f"{r.quantity} ({r.source})",
-        "measured": value(r.measured, r.unit) + (f" ± {format_number(r.uncertainty, 2)}"
-                                                  if r.uncertainty else ""),
+        against: value(r.measured, r.unit) + (f" ± {format_number(r.uncertainty, 2)}"
+                                               if r.uncertainty else ""),
         "model": value(r.model, r.unit),
         "difference": ("+" if r.difference > 0 else "") + value(r.difference, r.unit, 3),
         "tolerance": value(r.tolerance, r.unit, 2),
