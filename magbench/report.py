@@ -6,12 +6,12 @@ This module sits on top of the library (it imports figures, compare and errata) 
 is the only place that knows about myst-nb's ``glue``.
 """
 
-import html
 import math
+import re
 from pathlib import Path
 
 __all__ = ["provenance", "figure", "figure_png", "glue_number", "glue_text", "glue_quantity",
-           "format_number", "format_quantity", "format_percent", "display_unit", "printed_text",
+           "format_number", "format_quantity", "format_percent", "display_unit", "printed_text", "printed_quantity",
            "table", "compare_table", "checks_table", "benchmark_result",
            "FIGURE_DPI", "CSS_PIXELS_PER_INCH"]
 
@@ -136,7 +136,7 @@ def format_number(value, digits=3, *, small=1e-3, large=1e5):
 
 
 _UNITS = {"uT": "µT", "ohm": "Ω", "Ohm": "Ω", "A m^2": "A·m²", "m^2": "m²", "kg m^2": "kg·m²",
-          "N m/kg": "N·m/kg", "N m": "N·m", "deg": "°", "1e22 A m^2": "10²² A·m²", "1": "",
+          "N m/kg": "N·m/kg", "N m": "N·m", "deg": "°", "1": "",
           "kg/m^3": "kg/m³", "A/m^2": "A/m²", "m/s^2": "m/s²"}
 
 
@@ -145,10 +145,26 @@ def display_unit(unit):
     return _UNITS.get(unit, unit)
 
 
-def format_quantity(value, unit="", digits=3):
-    """``format_number(value) unit`` with the unit as a reader writes it (no space before °)."""
+def format_quantity(value, unit="", digits=3, *, uncertainty=None):
+    """``format_number(value) unit`` with the unit as a reader writes it (no space before °).
+
+    A unit with a power-of-ten factor (``1e22 A m^2``) is folded into the number
+    (8.03·10²² A·m²); an uncertainty is written before the unit (12.5 ± 1.0 Ω).
+
+    >>> format_quantity(8.028, "1e22 A m^2", 4)
+    '8.028·10²² A·m²'
+    >>> format_quantity(12.5, "ohm", 3, uncertainty=1.0)
+    '12.5 ± 1.0 Ω'
+    """
+    factor = re.match(r"^1e([+-]?\d+)\s+(.*)$", unit)
+    if factor:
+        scale = 10.0 ** int(factor.group(1))
+        value, unit = value * scale, factor.group(2)
+        uncertainty = None if uncertainty is None else uncertainty * scale
     unit = display_unit(unit)
     number = format_number(value, digits)
+    if uncertainty is not None:
+        number = f"{number} ± {format_number(uncertainty, 2)}"
     if not unit:
         return number
     return f"{number}{unit}" if unit in ("°", "%") else f"{number} {unit}"
@@ -191,27 +207,44 @@ def printed_text(value, tolerance):
     return format_number(value, 4)
 
 
-def table(frame, caption, *, label=None, wide_columns=()):
-    """A captioned HTML table for a remove-input cell (rendered as a real table).
+def _cell(value):
+    """One list-table cell: single-line MyST text that cannot start a list by accident."""
+    text = " ".join(str(value).split()) or "–"
+    return re.sub(r"^(\d+)([.)]) ", r"\1\\\2 ", re.sub(r"^([-+*]) ", r"\\\1 ", text))
 
-    ``frame`` is a pandas DataFrame whose cells are already formatted text; its index
-    is not shown (make the key a column). ``label`` becomes the table's HTML id, so
-    prose can link to it; ``wide_columns`` name columns allowed to wrap (prose-like).
+
+def printed_quantity(value, tolerance, unit=""):
+    """:func:`printed_text` with its unit as a reader writes it (``−71.6°``, ``0.130 Oe``)."""
+    unit = display_unit(unit)
+    text = printed_text(value, tolerance)
+    if not unit:
+        return text
+    return f"{text}{unit}" if unit in ("°", "%") else f"{text} {unit}"
+
+
+def table(frame, caption, *, label=None, wide_columns=(), widths=None):
+    """A captioned, numbered table for a remove-input cell, as a MyST ``list-table``.
+
+    ``frame`` is a pandas DataFrame whose cells are already formatted text (MyST
+    markup such as ``{ref}`` links and ``$math$`` is allowed); its index is not shown
+    (make the key a column). ``label`` makes the table a target for ``{numref}``;
+    ``wide_columns`` are given more room than the others unless ``widths`` (relative
+    column widths) is given. The book renders Markdown outputs as MyST
+    (``nb_render_markdown_format: myst``), so this becomes a real table.
     """
-    from IPython.display import HTML
+    from IPython.display import Markdown
 
-    label_attr = f' id="{html.escape(label)}"' if label else ""
-    head = "".join(f"<th>{html.escape(str(c))}</th>" for c in frame.columns)
-    rows = []
-    for values in frame.itertuples(index=False):
-        cells = []
-        for column, value in zip(frame.columns, values):
-            cls = ' class="wrap"' if column in wide_columns else ""
-            cells.append(f"<td{cls}>{html.escape(str(value))}</td>")
-        rows.append("<tr>" + "".join(cells) + "</tr>")
-    return HTML(f'<div class="magbench-table"><table{label_attr}>'
-                f"<caption>{html.escape(caption)}</caption>"
-                f"<thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table></div>")
+    columns = list(frame.columns)
+    if widths is None:
+        widths = [3 if c in wide_columns else 2 for c in columns]
+    lines = [f":::{{list-table}} {_cell(caption)}", ":header-rows: 1", ":class: magbench-table",
+             f":widths: {' '.join(str(int(w)) for w in widths)}"]
+    if label:
+        lines.append(f":name: {label}")
+    lines.append("")
+    for record in [columns] + [list(r) for r in frame.itertuples(index=False)]:
+        lines.append("* - " + "\n  - ".join(_cell(v) for v in record))
+    return Markdown("\n".join(lines) + "\n:::\n")
 
 
 def compare_table(rows, caption="Model beside measurement", *, label=None, against="measured"):
@@ -228,8 +261,7 @@ def compare_table(rows, caption="Model beside measurement", *, label=None, again
 
     frame = pd.DataFrame([{
         "quantity": f"{r.quantity} ({r.source})",
-        against: value(r.measured, r.unit) + (f" ± {format_number(r.uncertainty, 2)}"
-                                               if r.uncertainty else ""),
+        against: format_quantity(r.measured, r.unit, 4, uncertainty=r.uncertainty or None),
         "model": value(r.model, r.unit),
         "difference": ("+" if r.difference > 0 else "") + value(r.difference, r.unit, 3),
         "tolerance": value(r.tolerance, r.unit, 2),
@@ -246,7 +278,7 @@ def checks_table(checks, caption="Printed values beside the computation", *, lab
 
     frame = pd.DataFrame([{
         "quantity": c.quantity, "where": c.location,
-        "printed": f"{printed_text(c.printed, c.tolerance)} {display_unit(c.unit)}".strip(),
+        "printed": printed_quantity(c.printed, c.tolerance, c.unit),
         "computed": format_quantity(c.computed, c.unit, 4),
         "verdict": "reproduces" if c.agrees else "does not reproduce"} for c in checks])
     return table(frame, caption, label=label, wide_columns=("quantity", "where"))
