@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 __all__ = [
     "FigureParameter", "Series", "FigureData", "FigureSpec", "REGISTRY", "register",
     "figure_ids", "get_spec", "resolve_parameters", "compute", "render",
-    "caption_provenance", "parse_assignment",
+    "caption_provenance", "parse_assignment", "BOOK_STYLE", "MAX_FIGURE_WIDTH",
 ]
 
 
@@ -163,11 +163,26 @@ def caption_provenance(figure_id, parameters=None):
     return f"[{figure_id}] made by {spec.function_name}; {diff}."
 
 
+#: Drawing style of every figure: sized for the book's content column (at most 7 in,
+#: shown 700 CSS px wide), text of at least 7 pt (≥ 9.7 px on screen), constrained layout
+#: so titles and labels are never clipped or overlapped.
+BOOK_STYLE = {
+    "figure.constrained_layout.use": True, "font.size": 8.0, "axes.titlesize": 8.5,
+    "axes.labelsize": 8.0, "xtick.labelsize": 7.5, "ytick.labelsize": 7.5, "legend.fontsize": 7.5,
+    "figure.titlesize": 9.0, "savefig.bbox": None,
+}
+#: Widest figure the book shows without shrinking it [in].
+MAX_FIGURE_WIDTH = 7.0
+
+
 def render(figure_id, **overrides):
     """Compute and draw a figure; returns ``(matplotlib Figure, FigureData)``."""
+    import matplotlib
+
     spec = get_spec(figure_id)
     data = compute(figure_id, **overrides)
-    fig = spec.plot(data)
+    with matplotlib.rc_context(BOOK_STYLE):
+        fig = spec.plot(data)
     return fig, data
 
 

@@ -15,7 +15,7 @@ from ..data import load_parameter_set, measurement
 from ..params import chapter_parameters
 from . import FigureData, FigureParameter, FigureSpec, Series, register
 
-SOURCE = "Bui (2016), thesis §4.4 (Figs. 19–20, seed lines 612–623); model: magbench.bench"
+SOURCE = "Bui (2016), thesis §4.4, Figs. 19–20; model: magbench.bench"
 DEG = np.pi / 180.0
 
 #: Chapter-4 inputs the bench figures take as parameters (all of the bench's).
@@ -104,7 +104,7 @@ def plot_trace(data):
     target, tol = np.degrees(e["psi_des"]), np.degrees(e["measured_error"])
     nominal, envelope = data.series[0], data.series[1]
     c = {k: v for k, (u, v) in nominal.columns.items()}
-    fig, (a1, a2) = plt.subplots(2, 1, figsize=(8.0, 6.0), sharex=True,
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(7.0, 6.0), sharex=True, layout="constrained",
                                  gridspec_kw={"height_ratios": [2.2, 1.0]})
     env = {k: v for k, (u, v) in envelope.columns.items()}
     a1.fill_between(env["time"], env["psi_low"], env["psi_high"], color="C0", alpha=0.2,
@@ -121,16 +121,19 @@ def plot_trace(data):
     if not e["n_logs"]:
         a1.text(0.99, 0.03, "no bench log in data/bench/: the thesis's traces are unpublished",
                 transform=a1.transAxes, ha="right", va="bottom", fontsize=8, color="0.3")
-    a1.set_ylabel("ψ, angle from field to coil 1 [deg]")
-    a1.legend(fontsize=7, loc="center right")
-    a1.set_title(f"Predicted bench run, ψ_des = {target:.0f}° (thesis Fig. "
-                 f"{19 if abs(target - 60.0) < 1e-6 else 20 if abs(target - 120.0) < 1e-6 else '19-20'})")
+    a1.set_ylabel("ψ, angle from field to coil 1 [°]", fontsize=8)
+    # Above the axes: inside, the legend covered the Monte Carlo band.
+    a1.legend(fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=2, frameon=False)
+    fig.suptitle(f"Predicted bench run, ψ_des = {target:.0f}° (thesis Fig. "
+                 f"{19 if abs(target - 60.0) < 1e-6 else 20 if abs(target - 120.0) < 1e-6 else '19-20'})",
+                 fontsize=8.5)
     a2.plot(c["time"], c["moment_1"], label="coil 1")
     a2.plot(c["time"], c["moment_2"], label="coil 2")
-    a2.set_xlabel("time since release [s]")
-    a2.set_ylabel("moment [A·m²]")
-    a2.legend(fontsize=7)
-    fig.tight_layout()
+    a2.set_xlabel("time since release [s]", fontsize=8)
+    a2.set_ylabel("moment [A·m²]", fontsize=8)
+    a2.legend(fontsize=7, ncol=2, loc="lower right")
+    for ax in (a1, a2):
+        ax.tick_params(labelsize=7)
     return fig
 
 
@@ -163,7 +166,7 @@ def plot_montecarlo(data):
     values = [s.columns["error_band"][1] for s in data.series]
     low = min(float(np.min(v)) for v in values)
     edges = np.logspace(np.floor(np.log10(max(low, 1e-6))), np.log10(3.0 * measured), 60)
-    fig, ax = plt.subplots(figsize=(8.0, 4.0))
+    fig, ax = plt.subplots(figsize=(7.0, 4.2))
     for s, v in zip(data.series, values):
         ax.hist(v, bins=edges, histtype="step", linewidth=1.4,
                 label=f"{s.label}: median {np.median(v):.3g}°, 99 % ≤ {np.percentile(v, 99):.3g}°")
@@ -173,7 +176,6 @@ def plot_montecarlo(data):
     ax.set_ylabel("members")
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(0.42, 0.98))
     ax.set_title(f"Monte Carlo of the bench: {len(values[0])} members per target")
-    fig.tight_layout()
     return fig
 
 

@@ -91,7 +91,7 @@ def compute_filter_alpha(sample_interval, gyro_bias, alpha_low, alpha_high, dura
     window = (t >= 20.0) & (t < 30.0)
     for a in (alpha_low, alpha_high):
         est = estimation.complementary_filter(gyro, acc_angle, sample_interval, a)
-        series.append(Series(f"A = {a:g}", {"time": ("s", t[window]), "estimate": ("rad", est[window])}))
+        series.append(Series(f"A_f = {a:g}", {"time": ("s", t[window]), "estimate": ("rad", est[window])}))
     series.append(Series("truth and accelerometer", {
         "time": ("s", t[window]), "angle": ("rad", angle[window]), "accel_angle": ("rad", acc_angle[window])}))
     return FigureData("ch04-filter-alpha", "", "", {}, series,
@@ -102,7 +102,7 @@ def plot_filter_alpha(data):
     """Left: traces for the thesis's two A; right: RMS error against A with the closed form."""
     import matplotlib.pyplot as plt
 
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10.0, 4.0))
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(7.0, 4.7))
     truth = data.series[-1].columns
     ax1.plot(truth["time"][1], np.degrees(truth["accel_angle"][1]), color="0.75", lw=0.6,
              label="accelerometer angle")
@@ -122,15 +122,14 @@ def plot_filter_alpha(data):
     ax2.semilogy(alpha, np.degrees(c["gyro_noise_term"][1]), "C2:", label="gyro noise")
     lo, hi = data.extra["alpha_range"]
     ax2.axvspan(lo, hi, color="0.9", label="thesis's range")
-    ax2.set_xlabel("filter coefficient A [-]")
+    ax2.set_xlabel("filter coefficient A_f [-]")
     ax2.set_ylabel("error [°]")
     ax2.legend(fontsize=7, loc="lower left")
     top = ax2.secondary_xaxis("top", functions=(
         lambda a: a * data.parameters["sample_interval"] / np.clip(1 - a, 1e-9, None),
         lambda tau: tau / (tau + data.parameters["sample_interval"])))
-    top.set_xlabel("time constant τ = AΔt/(1−A) [s]")
+    top.set_xlabel("time constant τ_f = A_f Δt/(1 − A_f) [s]")
     top.set_xticks([0.05, 0.1, 0.2, 0.5, 1])
-    fig.tight_layout()
     return fig
 
 
@@ -208,10 +207,10 @@ def plot_heading_fusion(data):
 
     c = data.series[0].columns
     t = c["time"][1]
-    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(9.0, 5.6), sharex=True)
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7.0, 6.2), sharex=True)
     ax1.plot(t, np.degrees(c["magnetometer_heading"][1]), color="0.8", lw=0.5, label="magnetometer heading")
     ax1.plot(t, np.degrees(c["true"][1]), "k", lw=1.2, label="true ψ")
-    labels = {"gyro_only": ("gyro integral (A = 1)", "C3"),
+    labels = {"gyro_only": ("gyro integral (A_f = 1)", "C3"),
               "accel_reference": ("eq. (39) with an accelerometer angle", "C1"),
               "magnetometer_reference": ("eq. (39) with the magnetometer heading", "C0")}
     for key, (label, color) in labels.items():
@@ -222,7 +221,6 @@ def plot_heading_fusion(data):
     ax2.set_xlabel("time [s]")
     ax2.set_ylabel("error [°]")
     ax2.set_yscale("symlog", linthresh=1.0)
-    fig.tight_layout()
     return fig
 
 
@@ -260,7 +258,7 @@ def _missing(figure_id):
 def _plot_missing(data):
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(8.0, 2.0))
+    fig, ax = plt.subplots(figsize=(7.0, 2.1))
     ax.axis("off")
     ax.text(0.5, 0.5, data.extra["missing"], ha="center", va="center", wrap=True, fontsize=9)
     return fig
@@ -305,7 +303,7 @@ def plot_broad_tilt(data):
 
     if "missing" in data.extra:
         return _plot_missing(data)
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10.5, 4.0), gridspec_kw={"width_ratios": [1.6, 1]})
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(7.0, 4.8), gridspec_kw={"width_ratios": [1.6, 1]})
     c = data.series[0].columns
     t = c["time"][1]
     colors = {"accelerometer only": "C1", "gyro only": "C3", "complementary_tilt": "C0"}
@@ -331,7 +329,6 @@ def plot_broad_tilt(data):
     ax2.set_xlabel("BROAD trial")
     ax2.set_ylabel("inclination RMSE, movement phases [°]")
     ax2.legend(fontsize=7)
-    fig.tight_layout()
     return fig
 
 
@@ -361,16 +358,23 @@ def plot_tau_sensitivity(data):
 
     if "missing" in data.extra:
         return _plot_missing(data)
+    from matplotlib.lines import Line2D
+
     fig, ax = plt.subplots(figsize=(7.0, 4.0))
+    colors = plt.get_cmap("tab20")
     for k, s in enumerate(data.series):
         c = s.columns
-        ax.loglog(c["tau"][1], np.degrees(c["order_2"][1]), "o-", color=f"C{k}", ms=3, label=f"{s.label} (order 2)")
-        ax.loglog(c["tau"][1], np.degrees(c["order_1"][1]), "--", color=f"C{k}", lw=1, label=f"{s.label} (order 1)")
-    ax.axvline(data.extra["default_tau"], color="0.5", lw=1, ls=":", label="default τ")
+        color = colors(k % 20)
+        ax.loglog(c["tau"][1], np.degrees(c["order_2"][1]), "o-", color=color, ms=2.5, lw=1)
+        ax.loglog(c["tau"][1], np.degrees(c["order_1"][1]), "--", color=color, lw=0.8)
+    ax.axvline(data.extra["default_tau"], color="0.3", lw=1, ls=":")
     ax.set_xlabel("accelerometer time constant τ [s]")
     ax.set_ylabel("inclination RMSE [°]")
-    ax.legend(fontsize=6)
-    fig.tight_layout()
+    ax.set_title(f"one colour per BROAD trial ({len(data.series)} trials)", fontsize=8)
+    # One legend entry per line style: thirty per-trial entries covered the plot.
+    ax.legend([Line2D([], [], color="k", marker="o", ms=2.5, lw=1), Line2D([], [], color="k", ls="--", lw=0.8),
+               Line2D([], [], color="0.3", ls=":", lw=1)],
+              ["second-order low-pass", "first-order low-pass", "default τ"], fontsize=7, loc="upper right")
     return fig
 
 

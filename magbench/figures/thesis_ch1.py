@@ -4,6 +4,7 @@ import numpy as np
 
 from .. import geomag, igrf
 from ..constants import EARTH_GM, EARTH_ROTATION_RATE
+from .._format import format_number
 from ..params import chapter_parameters
 from . import FigureData, FigureParameter, FigureSpec, Series, register
 
@@ -65,7 +66,7 @@ def plot_fig01(data):
     """Draw the field vector and its elements in the local north-east-down frame."""
     import matplotlib.pyplot as plt
 
-    fig = plt.figure(figsize=(9.0, 4.6))
+    fig = plt.figure(figsize=(7.0, 4.0), layout="constrained")
     for k, s in enumerate(data.series):
         ax = fig.add_subplot(1, 2, k + 1, projection="3d")
         c = {name: vals[0] for name, (unit, vals) in s.columns.items()}
@@ -74,23 +75,21 @@ def plot_fig01(data):
         lim = c["T"] * 1.05
         ax.quiver(0, 0, 0, x, y, z, color="C3", linewidth=2, arrow_length_ratio=0.08)
         ax.quiver(0, 0, 0, x, y, 0, color="C0", arrow_length_ratio=0.1)
-        for vec, col in (((x, 0, 0), "0.3"), ((0, y, 0), "0.3"), ((0, 0, z), "0.3")):
-            ax.quiver(0, 0, 0, *vec, color=col, linewidth=1, arrow_length_ratio=0.1)
+        for vec in ((x, 0, 0), (0, y, 0), (0, 0, z)):
+            ax.quiver(0, 0, 0, *vec, color="0.3", linewidth=1, arrow_length_ratio=0.1)
         ax.plot([x, x], [y, y], [0, z], "k:", linewidth=0.8)
-        ax.text(x, y, z, f" T = {c['T']:.1f} µT", color="C3")
-        ax.text(x, y, 0, f" H = {c['H']:.1f} µT", color="C0")
-        ax.text(x, 0, 0, " X (north)")
-        ax.text(0, y, 0, " Y (east)")
-        ax.text(0, 0, z, " Z (down)")
         ax.set_xlim(-lim, lim)
         ax.set_ylim(-lim, lim)
         ax.set_zlim(-lim, lim)
-        ax.set_xlabel("north [µT]")
-        ax.set_ylabel("east [µT]")
-        ax.set_zlabel("up [µT]")
-        ax.set_title(f"{s.label}\nD = {c['D']:.1f}°, J = {c['J']:.1f}°", fontsize=10)
-    fig.suptitle("Elements of the Earth's field at the laboratory (thesis Fig. 1)")
-    fig.tight_layout()
+        ax.set_xlabel("X north [µT]", fontsize=7.5, labelpad=-2)
+        ax.set_ylabel("Y east [µT]", fontsize=7.5, labelpad=-2)
+        ax.set_zlabel("−Z up [µT]", fontsize=7.5, labelpad=-2)
+        ax.tick_params(labelsize=7, pad=0)
+        ax.set_title(f"{s.label}: T = {c['T']:.1f} µT, H = {c['H']:.1f} µT\n"
+                     f"D = {c['D']:.1f}°, I = {c['J']:.1f}°", fontsize=8)
+        ax.set_box_aspect(None, zoom=0.85)
+    fig.suptitle("Elements of the Earth's field at the laboratory (thesis Fig. 1);\n"
+                 "red: total field T, blue: horizontal component H, grey: X, Y, Z", fontsize=8.5)
     return fig
 
 
@@ -160,7 +159,6 @@ def plot_fig02(data):
     ax.set_ylabel("along the rotation axis [Earth radii]")
     ax.legend(loc="lower left", fontsize=8)
     ax.set_title("Field lines of the tilted centred dipole (thesis Fig. 2)")
-    fig.tight_layout()
     return fig
 
 
@@ -195,7 +193,7 @@ def plot_elements(data):
     import matplotlib.pyplot as plt
 
     c = {k: v for k, (u, v) in data.series[0].columns.items()}
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(9.0, 3.8))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.0, 4.2))
     for key, style in (("T", "-"), ("Z", "--"), ("H", ":")):
         a1.plot(c["geomagnetic_latitude"], c[key], style, label=key)
     a1.set_xlabel("geomagnetic latitude Φ [deg]")
@@ -207,7 +205,6 @@ def plot_elements(data):
     a2.set_xlabel("geomagnetic latitude Φ [deg]")
     a2.set_ylabel("inclination J [deg]")
     a2.legend(fontsize=8)
-    fig.tight_layout()
     return fig
 
 
@@ -248,7 +245,7 @@ def plot_orbit_field(data):
     """Components in orbital axes against time, one panel per field model."""
     import matplotlib.pyplot as plt
 
-    fig, axes = plt.subplots(1, len(data.series), figsize=(9.5, 3.6), sharey=True)
+    fig, axes = plt.subplots(1, len(data.series), figsize=(7.0, 3.6), sharey=True, layout="constrained")
     for ax, s in zip(np.atleast_1d(axes), data.series):
         c = {k: v for k, (u, v) in s.columns.items()}
         for key, style in (("B_x", "-"), ("B_y", "--"), ("B_z", "-."), ("|B|", "k-")):
@@ -257,8 +254,9 @@ def plot_orbit_field(data):
         ax.set_xlabel("time [min]")
         ax.axhline(0, color="0.8", linewidth=0.6)
     np.atleast_1d(axes)[0].set_ylabel("B in orbital axes [µT]")
-    np.atleast_1d(axes)[0].legend(fontsize=8, ncol=2)
-    fig.tight_layout()
+    # Below the panels: inside, the legend covered the curves.
+    fig.legend(*np.atleast_1d(axes)[0].get_legend_handles_labels(), loc="outside lower center", ncol=4,
+               fontsize=7.5, frameon=False)
     return fig
 
 
@@ -302,7 +300,7 @@ def plot_torque_plane(data):
 
     c = {k: v for k, (u, v) in data.series[0].columns.items()}
     b = data.extra["b"]
-    fig = plt.figure(figsize=(9.0, 4.2))
+    fig = plt.figure(figsize=(7.0, 3.6))
     ax = fig.add_subplot(1, 2, 1, projection="3d")
     ax.scatter(c["M_x"], c["M_y"], c["M_z"], s=2, alpha=0.4)
     ax.quiver(0, 0, 0, *b, color="C3", linewidth=2)
@@ -310,13 +308,14 @@ def plot_torque_plane(data):
     ax.set_xlabel("M_x [N m]")
     ax.set_ylabel("M_y [N m]")
     ax.set_zlabel("M_z [N m]")
-    ax.set_title("M = L × B for |L| = 1 A·m², |B| = 1 T", fontsize=10)
+    ax.set_title("M = L × B for |L| = 1 A·m², |B| = 1 T", fontsize=8.5)
     a2 = fig.add_subplot(1, 2, 2)
     a2.plot(c["L_perp"], c["M_norm"], ".", markersize=2)
     a2.set_xlabel("|L⊥| [A·m²]")
     a2.set_ylabel("|M| [N·m]")
-    a2.set_title(f"largest |M·b| = {np.max(np.abs(c['M_dot_b'])):.1e} N·m", fontsize=10)
-    fig.tight_layout()
+    a2.yaxis.set_label_position("right")     # clear of the 3-D panel's axis labels
+    a2.yaxis.tick_right()
+    a2.set_title(f"largest |M·b| = {format_number(np.max(np.abs(c['M_dot_b'])), 2)} N·m", fontsize=8.5)
     return fig
 
 

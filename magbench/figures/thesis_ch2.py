@@ -92,29 +92,34 @@ def compute_fig05(turns, current, coil_radius, design_spacing_ratio, comsol_spac
 
 
 def plot_fig05(data):
-    """Field lines (streamlines of H) coloured by |H|, one panel per geometry."""
+    """Field lines (streamlines of H) coloured by |H| relative to the centre, one panel per geometry."""
     import matplotlib.pyplot as plt
+    from matplotlib.cm import ScalarMappable
     from matplotlib.colors import Normalize
 
     shape, a = data.extra["shape"], data.extra["radius"]
-    fig, axes = plt.subplots(1, len(data.series), figsize=(13.0, 4.6), sharey=True)
+    norm = Normalize(0.0, 1.6)
+    fig, axes = plt.subplots(1, len(data.series), figsize=(7.0, 3.3), sharey=True, layout="constrained")
     for ax, s in zip(axes, data.series):
         c = {k: np.reshape(v, shape) if np.size(v) > 1 else float(np.ravel(v)[0])
              for k, (u, v) in s.columns.items()}
         h0 = c["H_centre"]
-        ax.streamplot(c["x"][0], c["z"][:, 0], c["H_x"], c["H_z"], color=c["|H|"], cmap="viridis",
-                      norm=Normalize(0, 1.6 * h0), density=1.3, linewidth=0.8, arrowsize=0.7)
+        ax.streamplot(c["x"][0], c["z"][:, 0], c["H_x"], c["H_z"], color=c["|H|"] / h0, cmap="viridis",
+                      norm=norm, density=1.1, linewidth=0.7, arrowsize=0.6)
         dev = np.abs(c["|H|"] / h0 - 1)
         ax.contour(c["x"], c["z"], dev, levels=[data.extra["tolerance"]], colors="C3", linewidths=1.2)
         d = c["separation"]
-        ax.plot([-a, a, -a, a], [-d / 2, -d / 2, d / 2, d / 2], "ko", markersize=6)
-        ax.set_title(f"{s.label}\nH(centre) = {h0:.0f} A/m", fontsize=9)
+        ax.plot([-a, a, -a, a], [-d / 2, -d / 2, d / 2, d / 2], "ko", markersize=5)
+        ax.set_title(f"{s.label.replace(' (', chr(10) + '(')}\nH(center) = {h0:.0f} A/m", fontsize=7.5)
         ax.set_aspect("equal")
-        ax.set_xlabel("x (across the axis) [m]")
-    axes[0].set_ylabel("z (coil axis) [m]")
+        ax.set_xlabel("x (across the axis) [m]", fontsize=8)
+        ax.tick_params(labelsize=7)
+    axes[0].set_ylabel("z (coil axis) [m]", fontsize=8)
+    bar = fig.colorbar(ScalarMappable(norm=norm, cmap="viridis"), ax=axes, shrink=0.8, pad=0.02)
+    bar.set_label("|H| / H(center)", fontsize=8)
+    bar.ax.tick_params(labelsize=7)
     fig.suptitle(f"Field lines of the coil pair (thesis Fig. 5); red: |H| within "
-                 f"{100 * data.extra['tolerance']:.3g} % of the centre value", fontsize=10)
-    fig.tight_layout()
+                 f"{100 * data.extra['tolerance']:.3g} % of the center value", fontsize=8.5)
     return fig
 
 
@@ -160,7 +165,7 @@ def plot_line(data):
     import matplotlib.pyplot as plt
 
     e = data.extra
-    fig, ax = plt.subplots(figsize=(7.8, 4.6))
+    fig, ax = plt.subplots(figsize=(7.0, 3.8))
     for k, s in enumerate(data.series):
         c = {name: np.asarray(v) for name, (u, v) in s.columns.items()}
         ax.plot(c["position"] * 100, c["|H|"], color=f"C{k}", label=s.label)
@@ -186,7 +191,6 @@ def plot_line(data):
     fig_no = 7 if e["direction"] == "axial" else 6
     ax.set_title(f"|H| {where} (thesis Fig. {fig_no}); thick bars: zones within "
                  f"{100 * e['tolerance']:.3g} %", fontsize=9)
-    fig.tight_layout()
     return fig
 
 
@@ -223,7 +227,7 @@ def plot_zone_criterion(data):
     """Zone length against δ (log), both lines, with the thesis's readings."""
     import matplotlib.pyplot as plt
 
-    fig, axes = plt.subplots(1, 2, figsize=(10.0, 4.0), sharey=True)
+    fig, axes = plt.subplots(1, 2, figsize=(7.0, 3.6), sharey=True)
     for ax, direction in zip(axes, ("transverse", "axial")):
         reading = data.extra["readings"][direction]
         for k, s in enumerate(data.series):
@@ -236,11 +240,10 @@ def plot_zone_criterion(data):
                    label=f"thesis reading ≈ {reading * 100:.0f} cm")
         ax.set_xlabel("tolerance band δ [%]")
         ax.set_title("line across the axis (Fig. 6)" if direction == "transverse" else "coil axis (Fig. 7)",
-                     fontsize=10)
+                     fontsize=8.5)
         ax.grid(True, which="both", linewidth=0.3)
     axes[0].set_ylabel("length of the uniform zone [cm]")
     axes[0].legend(fontsize=7)
-    fig.tight_layout()
     return fig
 
 
@@ -297,7 +300,6 @@ def plot_fig08(data):
     ax.set_title(f"The built simulator (thesis Fig. 8): a = {a * 100:.0f} cm, d = {e['separation'] * 100:.0f} cm;\n"
                  f"blue: |H| within {100 * e['tolerance']:.3g} % (radius {r_u * 100:.1f} cm); "
                  f"black: the {e['cube_side'] * 100:.0f} cm mock-up", fontsize=9)
-    fig.tight_layout()
     return fig
 
 
@@ -378,37 +380,41 @@ def plot_fig03(data):
     import matplotlib.pyplot as plt
 
     n = len(data.series)
-    fig, axes = plt.subplots(2, 4, figsize=(13.0, 6.6))
-    flat = axes.ravel()
+    columns = 4
+    rows = -(-n // columns)
+    fig = plt.figure(figsize=(7.0, 1.75 * rows + 2.6), layout="constrained")
+    grid = fig.add_gridspec(rows + 1, columns, height_ratios=[1.0] * rows + [1.15])
     lim = max(float(np.max(np.asarray(s.columns["size"][1]))) for s in data.series) * 1.1
-    for ax, s in zip(flat, data.series):
-        c = {k: np.asarray(v) for k, (u, v) in s.columns.items()}
+    for k, s in enumerate(data.series):
+        ax = fig.add_subplot(grid[k // columns, k % columns])
+        c = {key: np.asarray(v) for key, (u, v) in s.columns.items()}
         for sq, size, z in zip(c["shape_is_square"], c["size"], c["position"]):
             r = size / 2 if sq else size
             ax.plot([-r, r], [z, z], "-", color="0.75", linewidth=1)
-            ax.plot([-r, r], [z, z], "s" if sq else "o", color="C1", markersize=5)
+            ax.plot([-r, r], [z, z], "s" if sq else "o", color="C1", markersize=4)
         ru = float(c["uniform_radius"][0])
         ax.add_patch(plt.Circle((0, 0), ru, color="C0", alpha=0.3))
         ax.set_xlim(-lim, lim)
         ax.set_ylim(-lim, lim)
         ax.set_aspect("equal")
-        ax.set_title(f"{s.label}\nuniform radius {ru * 100:.1f} cm", fontsize=8)
+        ax.set_title(s.label.replace(" (Kovalenko)", "\n(Kovalenko)").replace(", ", ",\n", 1)
+                     if len(s.label) > 18 else s.label, fontsize=7.5)
         ax.tick_params(labelsize=7)
-    bar = flat[n]
+    bar = fig.add_subplot(grid[rows, :])
     names = [s.label for s in data.series]
     radii = [float(np.asarray(s.columns["uniform_radius"][1])[0]) * 100 for s in data.series]
     bar.barh(range(n), radii, color="C0")
+    for k, radius in enumerate(radii):
+        bar.text(radius, k, f" {radius:.1f}", va="center", fontsize=7)
     bar.set_yticks(range(n))
-    bar.set_yticklabels(names, fontsize=7)
+    bar.set_yticklabels(names, fontsize=7.5)
     bar.invert_yaxis()
-    bar.set_xlabel("uniform-sphere radius [cm]", fontsize=8)
-    for extra_ax in flat[n + 1:]:
-        extra_ax.axis("off")
+    bar.set_xlim(0, max(radii) * 1.15)
+    bar.set_xlabel("radius of the sphere where |H| stays within the tolerance [cm]", fontsize=8)
     e = data.extra
-    fig.suptitle(f"Candidate coil systems (thesis Fig. 3, Kovalenko Fig. 3.5) at equal power "
-                 f"({e['power']:.0f} W) and equal centre field ({e['center_h']:.0f} A/m); blue: |H| "
-                 f"within {100 * e['tolerance']:.3g} %; axes in metres, coil axis vertical", fontsize=9)
-    fig.tight_layout()
+    fig.suptitle(f"Coil systems at equal power ({e['power']:.0f} W) and centre field "
+                 f"({e['center_h']:.0f} A/m); blue: |H| within {100 * e['tolerance']:.3g} %;\n"
+                 "axes in metres, coil axis vertical", fontsize=8.5)
     return fig
 
 
@@ -548,34 +554,38 @@ def plot_hypotheses(data):
 
     e = data.extra
     meas = e["measured"]
-    fig, (a1, a2, a3) = plt.subplots(1, 3, figsize=(13.5, 4.2))
+    fig = plt.figure(figsize=(7.0, 6.4), layout="constrained")
+    grid = fig.add_gridspec(2, 2, height_ratios=[1.0, 0.9])
+    a1, a2, a3 = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1]), fig.add_subplot(grid[1, :])
     c = {k: np.asarray(v) for k, (u, v) in data.series[0].columns.items()}
     a1.plot(c["turns"], c["H_centre"], "C0")
     lo, hi = e["turns_band"]
     a1.axvspan(lo, hi, color="C2", alpha=0.2, label="turns allowed by R = 11–14 Ω")
     a1.axvline(e["turns"], color="0.4", linestyle=":", label=f"{e['turns']:.0f} turns (stated)")
     a1.axhline(meas, color="k", linestyle="--", label=f"measured {meas:.0f} A/m")
-    a1.set_xlabel("effective turns per coil")
-    a1.set_ylabel("H at the centre [A/m]")
-    a1.legend(fontsize=7)
+    a1.set_xlabel("effective turns per coil", fontsize=8)
+    a1.set_ylabel("H at the center [A/m]", fontsize=8)
+    a1.legend(fontsize=7, loc="upper left")
     c = {k: np.asarray(v) for k, (u, v) in data.series[1].columns.items()}
     a2.plot(c["offset"] * 100, c["axial"], label="along the axis")
     a2.plot(c["offset"] * 100, c["transverse"], label="across the axis")
     a2.axhline(meas, color="k", linestyle="--")
     a2.axvline(e["separation"] / 2 * 100, color="C0", linestyle=":", label="coil plane")
     a2.axvline(e["radius"] * 100, color="C1", linestyle=":", label="coil radius")
-    a2.set_xlabel("probe offset from the centre [cm]")
-    a2.set_ylabel("|H| [A/m]")
-    a2.legend(fontsize=7)
+    a2.set_xlabel("probe offset from the center [cm]", fontsize=8)
+    a2.set_ylabel("|H| [A/m]", fontsize=8)
+    a2.legend(fontsize=7, loc="lower left")
     rows = [r for r in e["rows"] if np.isfinite(r["predicted_h"])]
     a3.barh(range(len(rows)), [r["predicted_h"] for r in rows], color="C0")
     a3.set_yticks(range(len(rows)))
     a3.set_yticklabels([r["hypothesis"] for r in rows], fontsize=7)
     a3.invert_yaxis()
     a3.axvline(meas, color="k", linestyle="--")
-    a3.set_xlabel("predicted H at the centre [A/m]")
-    fig.suptitle("What could make the centre field read 262 A/m instead of the model's?", fontsize=10)
-    fig.tight_layout()
+    a3.set_xlabel("predicted H at the center [A/m]; dashed: measured", fontsize=8)
+    for ax in (a1, a2, a3):
+        ax.tick_params(labelsize=7)
+    fig.suptitle(f"What could make the center field read {meas:.0f} A/m instead of the model's?",
+                 fontsize=8.5)
     return fig
 
 
@@ -646,7 +656,7 @@ def plot_three_axis(data):
     """3-D view of the three nested pairs, and the currents each case needs."""
     import matplotlib.pyplot as plt
 
-    fig = plt.figure(figsize=(11.0, 4.8))
+    fig = plt.figure(figsize=(7.0, 3.9))
     ax = fig.add_subplot(1, 2, 1, projection="3d")
     c0 = {k: np.asarray(v) for k, (u, v) in data.series[0].columns.items()}
     t = np.linspace(0, 2 * np.pi, 121)
@@ -666,20 +676,21 @@ def plot_three_axis(data):
     ax.set_ylabel("east [m]")
     ax.set_zlabel("up [m]")
     ax.set_box_aspect((1, 1, 1))
-    ax.set_title("three Helmholtz pairs (d = a); grey: target within "
-                 f"{100 * data.extra['tolerance']:.3g} %", fontsize=9)
+    ax.set_title("three Helmholtz pairs (d = a);\ngrey: target within "
+                 f"{100 * data.extra['tolerance']:.3g} %", fontsize=8)
     a2 = fig.add_subplot(1, 2, 2)
     width = 0.38
     for j, s in enumerate(data.series):
         c = {k: np.asarray(v) for k, (u, v) in s.columns.items()}
         a2.bar(np.arange(3) + (j - 0.5) * width, c["current"], width,
-               label=f"{s.label} (uniform radius {float(c['uniform_radius'][0]) * 100:.1f} cm)")
+               label=f"{s.label}\n(uniform radius {float(c['uniform_radius'][0]) * 100:.1f} cm)")
     a2.set_xticks(range(3))
     a2.set_xticklabels(["north pair", "east pair", "down pair"])
     a2.set_ylabel("current per coil [A]")
+    a2.yaxis.set_label_position("right")     # clear of the 3-D panel's axis labels
+    a2.yaxis.tick_right()
     a2.axhline(0, color="0.5", linewidth=0.6)
     a2.legend(fontsize=7)
-    fig.tight_layout()
     return fig
 
 

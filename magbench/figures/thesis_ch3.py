@@ -114,7 +114,7 @@ def plot_fig09(data):
     ax.set_ylabel("y [m]")
     ax.set_zlabel("z [m]")
     ax.set_title(f"1U mock-up with {n} orthogonal coils (single-layer bands {w * 1e3:.0f} mm wide)",
-                 fontsize=10)
+                 fontsize=8.5)
     return fig
 
 
@@ -169,7 +169,7 @@ def plot_design_space(data):
     e = data.extra
     c = {k: v for k, (unit, v) in data.series[0].columns.items()}
     w = {k: v for k, (unit, v) in data.series[1].columns.items()}
-    fig, (a1, a3) = plt.subplots(1, 2, figsize=(10.5, 4.2))
+    fig, (a1, a3) = plt.subplots(1, 2, figsize=(7.0, 4.3))
     a1.plot(c["turns"], c["power"], "C3", label="power W (eq. 28)")
     a1.axhline(e["max_power"], color="C3", linestyle=":", linewidth=0.8)
     a1.axvspan(e["n_lo"], e["n_hi"], color="C2", alpha=0.12, label="feasible: W and M within limits")
@@ -187,7 +187,7 @@ def plot_design_space(data):
     h1, l1 = a1.get_legend_handles_labels()
     h2, l2 = a2.get_legend_handles_labels()
     a1.legend(h1 + h2, l1 + l2, fontsize=7, loc="upper right")
-    a1.set_title(f"wire of eq. (21), d = {e['d_design'] * 1e3:.3f} mm", fontsize=10)
+    a1.set_title(f"wire of eq. (21), d = {e['d_design'] * 1e3:.3f} mm", fontsize=8.5)
     d = w["wire_diameter"]
     ok = w["moment"] >= e["moment"]
     top = np.minimum(w["n_max_mass"], w["n_max_single_layer"])
@@ -202,12 +202,11 @@ def plot_design_space(data):
         a3.plot([e["best"]["wire_diameter"] * 1e3], [e["best"]["turns"]], "*", color="C1", markersize=12,
                 label=f"least mass: N = {e['best']['turns']}, d = {e['best']['wire_diameter'] * 1e3:.2f} mm")
     a3.set_yscale("log")
-    a3.set_xlabel("bare wire diameter d [mm] (IEC 60317 sizes)")
+    a3.set_xlabel("bare wire diameter d [mm]\n(IEC 60317 sizes)")
     a3.set_ylabel("turns N")
     a3.set_ylim(10, 1e4)
     a3.legend(fontsize=7, loc="upper left")
-    a3.set_title("feasible turns for each standard wire (green)", fontsize=10)
-    fig.tight_layout()
+    a3.set_title("feasible turns for each standard wire\n(green bars)", fontsize=8.5)
     return fig
 
 
@@ -239,14 +238,14 @@ def plot_wm_product(data):
 
     p = {k: v for k, (u, v) in data.series[0].columns.items()}
     s = {k: v for k, (u, v) in data.series[1].columns.items()}
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10.0, 3.9))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.0, 4.6))
     a1.loglog(p["side"], p["copper"], "C1", label="copper (thesis ρ̃ρ)")
     a1.loglog(p["side"], p["aluminium"], "C0", label="aluminium (Kovalenko γρ)")
     a1.axvline(data.extra["side0"], color="0.6", linestyle=":", label="mock-up coil, l = 0.1 m")
     a1.set_xlabel("coil size l [m]")
     a1.set_ylabel("M·W [kg·W]")
     a1.legend(fontsize=8)
-    a1.set_title("M·W = 16 m² γρ / l², any N, U and shape", fontsize=10)
+    a1.set_title("M·W = 16 m² γρ / l², any N, U and shape", fontsize=8.5)
     for shape, style in (("round", "--"), ("square", "-")):
         a2.plot(s["side"], s[f"power_{shape}"], "C3" + style, label=f"power, {shape}")
     a2.set_xlabel("coil size l [m]")
@@ -260,8 +259,7 @@ def plot_wm_product(data):
     h1, l1 = a2.get_legend_handles_labels()
     h2, l2 = a3.get_legend_handles_labels()
     a2.legend(h1 + h2, l1 + l2, fontsize=8)
-    a2.set_title(f"round vs square turn, copper, N = {data.extra['n']:.0f}", fontsize=10)
-    fig.tight_layout()
+    a2.set_title(f"round vs square turn, copper, N = {data.extra['n']:.0f}", fontsize=8.5)
     return fig
 
 
@@ -322,7 +320,7 @@ def plot_actuators(data):
     c = {k: np.asarray(v, float) for k, (u, v) in data.series[0].columns.items()}
     labels = data.extra["labels"]
     y = np.arange(len(labels))
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10.0, 3.2), sharey=True)
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.0, 3.7), sharey=True)
     a1.barh(y, c["mass"] * 1e3, color=["C1", "C2", "C0", "C0"])
     a1.set_yticks(y, labels, fontsize=8)
     a1.set_xlabel("mass [g] (conductor, core or magnet)")
@@ -332,8 +330,7 @@ def plot_actuators(data):
     for k in y:
         a2.text(c["power"][k], k, "  fixed moment, no control" if not c["controllable"][k]
                 else f"  {c['power'][k]:.3g} W", va="center", fontsize=8)
-    fig.suptitle("Actuators for the mock-up's moment", fontsize=10)
-    fig.tight_layout()
+    fig.suptitle("Actuators for the mock-up's moment", fontsize=8.5)
     return fig
 
 

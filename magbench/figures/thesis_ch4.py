@@ -9,6 +9,7 @@ import numpy as np
 
 from .. import attitude, coils, control
 from ..constants import MU_0
+from .._format import format_number
 from ..params import chapter_parameters
 from . import FigureData, FigureParameter, FigureSpec, Series, register
 
@@ -92,12 +93,12 @@ def plot_fig10(data):
     ax.plot(*np.stack([c["A"], c["C"]]).T, "k--", linewidth=1)
     ax.scatter(*c["A"], color="k")
     ax.scatter(*c["C"], color="C1", s=40)
-    ax.text(*c["A"], "  A", fontsize=10)
+    ax.text(*c["A"], "  A", fontsize=8.5)
     ax.text(*c["C"], "  C (0, 0, −d)", fontsize=9, color="C1")
     _frame_axes(ax, L)
     psi, theta, phi = (np.degrees(v) for v in data.extra["angles"])
     ax.set_title(f"Frames (thesis Fig. 10): ψ = {psi:.0f}°, θ = {theta:.0f}°, φ = {phi:.0f}°, d = {d:.2g} m",
-                 fontsize=10)
+                 fontsize=8.5)
     return fig
 
 
@@ -126,7 +127,7 @@ def plot_fig11(data):
     ax.text(*c["C"], "  C")
     _frame_axes(ax, L)
     ax.set_title("Forces and torque on the mock-up (thesis Fig. 11)\nN does no work: A stays in its plane",
-                 fontsize=10)
+                 fontsize=8.5)
     return fig
 
 
@@ -154,7 +155,8 @@ def compute_free_pendulum(inertia, field, moment, initial_angle, initial_angle_a
     plant = attitude.Mockup(inertia, field, moment)
     t = np.linspace(0.0, duration, 3001)
     series = []
-    for label, psi0 in (("ψ0 = π/2 (seed line 516)", initial_angle), ("ψ0 = π/4 (seed line 524)", initial_angle_alt)):
+    for label, psi0 in (("ψ0 = π/2 (as printed, thesis §4.1)", initial_angle),
+                        ("ψ0 = π/4 (as printed, thesis §4.1)", initial_angle_alt)):
         sol = solve_ivp(attitude.pendulum_rhs, (0.0, duration), [psi0, 0.0], args=(plant,), t_eval=t,
                         rtol=1e-10, atol=1e-13)
         energy = attitude.pendulum_energy(sol.y[0], sol.y[1], inertia, moment, field)
@@ -174,9 +176,8 @@ def _plot_free(data, key, ylabel, title):
     ax.axhline(0, color="0.8", linewidth=0.6)
     ax.set_xlabel("t [s]")
     ax.set_ylabel(ylabel)
-    ax.set_title(f"{title}; small-angle eq. (14): T0 = {data.extra['small_angle_period']:.1f} s", fontsize=10)
+    ax.set_title(f"{title}; small-angle eq. (14): T0 = {data.extra['small_angle_period']:.1f} s", fontsize=8.5)
     ax.legend(fontsize=8, loc="upper right")
-    fig.tight_layout()
     return fig
 
 
@@ -239,7 +240,7 @@ def plot_period_ratio(data):
     """Left: T/T0 against amplitude. Right: the field that gives the period, exact and by eq. (15)."""
     import matplotlib.pyplot as plt
 
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10.0, 3.9))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.0, 4.6))
     c, chk, h = ({k: v for k, (u, v) in s.columns.items()} for s in data.series)
     a1.semilogy(c["amplitude"], c["ratio"], label="exact, 4K(sin²(A/2))/ω0")
     a1.semilogy(chk["amplitude"], chk["ratio"], "o", mfc="none", label="solve_ivp")
@@ -248,7 +249,7 @@ def plot_period_ratio(data):
     a1.set_ylabel("T / T0")
     a1.set_xlim(0, 180)
     a1.legend(fontsize=8)
-    a1.set_title("Period against amplitude (diverges at A = 180°)", fontsize=10)
+    a1.set_title("Period against amplitude (diverges at A = 180°)", fontsize=8.5)
     a2.semilogy(h["amplitude"], h["H_exact"], label=f"exact: T = {data.extra['period']:.0f} s")
     a2.semilogy(h["amplitude"], h["H_eq15_as_used"], "--", label="eq. (15) with A (thesis)")
     a2.axhline(data.extra["h_design"], color="C3", linewidth=0.8, label=f"built design {data.extra['h_design']:.0f} A/m")
@@ -259,8 +260,7 @@ def plot_period_ratio(data):
     a2.set_xlim(0, 180)
     a2.set_ylim(1, 1e5)
     a2.legend(fontsize=8, loc="upper left")
-    a2.set_title("Field needed for the design period", fontsize=10)
-    fig.tight_layout()
+    a2.set_title("Field needed for the design period", fontsize=8.5)
     return fig
 
 
@@ -268,7 +268,7 @@ def _period_parameters():
     p = _defaults()
     pp = _plant_parameters()
     return {"inertia": pp["inertia"], "moment": pp["moment"], "field": pp["field"],
-            "period": FigureParameter(p["oscillation_period"], "s", "design period (seed line 240)"),
+            "period": FigureParameter(p["oscillation_period"], "s", "design period (thesis §2.1)"),
             "amplitude_checks": FigureParameter(8.0, "1", "number of solve_ivp spot checks")}
 
 
@@ -298,9 +298,9 @@ def build_interconnection(inertia, field, kp, ki, kd, moment_limit):
 
 #: What each block of the interconnection computes (the drawing's labels).
 BLOCK_LABELS = {
-    "sum": "Σ\ne = ψ_des − ψ", "pid": "PID, eq. (37)\nKp e + Ki ∫e − Kd ω",
-    "saturation": "saturation\n|u| ≤ m_max", "allocation": "allocation\nM = (0, 0, −u) × b",
-    "mockup": "mock-up, eq. (36)\nJ dω/dt = −B0(Mx sinψ + My cosψ)",
+    "sum": "Σ\ne = ψ_des − ψ", "pid": "PID, eq. (37)\nKp e + Ki ∫e\n− Kd ω",
+    "saturation": "saturation\n|u| ≤ m_max", "allocation": "allocation\nM = (0, 0, −u)\n× b",
+    "mockup": "mock-up,\neq. (36):\nJ dω/dt =\n−B0 (Mx sin ψ\n+ My cos ψ)",
 }
 
 
@@ -323,12 +323,12 @@ def plot_block_diagram(data):
     from matplotlib.patches import FancyBboxPatch
 
     blocks, edges = data.extra["blocks"], data.extra["edges"]
-    fig, ax = plt.subplots(figsize=(11.5, 3.8))
-    w, h, gap = 1.9, 1.0, 0.75
+    fig, ax = plt.subplots(figsize=(7.0, 3.4))
+    w, h, gap = 1.9, 1.5, 0.75
     x = [k * (w + gap) for k in range(len(blocks))]
     for k, (name, _, _) in enumerate(blocks):
         ax.add_patch(FancyBboxPatch((x[k], 0), w, h, boxstyle="round,pad=0.05", fc="0.95", ec="k"))
-        ax.text(x[k] + w / 2, h / 2, BLOCK_LABELS.get(name, name), ha="center", va="center", fontsize=7.5)
+        ax.text(x[k] + w / 2, h / 2, BLOCK_LABELS.get(name, name), ha="center", va="center", fontsize=7)
     depth = {}
     for src, dst, sig in edges:
         label = {"psi": "ψ", "omega": "ω", "psi_des": "ψ_des", "u_sat": "u_sat"}.get(sig, sig)
@@ -353,8 +353,7 @@ def plot_block_diagram(data):
     ax.set_xlim(-1.6, x[-1] + w + 1.0)
     ax.set_ylim(-0.45 - 0.35 * max(len(depth), 1) - 0.1, h + 0.3)
     ax.set_axis_off()
-    ax.set_title("The PID loop (thesis Fig. 14), drawn from its python-control interconnection", fontsize=10)
-    fig.tight_layout()
+    ax.set_title("The PID loop (thesis Fig. 14), drawn from its python-control interconnection", fontsize=8.5)
     return fig
 
 
@@ -386,20 +385,21 @@ def compute_sweep(inertia, field, moment, initial_angle, duration, hypothesis_sc
 def _plot_sweep(data, key, ylabel, title):
     import matplotlib.pyplot as plt
 
-    fig, axes = plt.subplots(1, 2, figsize=(10.5, 3.8))
+    fig, axes = plt.subplots(1, 2, figsize=(7.0, 4.4), layout="constrained")
     half = len(data.series) // 2
-    for ax, group, head in ((axes[0], data.series[:half], "literally in SI, |m| ≤ 0.4 A·m² (unstable)"),
-                            (axes[1], data.series[half:], f"gains × {data.extra['scale']:.3g} (unit hypothesis)")):
+    for ax, group, head in ((axes[0], data.series[:half], "literally in SI, |m| ≤ 0.4 A·m²\n(unstable)"),
+                            (axes[1], data.series[half:], f"gains × {format_number(data.extra['scale'], 3)}\n(unit hypothesis)")):
         for s, style in zip(group, STYLES):
-            lab = s.label.split(": ", 1)[1] + f"  (max Re λ = {s.columns['max_real_pole'][1][0]:+.3g} 1/s)"
+            lab = s.label.split(": ", 1)[1] + f"\nmax Re λ = {s.columns['max_real_pole'][1][0]:+.3g} 1/s"
             ax.plot(s.columns["t"][1], s.columns[key][1], style, label=lab, linewidth=1.1)
-        ax.set_title(head, fontsize=9)
-        ax.set_xlabel("t [s]")
+        ax.set_title(head, fontsize=8)
+        ax.set_xlabel("t [s]", fontsize=8)
+        ax.tick_params(labelsize=7)
         ax.axhline(0, color="0.8", linewidth=0.6)
-        ax.legend(fontsize=7, loc="upper right")
-    axes[0].set_ylabel(ylabel)
-    fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
+        # Below the axes: inside, the legend covered the oscillations it describes.
+        ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.18), frameon=False)
+    axes[0].set_ylabel(ylabel, fontsize=8)
+    fig.suptitle(title, fontsize=8.5)
     return fig
 
 
@@ -509,27 +509,32 @@ def plot_gain_readings(data):
     """Two panels: max Re λ and the slowest mode's damping against the gain factor."""
     import matplotlib.pyplot as plt
 
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10.5, 4.0), sharex=True)
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.0, 4.2), sharex=True)
     for k, s in enumerate(data.series):
         c = {n: v for n, (u, v) in s.columns.items()}
         style = STYLES[k % 3]
         color = "C0" if k < 3 else "C1"
         a1.semilogx(c["scale"], c["max_real"], style, color=color, label=s.label)
         a2.semilogx(c["scale"], c["zeta"], style, color=color)
-    top = a1.get_ylim()[1]
-    for name, scale in data.extra["marks"].items():
+    # The readings sit close together on the log axis: number them, name them below.
+    low, top = a1.get_ylim()
+    marks = sorted(data.extra["marks"].items(), key=lambda item: item[1])
+    for k, (name, scale) in enumerate(marks, 1):
         for ax in (a1, a2):
             ax.axvline(scale, color="0.6", linewidth=0.7)
-        a1.text(scale, top, name, rotation=90, fontsize=7, va="top", ha="right")
+        a1.text(scale, top - (0.04 + 0.07 * (k % 2)) * (top - low), str(k), fontsize=7, ha="center",
+                va="center", bbox={"boxstyle": "circle,pad=0.15", "fc": "white", "ec": "0.6", "lw": 0.6})
+    names = [f"{k} {name}" for k, (name, _) in enumerate(marks, 1)]
+    readings = ";  ".join(names[:4]) + ";\n" + ";  ".join(names[4:])
     a1.axhline(0, color="k", linewidth=0.7)
     a1.set_ylabel("largest Re λ [1/s] (> 0: unstable)")
     a2.set_ylabel("damping ratio of the slowest mode")
     a2.axhline(0, color="k", linewidth=0.7)
     for ax in (a1, a2):
-        ax.set_xlabel("factor s on the printed gains (K_SI = s K)")
+        ax.set_xlabel("factor k on the printed gains (K_SI = k·K)")
     a1.legend(fontsize=7, loc="lower left")
-    fig.suptitle("The printed gain sets under every reading of their units", fontsize=10)
-    fig.tight_layout()
+    fig.suptitle("The printed gain sets under every reading of their units\n(vertical lines: " + readings + ")",
+                 fontsize=8)
     return fig
 
 
@@ -557,7 +562,7 @@ def plot_allocation_error(data):
     import matplotlib.pyplot as plt
 
     c = {k: v for k, (u, v) in data.series[0].columns.items()}
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10.0, 3.8))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.0, 4.5))
     a1.plot(c["psi"], c["torque_ratio"], label="torque / commanded (ψ sinψ + cosψ)")
     a1.plot(c["psi"], c["coil_moment_ratio"], "--", label="|coil moments| / |m_z| (√(1+ψ²))")
     a1.axhline(1.0, color="0.5", linestyle=":")
@@ -571,8 +576,7 @@ def plot_allocation_error(data):
             ax.text(target, ax.get_ylim()[1], f" ψ_des = {name}", fontsize=7, va="top", color="C3")
         ax.set_xlabel("body angle ψ from the field [deg]")
     a1.legend(fontsize=8, loc="lower left")
-    fig.suptitle("The thesis's small-angle field rotation used for the allocation M = m × b", fontsize=10)
-    fig.tight_layout()
+    fig.suptitle("The thesis's small-angle field rotation used for the allocation M = m × b", fontsize=8.5)
     return fig
 
 
@@ -624,7 +628,6 @@ def plot_root_locus(data):
                  f"lower gain margin {data.extra['gm']:.3f} (= 1/9), phase margin {data.extra['pm']:.1f}°",
                  fontsize=9)
     ax.legend(fontsize=8, loc="lower left")
-    fig.tight_layout()
     return fig
 
 
@@ -672,23 +675,22 @@ def plot_step_response(data):
     """ψ/ψ_des for both steps (left, middle) and the commands of the large step (right)."""
     import matplotlib.pyplot as plt
 
-    fig, axes = plt.subplots(1, 3, figsize=(12.0, 3.8))
+    fig, axes = plt.subplots(1, 3, figsize=(7.0, 3.4))
     styles = ("k-", "C0--", "C1:", "C2-.")
     for ax, name, step in zip(axes[:2], ("small", "large"), data.extra["steps"]):
         for s, st in zip([s for s in data.series if s.label.startswith(name)], styles):
             ax.plot(s.columns["t"][1], s.columns["psi"][1] / step, st, label=s.label.split(": ")[1], linewidth=1.1)
-        ax.set_title(f"step of {np.degrees(step):.0f}°", fontsize=10)
+        ax.set_title(f"step of {np.degrees(step):.0f}°", fontsize=8.5)
         ax.set_xlabel("t [s]")
         ax.set_ylabel("ψ / ψ_des")
         ax.axhline(1.0, color="0.8", linewidth=0.6)
     axes[0].legend(fontsize=7)
     for s, st in zip([s for s in data.series if s.label.startswith("large") and "command" in s.columns], styles[1:]):
         axes[2].plot(s.columns["t"][1], s.columns["command"][1], st, label=s.label.split(": ")[1], linewidth=1.1)
-    axes[2].set_title("PID output u, large step", fontsize=10)
+    axes[2].set_title("PID output u, large step", fontsize=8.5)
     axes[2].set_xlabel("t [s]")
     axes[2].set_ylabel("u [A·m²]")
     axes[2].legend(fontsize=7)
-    fig.tight_layout()
     return fig
 
 
@@ -733,7 +735,7 @@ register(FigureSpec("thesis-fig18", "Rotation angle, Kd sweep (thesis Fig. 18)",
 register(FigureSpec("ch04-gain-readings", "The printed gains under every reading of their units",
                     "Bui (2016) eqs. (37)–(38), Figs. 15–18", compute_gain_readings, plot_gain_readings,
                     _plant_parameters()))
-register(FigureSpec("ch04-allocation-error", "Error of the small-angle allocation", "Bui (2016) §4.1, seed lines 545–563",
+register(FigureSpec("ch04-allocation-error", "Error of the small-angle allocation", "Bui (2016) §4.1, the allocation after eq. (38)",
                     compute_allocation_error, plot_allocation_error, {}))
 register(FigureSpec("ch04-root-locus", "Root locus and margins of a stable SI design", "Not in the thesis",
                     compute_root_locus, plot_root_locus, _root_locus_parameters()))
