@@ -636,7 +636,8 @@ def simulate_bench_reference(setup, psi_des, *, duration, release_angle=0.0, rel
 
 
 def monte_carlo(setup, psi_des, *, members, seed, duration, moment_tolerance, release_angle_spread,
-                release_rate_std, thread_stiffness_factor, record_interval=None, window=20.0):
+                release_rate_std, thread_stiffness_factor, record_interval=None, window=20.0,
+                release_angle=None, release_rate=0.0):
     r"""Seeded Monte Carlo of the bench over its uncertain inputs.
 
     Parameters
@@ -654,15 +655,20 @@ def monte_carlo(setup, psi_des, *, members, seed, duration, moment_tolerance, re
     moment_tolerance : float
         Each coil's moment is uniform in nominal·(1 ± tolerance) [-] (thesis: σ = 5 %).
     release_angle_spread : float
-        Release angle uniform in ψ_des ± spread [rad] (ours: the mock-up is turned by hand).
+        Release angle uniform in centre ± spread [rad] (ours: the mock-up is turned by hand).
     release_rate_std : float
-        Release rate normal with this standard deviation [rad/s] (ours).
+        Release rate normal about ``release_rate`` with this standard deviation [rad/s] (ours).
     thread_stiffness_factor : float
         Thread stiffness log-uniform in nominal ×/÷ factor [-], ≥ 1 (ours).
     record_interval : float, optional
         Spacing of the recorded traces [s].
     window : float, optional
         Final window of the error band [s].
+    release_angle : float, optional
+        Centre of the release angles [rad]; default ψ_des. A nominal run released at
+        ``release_angle`` with ``release_rate`` is then the centre of the members' inputs.
+    release_rate : float, optional
+        Mean of the release rates [rad/s]; default 0.
 
     Returns
     -------
@@ -692,10 +698,12 @@ def monte_carlo(setup, psi_des, *, members, seed, duration, moment_tolerance, re
     spread = float(as_in_range("release_angle_spread", release_angle_spread, 0.0, np.pi, unit="rad"))
     rate_std = float(as_nonnegative("release_rate_std", release_rate_std, unit="rad/s"))
     factor = float(as_in_range("thread_stiffness_factor", thread_stiffness_factor, 1.0, 1e6))
+    centre = psi_des if release_angle is None else float(as_finite("release_angle", release_angle))
+    mean_rate = float(as_finite("release_rate", release_rate))
     rng = np.random.default_rng(seed)
     scale = rng.uniform(1.0 - tol, 1.0 + tol, (members, 2))
-    angle = psi_des + rng.uniform(-spread, spread, members)
-    rate = rate_std * rng.standard_normal(members)
+    angle = centre + rng.uniform(-spread, spread, members)
+    rate = mean_rate + rate_std * rng.standard_normal(members)
     stiffness = setup.thread_stiffness * np.exp(rng.uniform(-np.log(factor), np.log(factor), members))
     return simulate_bench(setup, psi_des, duration=duration, release_angle=angle, release_rate=rate,
                           members=members, moment_scale=scale, thread_stiffness=stiffness, rng=rng,

@@ -110,6 +110,32 @@ def test_monte_carlo_is_reproducible_from_its_seed():
     assert np.all(np.abs(a.inputs["release_angle"] - 1.0) <= 1.0)
 
 
+def test_monte_carlo_release_centre_and_mean_rate():
+    kw = dict(members=200, duration=0.1, moment_tolerance=0.05, release_angle_spread=0.5,
+              release_rate_std=0.01, thread_stiffness_factor=2.0, window=0.05)
+    run = bench.monte_carlo(SETUP, 2.0, seed=3, release_angle=-0.4, release_rate=0.1, **kw)
+    assert np.all(np.abs(run.inputs["release_angle"] + 0.4) <= 0.5)
+    assert abs(np.mean(run.inputs["release_rate"]) - 0.1) < 0.005
+    # The default centre is the target, as before.
+    default = bench.monte_carlo(SETUP, 2.0, seed=3, **kw)
+    assert np.all(np.abs(default.inputs["release_angle"] - 2.0) <= 0.5)
+
+
+@pytest.mark.parametrize("figure_id", ["thesis-fig19", "thesis-fig20"])
+def test_bench_trace_envelope_contains_its_nominal_run(figure_id):
+    # The envelope's members are released about the nominal run's release angle, so the
+    # nominal run starts inside the 5-95 % band and both end on the target.
+    from magbench import figures
+
+    data = figures.compute(figure_id, envelope_members=40, bench_duration=60.0)
+    nominal = {k: v for k, (u, v) in data.series[0].columns.items()}
+    band = {k: v for k, (u, v) in data.series[1].columns.items()}
+    start = np.interp(band["time"], nominal["time"], nominal["psi"])
+    assert band["psi_low"][0] < start[0] < band["psi_high"][0]
+    target = np.degrees(data.extra["psi_des"])
+    assert abs(band["psi_low"][-1] - target) < 1.0 and abs(band["psi_high"][-1] - target) < 1.0
+
+
 def test_full_scale_moment_from_measured_resistance():
     # m = N (U/R) l^2; with R = N r (no extra resistance) it must equal eq. (20).
     assert_allclose(bench.coil_full_scale_moment(12.0, 55.0, 240, 0.1), 240 * 12.0 / 55.0 * 0.01, rtol=1e-15)
