@@ -40,3 +40,65 @@ def test_book_check_sees_every_page_including_sections():
     listed = set(_load("check_book").chapter_files())
     on_disk = {f"book/{p.stem}" for p in (ROOT / "book").glob("*.md")}
     assert on_disk == listed
+
+
+def _page(tmp_path, body, image=None):
+    """A synthetic built page (and optionally its image) for the book check."""
+    html = tmp_path / "html"
+    (html / "book").mkdir(parents=True)
+    (html / "_images").mkdir()
+    if image is not None:
+        from PIL import Image
+
+        Image.fromarray(image).save(html / "_images" / "f.png")
+    page = html / "book" / "p.html"
+    page.write_text(f"<html><body><main>{body}</main></body></html>", encoding="utf-8")
+    return page, html
+
+
+FIGURE = ('<figure><img src="../_images/f.png"/><figcaption>Caption. '
+          '[thesis-fig06] made by magbench.figures.x; all parameters at their defaults.</figcaption></figure>')
+
+
+def _drawing():
+    import numpy as np
+
+    image = np.full((20, 30, 3), 255, dtype=np.uint8)
+    image[5:15, 10:20] = 0
+    return image
+
+
+def test_book_check_accepts_a_shown_figure(tmp_path):
+    check_page = _load("check_book").check_page
+    page, html = _page(tmp_path, FIGURE, _drawing())
+    problems, shown, counts = check_page("p", page, html)
+    assert problems == [] and shown == {"thesis-fig06": "p"} and counts["figures"] == 1
+
+
+def test_book_check_fails_on_each_defect_it_names(tmp_path):
+    """Each defect of the first version must fail the check, naming it."""
+    import numpy as np
+
+    check_page = _load("check_book").check_page
+    cases = {
+        "text repr": ('<figure><div>&lt;Figure size 1300x460 with 3 Axes&gt;</div><figcaption>'
+                      '[thesis-fig06] made by x</figcaption></figure>', None),
+        "no image": ('<figure><figcaption>[thesis-fig06] made by x</figcaption></figure>', None),
+        "is missing": (FIGURE, None),
+        "is blank": (FIGURE, np.full((20, 30, 3), 255, dtype=np.uint8)),
+        "prints": ('<div class="cell tag_remove-input"><div class="cell_output">'
+                   '<div class="output text_plain"><pre>0.46672777760429107</pre></div></div></div>', None),
+        "raw Markdown table": ("<p>| printed | computed |\n|---|---|\n| 1 | 2 |</p>", None),
+    }
+    for expected, (body, image) in cases.items():
+        page, html = _page(tmp_path / expected.replace(" ", "_"), body, image)
+        problems, _, _ = check_page("p", page, html)
+        assert any(expected in p for p in problems), (expected, problems)
+
+
+def test_book_check_allows_output_of_a_visible_cell(tmp_path):
+    check_page = _load("check_book").check_page
+    body = ('<div class="cell"><div class="cell_output"><div class="output stream">'
+            '<pre>printed on purpose</pre></div></div></div>')
+    page, html = _page(tmp_path, body)
+    assert check_page("p", page, html)[0] == []

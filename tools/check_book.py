@@ -1,6 +1,21 @@
-"""Check that a built book is complete: every chapter page exists, no notebook failed,
-and every registered figure appears with its provenance caption."""
+"""Check that a built book is complete and shows what it claims to show.
 
+Fails (exit 1, listing every problem) unless:
+
+* every page of the toc exists and no notebook of this build failed;
+* every registered figure is an image (``<img>`` or inline ``<svg>``) inside the same
+  figure element as its provenance caption (``[<id>] made by``), and the image file
+  exists and is not blank (a single colour);
+* no page shows the text ``<Figure size`` (a figure glued as its text repr: the first
+  version of the book showed 38 of them and passed a caption-only check);
+* no cell whose input is hidden or removed shows a plain-text or stream output (a stray
+  printed return value between paragraphs);
+* no page shows raw Markdown table text (``|---|``), i.e. a table that did not render.
+
+Prints one line per page: figures shown, equations, tables.
+"""
+
+import re
 import sys
 from pathlib import Path
 
@@ -9,6 +24,8 @@ import yaml
 from magbench import figures
 
 ROOT = Path(__file__).resolve().parent.parent
+HIDDEN_INPUT_TAGS = ("tag_remove-input", "tag_hide-input")
+RAW_TABLE = re.compile(r"\|\s*:?-{3,}:?\s*\|")
 
 
 def chapter_files():
@@ -24,26 +41,89 @@ def chapter_files():
     return [toc["root"]] + [f for part in toc.get("parts", []) for f in walk(part.get("chapters", []))]
 
 
+def image_is_blank(path):
+    """True when the image has a single colour (or cannot be read as an image)."""
+    from PIL import Image
+
+    try:
+        with Image.open(path) as image:
+            extrema = image.convert("RGB").getextrema()
+    except OSError:
+        return True
+    return all(low == high for low, high in extrema)
+
+
+def check_page(name, page_path, html_dir):
+    """Problems of one built page, and its counts (figures shown, equations, tables)."""
+    from bs4 import BeautifulSoup
+
+    soup = BeautifulSoup(page_path.read_text(encoding="utf-8"), "html.parser")
+    main = soup.find("main") or soup
+    text = main.get_text(" ")
+    problems = []
+    if "<Figure size" in text:
+        problems.append(f"{name}: a figure is shown as its text repr ('<Figure size …')")
+    if RAW_TABLE.search(text):
+        problems.append(f"{name}: raw Markdown table text ('|---|'): a table did not render")
+    for cell in main.select("div.cell"):
+        tags = cell.get("class", [])
+        if not any(tag in tags for tag in HIDDEN_INPUT_TAGS):
+            continue
+        for output in cell.select("div.cell_output div.output"):
+            classes = output.get("class", [])
+            if "text_plain" in classes or "stream" in classes:
+                snippet = " ".join(output.get_text().split())[:60]
+                problems.append(f"{name}: a hidden-input cell prints {snippet!r}")
+    shown = {}
+    for figure in main.select("figure"):
+        caption = figure.find("figcaption")
+        match = re.search(r"\[([a-z0-9-]+)\] made by", caption.get_text(" ") if caption else "")
+        if not match:
+            continue
+        figure_id = match.group(1)
+        images = figure.select("img") + figure.select("svg")
+        if not images:
+            problems.append(f"{name}: figure {figure_id} has a caption but no image")
+            continue
+        for image in figure.select("img"):
+            source = (page_path.parent / image.get("src", "")).resolve()
+            if not source.is_file() or html_dir.resolve() not in source.parents:
+                problems.append(f"{name}: figure {figure_id}: image {image.get('src')!r} is missing")
+            elif image_is_blank(source):
+                problems.append(f"{name}: figure {figure_id}: image {image.get('src')!r} is blank")
+        shown[figure_id] = name
+    counts = {"figures": len(shown),
+              "equations": len(main.select("div.math")) + len(main.select("span.math")),
+              "tables": len(main.select("table"))}
+    return problems, shown, counts
+
+
 def main(html_dir):
     html = Path(html_dir)
     problems = []
-    pages = {}
+    shown = {}
+    lines = []
     for name in chapter_files():
         page = html / f"{name}.html"
         if not page.is_file():
             problems.append(f"missing page {page}")
-        else:
-            pages[name] = page.read_text(encoding="utf-8")
+            continue
+        page_problems, page_shown, counts = check_page(name, page, html)
+        problems += page_problems
+        shown.update(page_shown)
+        lines.append(f"  {name:32s} {counts['figures']:3d} figures  {counts['equations']:4d} equations  "
+                     f"{counts['tables']:3d} tables")
     reports = list((html / "reports").glob("**/*.err.log")) if (html / "reports").exists() else []
     problems += [f"execution failure logged in {r}" for r in reports]
-    text = "\n".join(pages.values())
     for figure_id in figures.figure_ids():
-        if f"[{figure_id}] made by" not in text:
-            problems.append(f"figure {figure_id} is registered but not shown with its caption in the book")
+        if figure_id not in shown:
+            problems.append(f"figure {figure_id} is registered but not shown as an image with its caption")
+    print("\n".join(lines))
     if problems:
         print("book check failed:\n  " + "\n  ".join(problems))
         return 1
-    print(f"book check: {len(pages)} pages, {len(figures.figure_ids())} figures, no execution failures")
+    print(f"book check: {len(lines)} pages, {len(shown)} of {len(figures.figure_ids())} figures shown "
+          "as images, no execution failures")
     return 0
 
 
