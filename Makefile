@@ -31,11 +31,13 @@ $(STAMP):
 # The book, with the execution cache invalidated whenever the library, data, lock file
 # or parameter overrides change (jupyter-cache itself only looks at cell sources).
 book: $(STAMP)
+	rm -rf _build/html/reports   # a failed build's logs would otherwise outlive it
 	$(BIN)/python tools/fingerprint.py --cache _build/.jupyter_cache --doctrees _build/.doctrees --stamp _build/.fingerprint
 	$(JB) build . -W -n --keep-going
 	$(BIN)/python tools/check_book.py _build/html
 
-# Tests: the pytest suite, then the whole book built from scratch as a test.
+# Tests: the pytest suite, then the whole book built from scratch as a test, checked in
+# the HTML (tools/check_book.py) and in headless Chromium (tools/browser_check.py).
 test: pytest book-check
 
 pytest: $(STAMP)
@@ -45,6 +47,10 @@ book-check: $(STAMP)
 	rm -rf _build/test
 	$(JB) build . --path-output _build/test -W -n --keep-going
 	$(BIN)/python tools/check_book.py _build/test/_build/html
+	@$(BIN)/python tools/browser_check.py _build/test/_build/html; status=$$?; \
+	if [ $$status -eq 3 ]; then \
+	  echo "browser check SKIPPED: Chromium is not installed; install it with: apt-get install -y chromium"; \
+	elif [ $$status -ne 0 ]; then exit $$status; fi
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run.py

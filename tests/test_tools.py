@@ -1,6 +1,8 @@
 """The build helpers: the cache fingerprint must move with library, data and overrides."""
 
 import importlib.util
+
+import pytest
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -102,3 +104,30 @@ def test_book_check_allows_output_of_a_visible_cell(tmp_path):
             '<pre>printed on purpose</pre></div></div></div>')
     page, html = _page(tmp_path, body)
     assert check_page("p", page, html)[0] == []
+
+
+_GOOD_PAGE = """<!DOCTYPE html><html><head><meta charset="utf-8"></head><body><main>
+<article class="bd-article" style="width: 700px"><p>Fine.</p>
+<img src="dot.png"><table><tr><td>narrow</td></tr></table></article></main></body></html>"""
+
+_BAD_PAGE = """<!DOCTYPE html><html><head><meta charset="utf-8"></head><body><main>
+<article class="bd-article" style="width: 700px"><p>Left raw: $$x^2$$</p>
+<img src="missing.png"><table style="width: 2000px"><caption>too wide</caption><tr><td>x</td></tr></table>
+<script>undefinedFunction();</script></article></main></body></html>"""
+
+
+def test_browser_check_names_each_defect(tmp_path):
+    """The browser check fails a page for a missing image, raw TeX, a wide table and a JS error,
+    and passes a clean page: each check can fail for the defect it names."""
+    browser_check = _load("browser_check")
+    if not browser_check.chromium_installed():
+        pytest.skip("Chromium not installed (apt-get install -y chromium)")
+    from PIL import Image
+    Image.new("RGB", (4, 4), "red").save(tmp_path / "dot.png")
+    (tmp_path / "good.html").write_text(_GOOD_PAGE)
+    (tmp_path / "bad.html").write_text(_BAD_PAGE)
+    assert browser_check.check_site(tmp_path, ["good"], search=None) == []
+    problems = "\n".join(browser_check.check_site(tmp_path, ["bad"], search=None))
+    for defect in ("image did not load: missing.png", "equation not typeset", "table wider than the column",
+                   "JavaScript error", "HTTP 404"):
+        assert defect in problems, defect

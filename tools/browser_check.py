@@ -1,0 +1,162 @@
+"""Open every page of the built book in a real browser and check what a reader sees.
+
+Serves the HTML folder on 127.0.0.1 and drives the system Chromium (Debian's
+``chromium``) with Playwright at a 1024 × 768 window. For each page of the toc it fails
+on: a failed request (no answer, or an HTTP error status) or any request that leaves
+the local server (the book must work offline), a JavaScript error (an uncaught
+exception; the theme's console messages are not errors of the book), an image that did not load (``naturalWidth == 0``), an
+equation left untypeset (raw ``\\(``, ``\\[`` or ``$$`` in the text), and a table or
+display equation wider than the content column. The search page must find "Helmholtz".
+
+Usage: ``python tools/browser_check.py HTML_DIR [--screenshots DIR]``. Exit 0 when every
+page passes, 1 on any problem, 3 when Chromium is not installed (the caller says so).
+"""
+
+import argparse
+import functools
+import http.server
+import sys
+import threading
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from check_book import chapter_files  # noqa: E402
+
+CHROMIUM = "/usr/bin/chromium"
+CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking",
+                 "--disable-component-update", "--disable-sync", "--no-first-run", "--disable-quic"]
+#: Width tolerance [px] for sub-pixel rounding.
+SLACK = 1.5
+
+PAGE_PROBE = r"""
+async () => {
+  if (window.MathJax && MathJax.startup && MathJax.startup.promise) {
+    await MathJax.startup.promise;
+    if (MathJax.typesetPromise) { await MathJax.typesetPromise(); }
+  }
+  const main = document.querySelector("main") || document.body;
+  const article = document.querySelector("article.bd-article") || main;
+  const column = article.getBoundingClientRect().width;
+  const text = article.innerText;
+  const images = [...article.querySelectorAll("img")].map(i => ({src: i.getAttribute("src"),
+    ok: i.complete && i.naturalWidth > 0}));
+  const tables = [...article.querySelectorAll("table")].map(t => ({
+    width: t.getBoundingClientRect().width, caption: (t.caption ? t.caption.innerText : "").slice(0, 60)}));
+  const equations = [...article.querySelectorAll("mjx-container[display='true']")].map(e => ({
+    width: e.firstElementChild ? e.firstElementChild.getBoundingClientRect().width : 0,
+    tex: (e.getAttribute("aria-label") || "").slice(0, 60)}));
+  const typeset = article.querySelectorAll("mjx-container").length;
+  const raw = [];
+  for (const marker of ["\\(", "\\[", "$$"]) {
+    const k = text.indexOf(marker);
+    if (k >= 0) { raw.push(text.slice(Math.max(0, k - 20), k + 40)); }
+  }
+  return {column, images, tables, equations, typeset, raw};
+}
+"""
+
+
+def serve(directory):
+    """A quiet HTTP server for ``directory`` on an ephemeral port of 127.0.0.1."""
+    class Quiet(http.server.SimpleHTTPRequestHandler):
+        def log_message(self, *args):
+            pass
+
+    handler = functools.partial(Quiet, directory=str(directory))
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    return server
+
+
+def check_page(page, url, origin):
+    """Load one page; return (problems, summary dict)."""
+    problems, requests = [], []
+    page.on("request", lambda r: requests.append(r.url))
+    page.on("requestfailed", lambda r: problems.append(f"request failed: {r.url} ({r.failure})"))
+    page.on("pageerror", lambda e: problems.append(f"JavaScript error: {e}"))
+    page.on("response", lambda r: problems.append(f"HTTP {r.status}: {r.url}") if r.status >= 400 else None)
+    page.goto(url, wait_until="load")
+    result = page.evaluate(PAGE_PROBE)
+    page.wait_for_timeout(100)
+    outside = sorted({r for r in requests if not r.startswith(origin) and not r.startswith("data:")})
+    problems += [f"request leaves the machine: {r}" for r in outside]
+    problems += [f"image did not load: {i['src']}" for i in result["images"] if not i["ok"]]
+    problems += [f"equation not typeset: …{r}…" for r in result["raw"]]
+    column = result["column"]
+    problems += [f"table wider than the column ({t['width']:.0f} > {column:.0f} px): {t['caption']!r}"
+                 for t in result["tables"] if t["width"] > column + SLACK]
+    problems += [f"equation wider than the column ({e['width']:.0f} > {column:.0f} px): {e['tex']!r}"
+                 for e in result["equations"] if e["width"] > column + SLACK]
+    return problems, {"images": len(result["images"]), "typeset": result["typeset"],
+                      "tables": len(result["tables"])}
+
+
+def check_site(html_dir, pages, screenshots=None, search="Helmholtz"):
+    """Check ``pages`` (paths without ``.html``) of ``html_dir``; return the problems found.
+
+    ``search``: a word the site's search page must find (``None``: no search check).
+    Prints one line per page.
+    """
+    from playwright.sync_api import sync_playwright
+
+    server = serve(html_dir)
+    origin = f"http://127.0.0.1:{server.server_address[1]}"
+    shots = Path(screenshots) if screenshots else None
+    if shots:
+        shots.mkdir(parents=True, exist_ok=True)
+    failures = []
+    try:
+        with sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+            context = browser.new_context(viewport={"width": 1024, "height": 768}, service_workers="block")
+            for name in pages:
+                page = context.new_page()
+                problems, summary = check_page(page, f"{origin}/{name}.html", origin)
+                if shots:
+                    page.screenshot(path=str(shots / f"{Path(name).name}.png"), full_page=True)
+                page.close()
+                status = "ok" if not problems else f"{len(problems)} problems"
+                print(f"  {name:32s} {summary['images']:3d} images loaded  {summary['typeset']:4d} equations typeset  "
+                      f"{summary['tables']:3d} tables  {status}")
+                failures += [f"{name}: {problem}" for problem in problems]
+            if search:
+                page = context.new_page()
+                page.goto(f"{origin}/search.html?q={search}", wait_until="load")
+                try:
+                    page.wait_for_selector("#search-results li, ul.search li", timeout=15000)
+                    hits = page.locator("#search-results li, ul.search li").count()
+                except Exception:       # noqa: BLE001 - a timeout is the finding
+                    hits = 0
+                print(f"  search {search!r}: {hits} results")
+                if hits == 0:
+                    failures.append(f"search page: no result for {search!r}")
+            browser.close()
+    finally:
+        server.shutdown()
+        server.server_close()
+    return failures
+
+
+def chromium_installed():
+    return Path(CHROMIUM).exists()
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("html_dir")
+    parser.add_argument("--screenshots", help="folder for a full-page screenshot of every page")
+    args = parser.parse_args(argv)
+    if not chromium_installed():
+        print(f"browser check: {CHROMIUM} not found")
+        return 3
+    pages = chapter_files()
+    failures = check_site(Path(args.html_dir), pages, args.screenshots)
+    if failures:
+        print("browser check failed:\n  " + "\n  ".join(failures))
+        return 1
+    print(f"browser check: {len(pages)} pages at 1024 px, offline, no problems")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
