@@ -15,6 +15,7 @@ Fails (exit 1, listing every problem) unless:
 Prints one line per page: figures shown, equations, tables.
 """
 
+import json
 import re
 import sys
 from pathlib import Path
@@ -92,10 +93,32 @@ def check_page(name, page_path, html_dir):
             elif image_is_blank(source):
                 problems.append(f"{name}: figure {figure_id}: image {image.get('src')!r} is blank")
         shown[figure_id] = name
+    footer = soup.select_one("p.magbench-provenance")
+    if footer is None or "requirements.lock sha256" not in footer.get_text():
+        problems.append(f"{name}: no build provenance line (commit, date, lock-file hash) in the footer")
+    if main.select("div.cell"):
+        problems += _download_problems(name, soup, page_path, html_dir, expect_images=bool(shown))
     counts = {"figures": len(shown),
               "equations": len(main.select("div.math")) + len(main.select("span.math")),
               "tables": len(main.select("table"))}
     return problems, shown, counts
+
+
+def _download_problems(name, soup, page_path, html_dir, expect_images):
+    """An executed page offers its executed notebook, with its outputs, for download."""
+    link = soup.find("a", href=re.compile(r"_sources/.*\.ipynb$"))
+    if link is None:
+        return [f"{name}: no .ipynb download"]
+    notebook = (page_path.parent / link["href"]).resolve()
+    if not notebook.is_file() or html_dir.resolve() not in notebook.parents:
+        return [f"{name}: the .ipynb download {link['href']!r} is missing"]
+    cells = json.loads(notebook.read_text(encoding="utf-8"))["cells"]
+    outputs = [o for c in cells for o in c.get("outputs", [])]
+    if not outputs:
+        return [f"{name}: the .ipynb download has no outputs (not the executed notebook)"]
+    if expect_images and not any("image/png" in o.get("data", {}) for o in outputs):
+        return [f"{name}: the .ipynb download has none of the page's figures"]
+    return []
 
 
 def main(html_dir):
