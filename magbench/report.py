@@ -231,9 +231,18 @@ def compare_table(rows, caption="Model beside measurement", *, label=None, again
     def value(x, unit, digits=4):
         return format_quantity(x, unit, digits)
 
+    from .compare import row_kind
+
+    def reference(r):
+        if r.uncertainty or row_kind(r) not in ("measurement", "printed"):
+            return format_quantity(r.measured, r.unit, 4, uncertainty=r.uncertainty or None)
+        # A value a person or a source wrote down without an uncertainty: its tolerance is
+        # half a unit of the last written digit, so show those digits (10°, not 10.00°).
+        return printed_quantity(r.measured, r.tolerance, r.unit)
+
     frame = pd.DataFrame([{
         "quantity": f"{r.quantity} ({r.source})",
-        against: format_quantity(r.measured, r.unit, 4, uncertainty=r.uncertainty or None),
+        against: reference(r),
         "model": value(r.model, r.unit),
         "difference": ("+" if r.difference > 0 else "") + value(r.difference, r.unit, 3),
         "tolerance": value(r.tolerance, r.unit, 2),
