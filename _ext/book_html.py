@@ -81,7 +81,7 @@ def _executed_notebook(app, docname):
     import nbformat
     from jupyter_cache import get_cache
 
-    notebook = jupytext.read(source)
+    notebook = jupytext.read(source, fmt="md:myst")      # the book's only notebook format
     if "kernelspec" not in notebook.metadata:      # a plain Markdown page
         return None
     try:

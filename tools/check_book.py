@@ -93,6 +93,10 @@ def check_page(name, page_path, html_dir):
             elif image_is_blank(source):
                 problems.append(f"{name}: figure {figure_id}: image {image.get('src')!r} is blank")
         shown[figure_id] = name
+    for table in main.select("table"):
+        if table.find("caption") is None:
+            first = " ".join(table.get_text(" ").split())[:50]
+            problems.append(f"{name}: a table without a caption ({first!r})")
     footer = soup.select_one("p.magbench-provenance")
     if footer is None or "requirements.lock sha256" not in footer.get_text():
         problems.append(f"{name}: no build provenance line (commit, date, lock-file hash) in the footer")
