@@ -12,7 +12,6 @@ Each chapter contributes a provider: a function ``(params) -> list[CompareRow]``
 registered in :data:`PROVIDERS`.
 """
 
-import datetime as _dt
 import itertools
 from dataclasses import asdict, dataclass
 
@@ -22,7 +21,7 @@ from . import geomag, igrf
 from .constants import EARTH_RADIUS
 from .params import chapter_parameters
 
-__all__ = ["CompareRow", "PROVIDERS", "make_row", "all_rows", "geomagnetic_rows", "today_decimal_year",
+__all__ = ["CompareRow", "PROVIDERS", "make_row", "all_rows", "geomagnetic_rows", "IGRF_NEWEST_EPOCH",
            "simulator_rows", "simulator_center_h_tolerance", "magnetorquer_rows",
            "bench_rows"]
 
@@ -66,11 +65,9 @@ def make_row(id, quantity, source, measured, model, tolerance, *, unit, uncertai
     )
 
 
-def today_decimal_year(today=None):
-    """Decimal year of ``today`` (default: the current UTC date)."""
-    today = today or _dt.datetime.now(_dt.timezone.utc).date()
-    start = _dt.date(today.year, 1, 1)
-    return today.year + (today - start).days / (_dt.date(today.year + 1, 1, 1) - start).days
+#: The newest epoch with a main-field model in IGRF-14 [decimal year]. Later years are
+#: the secular-variation forecast, and a row dated by the build would change with it.
+IGRF_NEWEST_EPOCH = 2025.0
 
 
 def _printed_digit_spread(func, values, half_units):
@@ -95,11 +92,12 @@ def geomagnetic_rows(params=None, *, epochs=None):
     params : dict, optional
         Chapter-1 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
     epochs : sequence of float, optional
-        Decimal years for the dipole rows; default 1960, the thesis's epoch and today.
+        Decimal years for the dipole rows; default 1960, the thesis's epoch and
+        :data:`IGRF_NEWEST_EPOCH` (no row depends on the date of the build).
     """
     p = params or chapter_parameters("ch01")
     if epochs is None:
-        epochs = (1960.0, p["thesis_epoch"], today_decimal_year())
+        epochs = (1960.0, p["thesis_epoch"], IGRF_NEWEST_EPOCH)
     m, tilt = p["earth_dipole_moment"], p["earth_dipole_tilt"]
     plat, plon = p["geomagnetic_pole_latitude"], p["geomagnetic_pole_longitude"]
     deg = np.pi / 180
@@ -254,28 +252,28 @@ def magnetorquer_rows(params=None):
 
     r_model, r_meas = resistance(d), built["mtq-resistance"].value
     r_spread = max(abs(resistance(d - d_tol) - r_model), abs(resistance(d + d_tol) - r_model))
-    src = "Bui (2016) §3.3"
+    src = "thesis"
     square = mtq.turn_area(side, "square")
     s_design = mtq.wire_area_for_moment(p["mtq_moment"], u, side, rho)
     return [
         make_row("mtq-resistance", "Resistance of a built magnetorquer (0.2 mm wire, N = 240)",
-                 f"{src}, seed line 441 (measured, ≈ 55 Ω)", r_meas, r_model, r_spread + 0.5,
+                 f"{src} §3.3 (measured, ≈ 55 Ω)", r_meas, r_model, r_spread + 0.5,
                  unit="ohm", note=f"model spread over d ± {d_tol * 1e6:.0f} µm: ±{r_spread:.2f} Ω"),
         make_row("mtq-resistance-computed", "Resistance the thesis computed for the built coil",
-                 f"{src}, seed line 439 (printed)", built["mtq-resistance-computed"].value, r_model,
+                 f"{src} §3.3 (printed)", built["mtq-resistance-computed"].value, r_model,
                  0.05, unit="ohm"),
         make_row("mtq-moment", "Dipole moment of the built coil at 12 V (eq. 20)",
-                 f"{src}, seed line 441 (printed)", built["mtq-moment"].value,
+                 f"{src} §3.3 (printed)", built["mtq-moment"].value,
                  mtq.moment_from_voltage(u, side, mtq.wire_area(d), rho), 0.005, unit="A m^2",
                  note=f"with the measured resistance: {u / r_meas * n * float(square):.3f} A·m²"),
         make_row("mtq-power", "Joule power of the built coil at 12 V (measured resistance)",
-                 "Bui (2016) §3.2, seed line 435 (the design's 2 W)", p["mtq_max_power"],
+                 "thesis §3.2 (the design's 2 W)", p["mtq_max_power"],
                  mtq.joule_power(u, r_meas), 0.5, unit="W"),
         make_row("mtq-current-for-moment", "Coil current for 0.4 A·m² (square, N = 240)",
-                 "Bui (2016) §4.2, seed line 516 (printed)", 0.24,
+                 "thesis §4.1 (printed)", 0.24,
                  mtq.current_for_moment(p["mtq_moment"], n, square), 0.005, unit="A"),
         make_row("mtq-winding-length", "Single-layer winding length N·√S_r at N = 240",
-                 "Bui (2016) §3.2, seed line 434 (printed, ≈ 0.1 m)", 0.1,
+                 "thesis §3.2 (printed, ≈ 0.1 m)", 0.1,
                  mtq.winding_length(n, s_design), 0.05, unit="m"),
     ]
 
@@ -309,7 +307,7 @@ def bench_rows(params=None):
                                    window=p["bench_error_window"])
         rows.append(make_row(
             f"bench-error-{tag}", f"Orientation error on the bench, ψ_des = {label}",
-            "thesis §4.4, seed line 616 (measured; metric not stated)", measured.value,
+            "thesis §4.4 (measured; metric not stated)", measured.value,
             float(run.error_band[0]), 0.5 * deg, unit="deg", scale=deg,
             note="model: error band of the last window of a nominal simulated run"))
     return rows

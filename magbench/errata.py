@@ -49,6 +49,15 @@ class SourceCheck:
         return abs(self.printed - self.computed) <= self.tolerance
 
 
+
+def _kovalenko_page(seed_line):
+    """The printed page of a line of the Kovalenko transcription (one line per page).
+
+    The page number is the line's last token: line N is page N − 1 up to line 115 and
+    page N from line 116 on (an unnumbered page before it), per the seed's README.
+    """
+    return seed_line - 1 if seed_line <= 115 else seed_line
+
 def geomagnetic_checks(params=None):
     """Chapter 1: thesis §1 and Kovalenko ch. 2 (the dipole values)."""
     p = params or chapter_parameters("ch01")
@@ -73,7 +82,7 @@ def geomagnetic_checks(params=None):
     return [
         SourceCheck(
             id="thesis-eq3-inclination-sign", chapter="ch01", source="thesis",
-            location="eqs. (1), (3); seed lines 108, 116 (from Kovalenko eq. 2.3)",
+            location="§1.1, eqs. (1), (3) (from Kovalenko eq. 2.3)",
             quantity="Inclination J at the laboratory (St Petersburg) from eq. (3)",
             printed=float(np.degrees(printed_j)),
             computed=float(np.degrees(geomag.dipole_inclination(phi))),
@@ -86,7 +95,7 @@ def geomagnetic_checks(params=None):
         ),
         SourceCheck(
             id="thesis-equator-field", chapter="ch01", source="thesis",
-            location="§1.1, seed line 118 (copied from Kovalenko p. 35)",
+            location="§1.1, after eq. (3) (copied from Kovalenko p. 35)",
             quantity="Dipole field at the equator, M/R³",
             printed=0.31, computed=float(tesla_to_oersted(geomag.dipole_equatorial_b(m, r))),
             tolerance=0.005, unit="Oe",
@@ -95,7 +104,7 @@ def geomagnetic_checks(params=None):
         ),
         SourceCheck(
             id="thesis-pole-field-rounding", chapter="ch01", source="thesis",
-            location="§1.1, seed line 118 (copied from Kovalenko p. 35)",
+            location="§1.1, after eq. (3) (copied from Kovalenko p. 35)",
             quantity="Dipole field at the poles, 2M/R³",
             printed=0.62, computed=pole_h, tolerance=0.005, unit="Oe",
             explanation=("2M/R³ with M = 8.1·10²⁵ CGS and R = 6371 km is 0.6265 Oe, which rounds "
@@ -104,7 +113,7 @@ def geomagnetic_checks(params=None):
         ),
         SourceCheck(
             id="thesis-eq5-cgs-torque", chapter="ch01", source="thesis",
-            location="eq. (5), seed line 136",
+            location="§1.2, eq. (5)",
             quantity="Torque on L = 0.4 A·m² across H = 250 A/m from M = L × H",
             printed=moment_l * field_h,
             computed=float(np.linalg.norm(geomag.magnetic_torque_from_h(
@@ -117,7 +126,7 @@ def geomagnetic_checks(params=None):
         ),
         SourceCheck(
             id="thesis-eq12a-energy-ratio", chapter="ch01", source="thesis",
-            location="§1.3, seed line 196",
+            location="§1.3",
             quantity="Energy handed to the Earth per unit lost by a despinning mock-up, ΔT_E/ΔT_c",
             printed=thesis_ratio, computed=exact, tolerance=0.0, unit="1",
             explanation=("The thesis sets ΔT_E/ΔT_c = |Δω_E/Δω_c| = J_c/J_E by treating Δ(ω²) as "
@@ -128,7 +137,7 @@ def geomagnetic_checks(params=None):
         ),
         SourceCheck(
             id="kovalenko-mean-dipole-field", chapter="ch01", source="kovalenko",
-            location="§2.2, p. 40 (seed line 41)",
+            location="§2.2, p. 40",
             quantity="Mean dipole field over the Earth's surface, from the book's own Table 1",
             printed=float(ampere_per_meter_to_oersted(kov["kov-mean-field-dipole"].value)), computed=mean_dipole,
             tolerance=0.00005, unit="Oe",
@@ -160,7 +169,7 @@ def kovalenko_field_checks():
             row = kov[f"kov-rms-{kind}-{tag}"]
             checks.append(SourceCheck(
                 id=f"kovalenko-rms-{kind}-{tag}", chapter="ch01", source="kovalenko",
-                location=f"Table 2, p. 40 (seed line {row.seed_line})",
+                location="Table 2, p. 40",
                 quantity=f"RMS {'total' if kind == 'field' else 'dipole'} field at {row.conditions}",
                 printed=float(ampere_per_meter_to_oersted(row.value)), computed=float(tesla_to_oersted(value)), tolerance=0.0005, unit="Oe",
                 explanation=("Lowes spectrum of IGRF-14 1965.0 up to degree 6 at the book's "
@@ -172,13 +181,13 @@ def kovalenko_field_checks():
     mean1 = float(tesla_to_oersted(igrf.igrf_mean_surface_b(1965.0, max_degree=1)))
     checks += [
         SourceCheck(id="kovalenko-mean-field-n6", chapter="ch01", source="kovalenko",
-                    location="§2.2, p. 40 (seed line 41)",
+                    location="§2.2, p. 40",
                     quantity="Mean total field over the Earth's surface, degrees n ≤ 6",
                     printed=float(ampere_per_meter_to_oersted(kov["kov-mean-field-n6"].value)), computed=mean6, tolerance=0.0005,
                     unit="Oe", explanation="Gauss–Legendre surface mean of |B| of IGRF-14 1965.0.",
                     computation="magbench.igrf.igrf_mean_surface_b"),
         SourceCheck(id="kovalenko-dipole-accuracy", chapter="ch01", source="kovalenko",
-                    location="§2.2, p. 41 (seed line 42)",
+                    location="§2.2, p. 41",
                     quantity="Accuracy of the dipole approximation A₁ = T₁c/T_c",
                     printed=kov["kov-dipole-accuracy"].value * 100, computed=100 * mean1 / mean6,
                     tolerance=0.5, unit="%", explanation="Ratio of the two surface means.",
@@ -188,7 +197,7 @@ def kovalenko_field_checks():
     b2 = np.sum(b**2, axis=-1)
     checks.append(SourceCheck(
         id="kovalenko-polar-orbit-b2-ratio", chapter="ch01", source="kovalenko",
-        location="p. 99 (seed line 100)", quantity="Largest/smallest B² on a circular geopolar orbit",
+        location="p. 99", quantity="Largest/smallest B² on a circular geopolar orbit",
         printed=kov["kov-polar-orbit-b2-ratio"].value, computed=float(b2.max() / b2.min()),
         tolerance=0.5, unit="1", explanation="Eq. (2.40) with i = 90°: |B|² ∝ 1 + 3 sin²u.",
         computation="magbench.geomag.orbital_dipole_b"))
@@ -209,7 +218,7 @@ def magnetorquer_checks():
     return [
         SourceCheck(
             id="thesis-mtq-built-moment", chapter="ch03", source="thesis",
-            location="§3.3, seed line 441", quantity="Dipole moment of the built coil at 12 V (eq. 20)",
+            location="§3.3", quantity="Dipole moment of the built coil at 12 V (eq. 20)",
             printed=built["mtq-moment"].value, computed=float(mtq.moment_from_voltage(u, side, s_built, rho)),
             tolerance=0.005, unit="A m^2",
             explanation=("Eq. (20) with the 0.2 mm wire gives 0.539 A·m² for round and square turns "
@@ -218,27 +227,27 @@ def magnetorquer_checks():
             computation="magbench.magnetorquer.moment_from_voltage"),
         SourceCheck(
             id="thesis-mtq-current-for-moment", chapter="ch03", source="thesis",
-            location="§4.2, seed line 516", quantity="Coil current for 0.4 A·m² (m = I S N, square, N = 240)",
+            location="§4.1", quantity="Coil current for 0.4 A·m² (m = I S N, square, N = 240)",
             printed=0.24, computed=float(mtq.current_for_moment(m_req, n, mtq.turn_area(side, "square"))),
             tolerance=0.005, unit="A",
             explanation="I = m/(N l²) = 0.167 A; line 524 then says 0.25 A, which fits neither.",
             computation="magbench.magnetorquer.current_for_moment"),
         SourceCheck(
             id="thesis-mtq-winding-length", chapter="ch03", source="thesis",
-            location="§3.2, seed line 434", quantity="Single-layer winding length N·√S_r at N = 240",
+            location="§3.2", quantity="Single-layer winding length N·√S_r at N = 240",
             printed=0.1, computed=float(mtq.winding_length(n, s_design)), tolerance=0.05, unit="m",
             explanation="N = L/√S_r (the thesis's own relation) gives L = 0.037 m, not ≈ 0.1 m.",
             computation="magbench.magnetorquer.winding_length"),
         SourceCheck(
             id="thesis-mtq-wire-area", chapter="ch03", source="thesis",
-            location="§3.2, seed line 431", quantity="Conductor cross-section S_r = 4ρm/(Ul) (eq. 21)",
+            location="§3.2", quantity="Conductor cross-section S_r = 4ρm/(Ul) (eq. 21)",
             printed=2.34e-8, computed=float(s_design), tolerance=0.005e-8, unit="m^2",
             explanation=("Eq. (21) gives 2.333·10⁻⁸ m², printed rounded up; the printed wire diameter "
                          "0.172 mm follows from 2.333 (2.34 would give 0.173 mm)."),
             computation="magbench.magnetorquer.wire_area_for_moment"),
         SourceCheck(
             id="kovalenko-e02-torque-per-mass", chapter="ch03", source="kovalenko",
-            location="eq. (1.7), p. 30 (seed line 31)",
+            location="eq. (1.7), p. 30",
             quantity="Torque per kilogram of permanent magnet (B_r = 1.4 T, B = 0.5·10⁻⁴ T, γ = 7500 kg/m³)",
             printed=load_measurements("kovalenko")["kov-magnet-torque-per-mass"].value,
             computed=float(mtq.magnet_torque_per_mass(1.4, 0.5e-4, 7.5e3)),
@@ -276,42 +285,42 @@ def magnetorquer_design_checks():
                            computation=f"magbench.magnetorquer.{computation}")
 
     return [
-        check("thesis-mtq-rho-rho", "eq. (32), seed line 420", "Product ρρ̃ of copper", 0.156e-3,
+        check("thesis-mtq-rho-rho", "§3.2, eq. (32)", "Product ρρ̃ of copper", 0.156e-3,
               rho * gamma, 0.0005e-3, "ohm kg/m^2", "0.0175·10⁻⁶ × 8.9·10³.", "mass_power_product"),
-        check("thesis-mtq-eq32-mass", "eq. (32), seed line 420", "Mass coefficient 16ρρ̃m in M = c·N/U",
+        check("thesis-mtq-eq32-mass", "§3.2, eq. (32)", "Mass coefficient 16ρρ̃m in M = c·N/U",
               1e-3, mtq.coil_mass_for_moment(m_req, 1.0, 1.0, rho, gamma, "square"), 0.5e-3, "kg V",
               f"0.997·10⁻³ with the {sq}.", "coil_mass_for_moment"),
-        check("thesis-mtq-eq32-power", "eq. (32), seed line 420", "Power coefficient m/l² in W = c·U/N",
+        check("thesis-mtq-eq32-power", "§3.2, eq. (32)", "Power coefficient m/l² in W = c·U/N",
               40.0, mtq.joule_power_for_moment(m_req, 1.0, 1.0, side, "square"), 0.5, "W/V",
               f"m/l² = 40 with the {sq}.", "joule_power_for_moment"),
-        check("thesis-mtq-turns-min", "§3.2, seed line 426", "Fewest turns for W ≤ 2 W at 12 V",
+        check("thesis-mtq-turns-min", "§3.2", "Fewest turns for W ≤ 2 W at 12 V",
               240.0, lo * u, 6.0, "1", "12 V × the printed N/U ≥ 20; tolerance 12 × half a unit of 20.",
               "turns_per_volt_bounds"),
-        check("thesis-mtq-turns-max", "§3.2, seed line 426", "Most turns for M ≤ 0.1 kg at 12 V",
+        check("thesis-mtq-turns-max", "§3.2", "Most turns for M ≤ 0.1 kg at 12 V",
               1200.0, hi * u, 6.0, "1", "1203.8: the thesis rounded 16ρρ̃m = 0.997·10⁻³ to 10⁻³.",
               "turns_per_volt_bounds"),
-        check("thesis-mtq-design-mass", "§3.2, seed line 429", "Conductor mass at N = 240", 0.02,
+        check("thesis-mtq-design-mass", "§3.2", "Conductor mass at N = 240", 0.02,
               mtq.coil_mass_for_moment(m_req, u, n, rho, gamma, "square"), 0.005, "kg",
               f"Eq. (29), {sq}; a round turn would give 0.0157 kg.", "coil_mass_for_moment"),
-        check("thesis-mtq-design-power", "§3.2, seed line 435", "Joule power at N = 240", 2.0,
+        check("thesis-mtq-design-power", "§3.2", "Joule power at N = 240", 2.0,
               mtq.joule_power_for_moment(m_req, u, n, side, "square"), 0.5, "W", "Eq. (28).",
               "joule_power_for_moment"),
-        check("thesis-mtq-wire-diameter", "§3.2, seed line 431", "Wire diameter for S_r of eq. (21)",
+        check("thesis-mtq-wire-diameter", "§3.2", "Wire diameter for S_r of eq. (21)",
               0.172e-3, mtq.wire_diameter(s_design), 0.0005e-3, "m", "√(4S_r/π) with S_r = 2.333·10⁻⁸ m².",
               "wire_diameter"),
-        check("thesis-mtq-resistance", "§3.3, seed line 439", "Resistance of the built coil (0.2 mm, N = 240)",
+        check("thesis-mtq-resistance", "§3.3", "Resistance of the built coil (0.2 mm, N = 240)",
               built["mtq-resistance-computed"].value, r_built, 0.05, "ohm",
               f"N·ρ·4l/S_r with the {sq}; 42.0 Ω if the turn were round.", "coil_resistance"),
-        check("thesis-mtq-resistance-excess", "§3.3, seed line 441",
+        check("thesis-mtq-resistance-excess", "§3.3",
               "Excess of the measured ≈ 55 Ω over the computed resistance", 3.0,
               100.0 * (r_meas - r_built) / r_built, 0.5, "%", "(55 − 53.48)/53.48.", "coil_resistance"),
-        check("thesis-mtq-built-power", "§3.2–3.3, seed lines 410, 435, 439",
+        check("thesis-mtq-built-power", "§3.2–3.3",
               "Joule power of the built coil at 12 V, against the design's 2 W", 2.0,
               mtq.joule_power(u, r_built), 0.5, "W",
               ("The 0.2 mm wire (thicker than the 0.172 mm design) at N = 240 draws 12²/53.5 = 2.69 W, "
                "above the W ≤ 2 W limit the thesis set itself; N ≥ 324 turns would keep it."),
               "joule_power"),
-        check("thesis-mtq-current-025", "§4.2, seed line 524", "Coil current for 0.4 A·m² (second value)",
+        check("thesis-mtq-current-025", "§4.1", "Coil current for 0.4 A·m² (second value)",
               0.25, mtq.current_for_moment(m_req, n, mtq.turn_area(side, "square")), 0.005, "A",
               "I = m/(N l²) = 0.167 A; line 516 says 0.24 A for the same moment.", "current_for_moment"),
     ]
@@ -331,7 +340,7 @@ def kovalenko_actuator_checks():
     def check(id, row, quantity, computed, tolerance, unit, explanation, computation, scale=1.0):
         r = kov[row]
         return SourceCheck(id=id, chapter="ch03", source="kovalenko",
-                           location=f"§{r.section} (seed line {r.seed_line})", quantity=quantity,
+                           location=f"§{r.section}, p. {_kovalenko_page(r.seed_line)}", quantity=quantity,
                            printed=r.value * scale, computed=float(computed), tolerance=tolerance,
                            unit=unit, explanation=explanation,
                            computation=f"magbench.magnetorquer.{computation}")
@@ -377,20 +386,20 @@ def simulator_checks():
     return [
         SourceCheck(
             id="thesis-sim-ampere-turns", chapter="ch02", source="thesis",
-            location="eq. (16), seed lines 263–270", quantity="Ampere-turns per coil for 250 A/m (a = 0.5 m, d/a = 1.116)",
+            location="§2.2, eq. (16)", quantity="Ampere-turns per coil for 250 A/m (a = 0.5 m, d/a = 1.116)",
             printed=258.0, computed=float(coils.helmholtz_ampere_turns(h, a, ratio * a)), tolerance=0.5,
             unit="A", explanation=("Eq. (16) gives 187.7 A·turns; the printed 258 is reproduced exactly by "
                                    "evaluating (d/2a)² as (d/a)²/2 (magbench.coils.thesis_printed_ampere_turns)."),
             computation="magbench.coils.helmholtz_ampere_turns"),
         SourceCheck(
             id="thesis-sim-coil-resistance", chapter="ch02", source="thesis",
-            location="seed line 278", quantity="Resistance of a simulator coil, N = 110, 0.75 mm copper",
+            location="§2.2", quantity="Resistance of a simulator coil, N = 110, 0.75 mm copper",
             printed=12.4, computed=float(coils.winding_resistance(a, n, dw, rho)), tolerance=0.05,
             unit="ohm", explanation="R = 2πaρN/S0 gives 13.69 Ω; 12.4 Ω is the value for N = 100.",
             computation="magbench.coils.winding_resistance"),
         SourceCheck(
             id="thesis-sim-coil-power", chapter="ch02", source="thesis",
-            location="seed line 286", quantity="Power of a simulator coil, N = 110, I = 2.3 A",
+            location="§2.2", quantity="Power of a simulator coil, N = 110, I = 2.3 A",
             printed=83.0, computed=float(coils.winding_power(a, n, dw, rho, i)), tolerance=0.5,
             unit="W", explanation="P = UI gives 72.4 W; 83 W fits N = 100 and I = 2.58 A (NI = 258).",
             computation="magbench.coils.winding_power"),
@@ -422,7 +431,7 @@ def simulator_field_checks():
     return [
         SourceCheck(
             id="thesis-eq15-required-field", chapter="ch02", source="thesis",
-            location="eq. (15), seed lines 238–240", quantity="Field for a 60 s swing, eq. (15) as printed",
+            location="§2.1, eq. (15)", quantity="Field for a 60 s swing, eq. (15) as printed",
             printed=200.0, computed=h_printed_eq, tolerance=50.0, unit="A/m",
             explanation=("4π²J/(μ0 m T²) with J = 0.005 kg·m², m = 0.6 A·m², T = 60 s is 72.7 A/m. The "
                          "printed ≈ 200 A/m needs the amplitude factor A = π that line 236 defines and "
@@ -430,13 +439,13 @@ def simulator_field_checks():
             computation="magbench.coils.oscillation_field_h"),
         SourceCheck(
             id="thesis-eq15-with-amplitude", chapter="ch02", source="thesis",
-            location="eq. (15) with A = π, seed line 240", quantity="Field for a 60 s swing, with the factor A = π",
+            location="§2.1, eq. (15) with A = π", quantity="Field for a 60 s swing, with the factor A = π",
             printed=200.0, computed=h_with_a, tolerance=50.0, unit="A/m",
             explanation="4π²JA/(μ0 m T²) = 228.5 A/m, which '≈ 200' rounds down (one printed digit).",
             computation="magbench.coils.oscillation_field_h"),
         SourceCheck(
             id="thesis-sim-coil-voltage", chapter="ch02", source="thesis",
-            location="seed line 282", quantity="Supply voltage of a simulator coil, N = 110, I = 2.3 A",
+            location="§2.2", quantity="Supply voltage of a simulator coil, N = 110, I = 2.3 A",
             printed=32.0, computed=float(coils.winding_voltage(a, n, v["sim_wire_diameter"],
                                                                v["copper_resistivity"], i)),
             tolerance=0.5, unit="V",
@@ -445,13 +454,13 @@ def simulator_field_checks():
             computation="magbench.coils.winding_voltage"),
         SourceCheck(
             id="thesis-sim-power-at-limit", chapter="ch02", source="thesis",
-            location="§2.4, seed line 316", quantity="Power of one coil at 2.6 A and 13 Ω",
+            location="§2.4", quantity="Power of one coil at 2.6 A and 13 Ω",
             printed=m["sim-coil-power-max"].value, computed=i_max**2 * r_max, tolerance=0.05, unit="W",
             explanation="I²R = 2.6² × 13 = 87.88 W (with the measured 13 Ω; 13.69 Ω would give 92.5 W).",
             computation="I**2 * R"),
         SourceCheck(
             id="thesis-sim-center-deviation", chapter="ch02", source="thesis",
-            location="§2.4, seed line 318", quantity="Deviation of the measured 262 A/m from the calculated field",
+            location="§2.4", quantity="Deviation of the measured 262 A/m from the calculated field",
             printed=m["sim-center-h-deviation"].value * 100, computed=100 * (measured - h_built) / h_built,
             tolerance=0.05, unit="%",
             explanation=("(262 − 250)/250 = 4.8 % compares with the design target, not with what the coils "
@@ -460,20 +469,20 @@ def simulator_field_checks():
             computation="magbench.coils.helmholtz_center_h"),
         SourceCheck(
             id="kovalenko-helmholtz-cylinder", chapter="ch02", source="kovalenko",
-            location="§3.4, p. 60 (seed line 61)",
+            location="§3.4, p. 60",
             quantity="Helmholtz pair: largest deviation in a cylinder of radius 0.1r, length 0.2r",
             printed=0.02, computed=100 * coils.coaxial_system_cylinder_nonuniformity(circle2, *helm, 0.1, 0.2),
             tolerance=0.005, unit="%", explanation="Exact loop fields on a grid of the solid cylinder.",
             computation="magbench.coils.coaxial_system_cylinder_nonuniformity"),
         SourceCheck(
             id="kovalenko-square-pair-spacing", chapter="ch02", source="kovalenko",
-            location="§3.4, p. 60 (seed line 61)", quantity="Square Helmholtz pair: spacing / side",
+            location="§3.4, p. 60", quantity="Square Helmholtz pair: spacing / side",
             printed=0.5445, computed=float(coils.square_pair_spacing(1.0)), tolerance=0.00005, unit="1",
             explanation="Zero curvature of the axial field at the centre.",
             computation="magbench.coils.square_pair_spacing"),
         SourceCheck(
             id="kovalenko-rubens-cylinder", chapter="ch02", source="kovalenko",
-            location="§3.4, pp. 61–62 (seed lines 62, 64)",
+            location="§3.4, pp. 61–62",
             quantity="Rubens coils: largest deviation in a cylinder of length a/2, radius a/4",
             printed=1.0, computed=100 * coils.coaxial_system_cylinder_nonuniformity(*rubens, 0.25, 0.5),
             tolerance=0.5, unit="%",
@@ -481,7 +490,7 @@ def simulator_field_checks():
             computation="magbench.coils.coaxial_system_cylinder_nonuniformity"),
         SourceCheck(
             id="kovalenko-four-coil-sphere", chapter="ch02", source="kovalenko",
-            location="§3.4, p. 61 (seed line 62)",
+            location="§3.4, p. 61",
             quantity="Four-coil system: largest deviation in a sphere of radius 2r/3",
             printed=0.5, computed=100 * four_dev, tolerance=0.05, unit="%",
             explanation=("Equal radii r, inner coils at ±0.25r, outer at ±r, ampere-turns 7 : 3 give 1.46 % "
@@ -489,7 +498,7 @@ def simulator_field_checks():
             computation="magbench.coils.coaxial_system_sphere_nonuniformity"),
         SourceCheck(
             id="kovalenko-four-coil-helmholtz-size", chapter="ch02", source="kovalenko",
-            location="§3.4, p. 61 (seed line 62)",
+            location="§3.4, p. 61",
             quantity="Helmholtz radius / four-coil radius for the same uniformity in the same sphere",
             printed=2.0, computed=(2.0 / 3.0) / coils.uniform_sphere_radius(1.0, 1.0, four_dev),
             tolerance=0.5, unit="1",
@@ -515,7 +524,7 @@ def dynamics_checks(params=None):
     return [
         SourceCheck(
             id="thesis-eq14-design-amplitude", chapter="ch04", source="thesis",
-            location="§2.1 and §3.2, seed lines 236–240, 396–398 (eqs. 14–15 with A = π)",
+            location="§2.1 and §3.2 (eqs. 14–15 with A = π)",
             quantity="Amplitude at which the built design (m = 0.4 A·m², H = 250 A/m) swings with the design period 60 s",
             printed=float(np.degrees(p["oscillation_amplitude"])), computed=float(np.degrees(amplitude)),
             tolerance=0.5, unit="deg",
@@ -526,7 +535,7 @@ def dynamics_checks(params=None):
             computation="magbench.attitude.amplitude_for_period"),
         SourceCheck(
             id="thesis-pid-gains-stable-si", chapter="ch04", source="thesis",
-            location="§4.1, seed lines 565–579 (Figs. 15–18)",
+            location="§4.1 (Figs. 15–18)",
             quantity="Printed PID gain sets that give a stable loop with the gains read in SI",
             printed=float(len(sets)), computed=float(stable), tolerance=0.0, unit="1",
             explanation=("Figs. 15–18 are presented as damped responses for six gain sets, but in SI "

@@ -26,7 +26,18 @@ def test_geomagnetic_rows_have_the_public_keys():
     assert by_id["pole-latitude-2016"].verdict == "disagrees"
 
 
-def test_today_decimal_year():
+def test_no_row_depends_on_the_build_date(monkeypatch):
+    """Rows are dated 1960, the thesis's year and IGRF-14's newest main-field epoch,
+    never by the clock: a build a year later gives the same rows."""
     import datetime as dt
 
-    assert compare.today_decimal_year(dt.date(2026, 1, 1)) == 2026.0
+    ids = [r.id for r in compare.all_rows()]
+    assert "dipole-moment-2025" in ids and "dipole-moment-1960" in ids
+
+    class Later(dt.datetime):
+        @classmethod
+        def now(cls, tz=None):
+            return dt.datetime(2031, 6, 1, tzinfo=tz)
+
+    monkeypatch.setattr(dt, "datetime", Later)
+    assert [r.id for r in compare.all_rows()] == ids
