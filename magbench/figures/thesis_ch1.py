@@ -200,10 +200,10 @@ def plot_elements(data):
     a1.set_ylabel("field [µT]")
     a1.axhline(0, color="0.7", linewidth=0.6)
     a1.legend()
-    a2.plot(c["geomagnetic_latitude"], c["J"], label="tan J = 2 tan Φ (correct)")
-    a2.plot(c["geomagnetic_latitude"], -c["J"], "C3--", label="tan J = −2 tan Φ (as printed)")
+    a2.plot(c["geomagnetic_latitude"], c["J"], label="tan I = 2 tan Φ (correct)")
+    a2.plot(c["geomagnetic_latitude"], -c["J"], "C3--", label="tan I = −2 tan Φ (as printed)")
     a2.set_xlabel("geomagnetic latitude Φ [deg]")
-    a2.set_ylabel("inclination J [deg]")
+    a2.set_ylabel("inclination I [deg]")
     a2.legend(fontsize=8)
     return fig
 
