@@ -112,9 +112,25 @@ _UNITS = {"uT": "µT", "ohm": "Ω", "Ohm": "Ω", "A m^2": "A·m²", "m^2": "m²"
           "kg/m^3": "kg/m³", "A/m^2": "A/m²", "m/s^2": "m/s²"}
 
 
+_SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
 def display_unit(unit):
-    """A unit as a reader writes it: ``uT`` → µT, ``A m^2`` → A·m², ``ohm`` → Ω."""
-    return _UNITS.get(unit, unit)
+    """A unit as a reader writes it: ``uT`` → µT, ``A m^2`` → A·m², ``ohm`` → Ω.
+
+    Compound units are written factor by factor: a space between factors becomes a
+    middle dot and integer powers become superscripts.
+
+    >>> display_unit("ohm kg/m^2")
+    'Ω·kg/m²'
+    >>> display_unit("kg/(N m)")
+    'kg/(N·m)'
+    """
+    if unit in _UNITS:
+        return _UNITS[unit]
+    text = re.sub(r"\^(-?\d+)", lambda m: m.group(1).translate(_SUPERSCRIPTS), unit)
+    text = re.sub(r"\bohm\b", "Ω", text).replace("uT", "µT")
+    return re.sub(r"(?<=\S) (?=\S)", "·", text)
 
 
 def format_quantity(value, unit="", digits=3, *, uncertainty=None):
