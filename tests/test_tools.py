@@ -44,7 +44,7 @@ def test_book_check_sees_every_page_including_sections():
     assert on_disk == listed
 
 
-def _page(tmp_path, body, image=None):
+def _page(tmp_path, body, image=None, provenance=True):
     """A synthetic built page (and optionally its image) for the book check."""
     html = tmp_path / "html"
     (html / "book").mkdir(parents=True)
@@ -54,7 +54,14 @@ def _page(tmp_path, body, image=None):
 
         Image.fromarray(image).save(html / "_images" / "f.png")
     page = html / "book" / "p.html"
-    page.write_text(f"<html><body><main>{body}</main></body></html>", encoding="utf-8")
+    footer = ('<footer><p class="magbench-provenance">Built from commit abc on 2026-01-01 00:00 UTC '
+              'with requirements.lock sha256 0123456789ab.</p></footer>') if provenance else ""
+    # The executed notebook the page offers for download, with one output.
+    (html / "_sources" / "book").mkdir(parents=True)
+    (html / "_sources" / "book" / "p.ipynb").write_text(
+        '{"cells": [{"cell_type": "code", "outputs": [{"output_type": "stream", "text": "x"}]}]}')
+    download = '<a href="../_sources/book/p.ipynb">.ipynb</a>'
+    page.write_text(f"<html><body>{download}<main>{body}</main>{footer}</body></html>", encoding="utf-8")
     return page, html
 
 
@@ -91,11 +98,27 @@ def test_book_check_fails_on_each_defect_it_names(tmp_path):
         "prints": ('<div class="cell tag_remove-input"><div class="cell_output">'
                    '<div class="output text_plain"><pre>0.46672777760429107</pre></div></div></div>', None),
         "raw Markdown table": ("<p>| printed | computed |\n|---|---|\n| 1 | 2 |</p>", None),
+        "e-notation": ("<p>The ratio is 6.22e-41 of it.</p>", None),
+        "internal label": ("<p>As printed (seed line 118).</p>", None),
+        "without a caption": ("<table><tr><td>1</td></tr></table>", None),
     }
     for expected, (body, image) in cases.items():
         page, html = _page(tmp_path / expected.replace(" ", "_"), body, image)
         problems, _, _ = check_page("p", page, html)
         assert any(expected in p for p in problems), (expected, problems)
+
+
+def test_book_check_wants_the_build_provenance(tmp_path):
+    page, html = _page(tmp_path, "<p>Text.</p>", provenance=False)
+    problems = _load("check_book").check_page("p", page, html)[0]
+    assert any("no build provenance" in p for p in problems), problems
+
+
+def test_book_check_leaves_code_alone(tmp_path):
+    """e-notation in code (a parameters cell) is the reader's Python, not prose."""
+    page, html = _page(tmp_path, '<div class="cell"><div class="cell_input"><pre>x = 6.22e-41</pre></div></div>'
+                                 "<p>Inline <code>1e-3</code> too.</p>")
+    assert _load("check_book").check_page("p", page, html)[0] == []
 
 
 def test_book_check_allows_output_of_a_visible_cell(tmp_path):

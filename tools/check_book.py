@@ -54,6 +54,22 @@ def image_is_blank(path):
     return all(low == high for low, high in extrema)
 
 
+#: A number like 6.2e-41 in the reader's text (code is exempt): prose writes a·10ⁿ.
+E_NOTATION = re.compile(r"(?<![\w.])\d+(?:\.\d+)?e[-+]?\d+(?![\w.])")
+#: Working labels of the transcription that mean nothing to a reader.
+INTERNAL_LABEL = re.compile(r"seed line|seed text|inventory gap|\bTH-[A-Za-z0-9]+|\bgap G\d+")
+
+
+def _prose_text(main):
+    """The page's text without code: source cells, code blocks and inline code."""
+    import copy
+
+    main = copy.copy(main)
+    for node in main.select("div.cell_input, pre, code"):
+        node.decompose()
+    return main.get_text(" ")
+
+
 def check_page(name, page_path, html_dir):
     """Problems of one built page, and its counts (figures shown, equations, tables)."""
     from bs4 import BeautifulSoup
@@ -62,6 +78,11 @@ def check_page(name, page_path, html_dir):
     main = soup.find("main") or soup
     text = main.get_text(" ")
     problems = []
+    prose = _prose_text(main)
+    for pattern, what in ((E_NOTATION, "a number in e-notation"), (INTERNAL_LABEL, "an internal label")):
+        for match in pattern.finditer(prose):
+            snippet = " ".join(prose[max(0, match.start() - 30):match.end() + 20].split())
+            problems.append(f"{name}: {what} in the text: …{snippet}…")
     if "<Figure size" in text:
         problems.append(f"{name}: a figure is shown as its text repr ('<Figure size …')")
     if RAW_TABLE.search(text):
