@@ -88,9 +88,9 @@ def _file_metadata(path, description):
 
 
 def _cmd_compare(args):
-    from .compare import all_rows
+    from .chapters import comparisons
 
-    rows = all_rows()
+    rows = comparisons()
     if args.json:
         print(json.dumps([r.as_dict() for r in rows], indent=1))
         return 0

@@ -247,7 +247,7 @@ def compare_table(rows, caption="Model beside measurement", *, label=None, again
     def value(x, unit, digits=4):
         return format_quantity(x, unit, digits)
 
-    from .compare import row_kind
+    from .chapters import row_kind
 
     def reference(r):
         if r.uncertainty or row_kind(r) not in ("measurement", "printed"):

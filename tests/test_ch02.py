@@ -11,7 +11,8 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from magbench import coils, compare, figures
+from magbench import chapters, coils, figures
+from magbench.chapters import ch02_field_simulator
 from magbench.cli import main
 from magbench.constants import MU_0
 from magbench.figures import thesis_ch2
@@ -205,7 +206,7 @@ def test_system_bad_input():
 
 
 def test_simulator_rows():
-    rows = {r.id: r for r in compare.simulator_rows()}
+    rows = {r.id: r for r in ch02_field_simulator.simulator_rows()}
     centre = rows["sim-center-h"]
     assert_allclose(centre.model, _eq16(N * I, A, D_BUILT), rtol=1e-14)
     assert centre.measured == MEASURED and centre.verdict == "disagrees"
@@ -216,7 +217,7 @@ def test_simulator_rows():
     assert rows["sim-coil-resistance"].verdict == "agrees"     # 13.69 within 12–13 ± 1 Ω
     assert rows["comsol-uniform-axial"].verdict == "agrees"
     assert rows["comsol-uniform-transverse"].verdict == "disagrees"
-    assert "ch02" in compare.PROVIDERS
+    assert chapters.chapter("ch02").comparisons is ch02_field_simulator.simulator_rows
 
 
 def test_exact_maximum_on_both_lines_is_the_centre_for_comsol_geometry():

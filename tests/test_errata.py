@@ -7,7 +7,7 @@ change that makes a printed number suddenly reproduce (or stop reproducing) fail
 import pytest
 from numpy.testing import assert_allclose
 
-from magbench.errata import errata, source_checks
+from magbench.chapters import errata, source_checks
 
 EXPECTED_ERRATA = {
     "thesis-eq3-inclination-sign": "printed tan J = −2 tan Φ gives J < 0 in the north",

@@ -7,7 +7,7 @@ import matplotlib
 import pytest
 from PIL import Image
 
-from magbench import compare, report
+from magbench import chapters, report
 
 
 @pytest.mark.parametrize("backend", ["agg", "pdf", "svg", "template"])
@@ -84,8 +84,8 @@ def test_table_is_a_captioned_labelled_list_table():
 
 
 def test_compare_table_shows_written_digits_for_values_written_without_uncertainty():
-    rows = {r.id: r for r in compare.all_rows()}
-    bench = [r for r in rows.values() if compare.row_kind(r) == "measurement" and r.unit == "deg"]
+    rows = {r.id: r for r in chapters.comparisons()}
+    bench = [r for r in rows.values() if chapters.row_kind(r) == "measurement" and r.unit == "deg"]
     assert bench, "the bench's orientation-error rows"
     text = report.compare_table(bench, "bench").data
     assert "  - 10°" in text and "10.00°" not in text

@@ -81,10 +81,9 @@ class FigureSpec:
         return f"{self.compute.__module__}.{self.compute.__qualname__}"
 
 
-#: Figure id -> FigureSpec, filled by the modules in :data:`_MODULES` on first use.
+#: Figure id -> FigureSpec, filled on first use by the figure modules each chapter names
+#: (:func:`magbench.chapters.figure_modules`).
 REGISTRY = {}
-_MODULES = ["magbench.figures.thesis_ch1", "magbench.figures.thesis_ch2", "magbench.figures.thesis_ch3",
-            "magbench.figures.thesis_ch4", "magbench.figures.estimation", "magbench.figures.bench"]
 _loaded = False
 
 
@@ -99,7 +98,9 @@ def register(spec):
 def _load():
     global _loaded
     if not _loaded:
-        for name in _MODULES:
+        from ..chapters import figure_modules
+
+        for name in figure_modules():
             importlib.import_module(name)
         _loaded = True
 

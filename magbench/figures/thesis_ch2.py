@@ -10,7 +10,8 @@ three-axis simulator that cancels the laboratory's field.
 
 import numpy as np
 
-from .. import coils, compare, igrf
+from .. import coils, igrf
+from ..chapters import ch02_field_simulator
 from ..constants import MU_0
 from ..data import load_measurements
 from ..params import chapter_parameters
@@ -513,7 +514,7 @@ def compute_hypotheses(turns, current, coil_radius, built_spacing, wire_diameter
     f = igrf.igrf_field(p["laboratory_latitude"], p["laboratory_longitude"], p["thesis_epoch"])
     earth_h = f.total / MU_0
     rows = hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper_resistivity,
-                      measured, (r_lo, r_hi), earth_h, compare.simulator_center_h_tolerance(current, turns, coil_radius))
+                      measured, (r_lo, r_hi), earth_h, ch02_field_simulator.simulator_center_h_tolerance(current, turns, coil_radius))
     a, d = coil_radius, built_spacing
     n_axis = np.linspace(40, 150, 111)
     s = np.linspace(0.0, 0.6, 241)

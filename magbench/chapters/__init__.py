@@ -1,0 +1,71 @@
+"""The chapters of the book, in order, and everything that walks them.
+
+Each chapter is one module here that owns its inputs, the modules of its figures, its
+model-vs-measurement rows and its source checks (see :class:`Chapter`). Adding a chapter
+is a new module and one line in :data:`CHAPTERS`; the figure registry,
+``magbench compare``, the errata page, the parameter overrides and the tests walk this
+list and need no other change.
+"""
+
+from . import ch01_earth_field, ch02_field_simulator, ch03_magnetorquers, ch04_mockup
+from ._base import OVERRIDES_ENV, Chapter, chapter_parameters, read_overrides
+
+__all__ = ["CHAPTERS", "Chapter", "OVERRIDES_ENV", "chapter", "chapter_parameters", "read_overrides",
+           "comparisons", "source_checks", "errata", "row_kind", "figure_modules"]
+
+#: The chapters in book order.
+CHAPTERS = [
+    ch01_earth_field.CHAPTER,
+    ch02_field_simulator.CHAPTER,
+    ch03_magnetorquers.CHAPTER,
+    ch04_mockup.CHAPTER,
+]
+
+
+def chapter(key):
+    """The :class:`Chapter` with ``key``; an unknown key raises ``KeyError`` listing the keys."""
+    for spec in CHAPTERS:
+        if spec.key == key:
+            return spec
+    raise KeyError(f"unknown chapter {key!r}; known: {', '.join(c.key for c in CHAPTERS)}")
+
+
+def _selected(key):
+    return CHAPTERS if key is None else [chapter(key)]
+
+
+def comparisons(key=None):
+    """Every model-vs-measurement row (of one chapter, or of all), in book order."""
+    return [row for spec in _selected(key) if spec.comparisons for row in spec.comparisons()]
+
+
+def source_checks(key=None):
+    """Every printed-vs-computed check (of one chapter, or of all), in book order."""
+    return [check for spec in _selected(key) for provider in spec.source_checks for check in provider()]
+
+
+def errata(key=None):
+    """The checks whose printed value disagrees with the computation: the errata."""
+    return [c for c in source_checks(key) if not c.agrees]
+
+
+def row_kind(row):
+    """The kind of value a row's ``measured`` column holds: a key of
+    :data:`magbench.compare.ROW_KINDS`, as the row's chapter declares it.
+
+    A row that no chapter classifies raises ``KeyError``: every new row must say whether
+    it compares with a measurement, a reference, a simulation or a printed value.
+    """
+    from ..compare import ROW_KINDS
+
+    for spec in CHAPTERS:
+        for prefix, kind in spec.row_kinds:
+            if row.id == prefix or (prefix.endswith("-") and row.id.startswith(prefix)):
+                return kind
+    raise KeyError(f"compare row {row.id!r} has no kind; add it to its chapter's row_kinds "
+                   f"as one of {', '.join(ROW_KINDS)}")
+
+
+def figure_modules():
+    """The modules that register every chapter's figures, in book order."""
+    return [name for spec in CHAPTERS for name in spec.figure_modules]

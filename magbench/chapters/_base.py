@@ -1,0 +1,130 @@
+"""What a chapter is, and the chapter inputs every page, figure and comparison reads.
+
+A chapter module (``magbench/chapters/chNN_*.py``) describes itself with one
+:class:`Chapter`: its key, title, book pages, the source whose parameter set holds its
+inputs, the names of those inputs, the modules that register its figures, its
+model-vs-measurement rows and its source checks. :data:`magbench.chapters.CHAPTERS`
+lists the chapters in book order; everything that walks chapters walks that list.
+"""
+
+import os
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..data import DataError, load_parameter_set
+
+__all__ = ["Chapter", "OVERRIDES_ENV", "chapter_parameters", "read_overrides"]
+
+#: Environment variable naming a TOML file of overrides for a whole-book build.
+OVERRIDES_ENV = "MAGBENCH_PARAMS"
+
+
+@dataclass(frozen=True)
+class Chapter:
+    """One chapter of the book and everything the library knows of it.
+
+    Attributes
+    ----------
+    key : str
+        Short id, ``"ch01"``; the section name in parameter overrides files.
+    title : str
+        The chapter's title, as the book names it.
+    pages : tuple of str
+        The book pages of the chapter (paths without ``.md``).
+    source : str
+        The source whose parameter set (``data/params/<source>.toml``) holds the inputs.
+    inputs : tuple of str
+        Names of the chapter's inputs in that parameter set.
+    figure_modules : tuple of str
+        Modules that register the chapter's figures when imported.
+    comparisons : callable or None
+        ``(params=None) -> list[CompareRow]``: the chapter's model-vs-measurement rows.
+    row_kinds : tuple of (str, str)
+        Row id (or id prefix ending in ``-``) and the kind of value it compares with, a key
+        of :data:`magbench.compare.ROW_KINDS`.
+    source_checks : tuple of callables
+        Each ``() -> list[SourceCheck]``: printed numbers beside their computation, always
+        on the source's own inputs (never on overridden parameters).
+    """
+
+    key: str
+    title: str
+    pages: tuple
+    source: str
+    inputs: tuple
+    figure_modules: tuple = ()
+    comparisons: object = None
+    row_kinds: tuple = ()
+    source_checks: tuple = field(default_factory=tuple)
+
+
+def _chapters():
+    from . import CHAPTERS
+
+    return CHAPTERS
+
+
+def _chapter(key):
+    for chapter in _chapters():
+        if chapter.key == key:
+            return chapter
+    raise KeyError(f"unknown chapter {key!r}; known: {', '.join(c.key for c in _chapters())}")
+
+
+def read_overrides(path):
+    """Read an overrides file into ``{section: {name: value}}`` (sections ``all``, ``chNN``)."""
+    path = Path(path)
+    try:
+        tables = tomllib.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise DataError(f"parameter file {path} (from ${OVERRIDES_ENV}) does not exist") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise DataError(f"{path}: {exc}") from None
+    inputs = {c.key: set(c.inputs) for c in _chapters()}
+    valid_sections = {"all", *inputs}
+    for section, values in tables.items():
+        if section not in valid_sections or not isinstance(values, dict):
+            raise DataError(f"{path}: unknown section [{section}]; valid: {', '.join(sorted(valid_sections))}")
+        for name, value in values.items():
+            if isinstance(value, bool) or not isinstance(value, int | float):
+                raise DataError(f"{path}: [{section}] {name} must be a number (SI), got {value!r}")
+            known = set().union(*inputs.values()) if section == "all" else inputs[section]
+            if name not in known:
+                raise DataError(f"{path}: [{section}] has no parameter {name!r}; "
+                                f"valid: {', '.join(sorted(known))}")
+    return tables
+
+
+def chapter_parameters(chapter, *, overrides=None):
+    """SI values of a chapter's inputs.
+
+    Parameters
+    ----------
+    chapter : str
+        Chapter key, e.g. ``"ch01"``.
+    overrides : str or Path, optional
+        TOML overrides file; defaults to the file named by ``$MAGBENCH_PARAMS``, if set.
+
+    Returns
+    -------
+    dict of str to float
+        Parameter name to SI value, defaults from the chapter's source's parameter set.
+
+    Examples
+    --------
+    >>> p = chapter_parameters("ch01", overrides=None)
+    >>> round(p["earth_radius"])
+    6371000
+    """
+    spec = _chapter(chapter)
+    params = load_parameter_set(spec.source)
+    values = {name: params[name].value_si for name in spec.inputs}
+    path = overrides if overrides is not None else os.environ.get(OVERRIDES_ENV)
+    if path:
+        tables = read_overrides(path)
+        for section in ("all", chapter):
+            for name, value in tables.get(section, {}).items():
+                if name in values:      # [all] may also name other chapters' inputs
+                    values[name] = float(value)
+    return values

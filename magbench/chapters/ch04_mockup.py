@@ -1,0 +1,117 @@
+"""Chapter 4: the mock-up on a thread, its sensors and the bench experiments.
+
+Thesis §4 (pp. 26–36): equations of motion and the PID, the complementary filter, and
+the bench runs of thesis Figs. 19–20 beside the closed-loop model.
+"""
+
+import numpy as np
+
+from .. import attitude
+from ..compare import make_row
+from ..errata import SourceCheck
+from ._base import Chapter, chapter_parameters
+
+__all__ = ['CHAPTER', 'INPUTS', 'bench_rows', 'dynamics_checks']
+
+#: The chapter's inputs: names in the parameter set of its source.
+INPUTS = (
+    # equations of motion and the PID (book/ch04-mockup.md)
+    "mockup_mass", "mockup_cm_offset", "mtq_moment", "mockup_initial_angle",
+    "mockup_initial_angle_alt", "oscillation_period", "oscillation_amplitude", "pid_kp",
+    "pid_ki", "pid_kd", "pid_bandwidth", "pid_sample_interval",
+    # sensors and estimation (book/ch04-estimation.md)
+    "filter_coefficient_low", "filter_coefficient_high", "filter_sample_interval",
+    "gyro_residual_bias",
+    # the bench experiments (book/ch04-bench.md, magbench.bench)
+    "mockup_inertia", "mtq_voltage", "mtq_turns", "mtq_side", "sim_design_h",
+    "bench_field_h", "bench_background_h", "bench_background_azimuth",
+    "bench_coil_resistance", "bench_moment_tolerance", "bench_pwm_levels",
+    "bench_sample_interval", "bench_duration", "bench_error_window",
+    "bench_filter_coefficient", "bench_bandwidth", "bench_thread_stiffness",
+    "bench_thread_stiffness_factor", "bench_release_angle_spread", "bench_release_rate_std",
+    "bench_gyro_bias", "bench_members", "bench_seed",
+)
+
+
+def bench_rows(params=None):
+    """Chapter 4, the bench: the predicted final error band beside the thesis's 10°.
+
+    The model is a nominal run of :func:`magbench.bench.simulate_bench` (release along
+    the field at rest, datasheet sensor noise seeded with ``bench_seed``) for each of
+    the thesis's two targets; its value is max |ψ − ψ_des| over the last
+    ``bench_error_window`` of the run. The thesis prints "10 град. (~ 0.17 рад)" (seed
+    line 616) without an uncertainty or a metric, so the tolerance is half a unit of
+    its last printed digit, 0.5°.
+
+    Parameters
+    ----------
+    params : dict, optional
+        Chapter-4 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
+    """
+    from .. import bench
+    from ..data import measurement
+
+    p = params or chapter_parameters("ch04")
+    setup = bench.BenchSetup.from_parameters(p)
+    measured = measurement("orientation-error")
+    deg = np.pi / 180
+    rows = []
+    for tag, label, target in (("pi3", "π/3 (Fig. 19)", np.pi / 3), ("2pi3", "2π/3 (Fig. 20)", 2 * np.pi / 3)):
+        run = bench.simulate_bench(setup, target, duration=p["bench_duration"],
+                                   rng=np.random.default_rng(int(p["bench_seed"])),
+                                   window=p["bench_error_window"])
+        rows.append(make_row(
+            f"bench-error-{tag}", f"Orientation error on the bench, ψ_des = {label}",
+            "thesis §4.4 (measured; metric not stated)", measured.value,
+            float(run.error_band[0]), 0.5 * deg, unit="deg", scale=deg,
+            note="model: error band of the last window of a nominal simulated run"))
+    return rows
+
+
+def dynamics_checks(params=None):
+    """Thesis §4 (equations of motion and the PID): the sizing amplitude and the gains."""
+    from .. import control
+    from ..constants import MU_0
+
+    p = params or chapter_parameters("ch04")
+    j, m = p["mockup_inertia"], p["mtq_moment"]
+    b0 = MU_0 * p["sim_design_h"]
+    amplitude = attitude.amplitude_for_period(p["oscillation_period"], j, m, b0)
+    sets = [(0.1, 0.5, 0.5), (0.2, 0.5, 0.5), (0.3, 0.5, 0.5), (0.1, 0.5, 1.0), (0.1, 0.5, 2.0),
+            (0.1, 0.5, 3.0)]
+    stable = sum(bool(np.all(control.closed_loop_poles(j, b0, *g).real < 0)) for g in sets)
+    return [
+        SourceCheck(
+            id="thesis-eq14-design-amplitude", chapter="ch04", source="thesis",
+            location="§2.1 and §3.2 (eqs. 14–15 with A = π)",
+            quantity="Amplitude at which the built design (m = 0.4 A·m², H = 250 A/m) swings with the design period 60 s",
+            printed=float(np.degrees(p["oscillation_amplitude"])), computed=float(np.degrees(amplitude)),
+            tolerance=0.5, unit="deg",
+            explanation=("The thesis sizes field and coils with the small-angle eq. (14) at an amplitude "
+                         "of π, where the exact period (an elliptic integral) is infinite: released upside "
+                         "down the pendulum never leaves. The design swings with a 60 s period only up to "
+                         "134°; at 180° no finite field gives 60 s."),
+            computation="magbench.attitude.amplitude_for_period"),
+        SourceCheck(
+            id="thesis-pid-gains-stable-si", chapter="ch04", source="thesis",
+            location="§4.1 (Figs. 15–18)",
+            quantity="Printed PID gain sets that give a stable loop with the gains read in SI",
+            printed=float(len(sets)), computed=float(stable), tolerance=0.0, unit="1",
+            explanation=("Figs. 15–18 are presented as damped responses for six gain sets, but in SI "
+                         "(m in A·m², ψ in rad, B0 = μ0·250 A/m, J = 0.005 kg·m²) each violates the "
+                         "Routh–Hurwitz condition K_i < B0 K_p K_d / J by a factor 26–160: every loop is "
+                         "unstable. Only readings that multiply the gains by more than 160 (field in "
+                         "gauss or A/m, a torque-valued output) give damped curves."),
+            computation="magbench.control.closed_loop_poles"),
+    ]
+
+
+CHAPTER = Chapter(
+    key="ch04", title="The mock-up on a thread: equations of motion and PID control",
+    pages=("book/ch04-mockup", "book/ch04-estimation", "book/ch04-bench"), source="thesis",
+    inputs=INPUTS,
+    figure_modules=("magbench.figures.thesis_ch4", "magbench.figures.estimation", "magbench.figures.bench"),
+    comparisons=bench_rows,
+    row_kinds=(("bench-error-", "measurement"),),
+    source_checks=(dynamics_checks,),
+)
