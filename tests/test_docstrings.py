@@ -9,7 +9,8 @@ import sys
 
 import pytest
 
-PHYSICS = ["magbench.geomag", "magbench.attitude", "magbench.coils", "magbench.magnetorquer",
+PHYSICS = ["magbench.fields", "magbench.hardware", "magbench.dynamics",
+           "magbench.geomag", "magbench.attitude", "magbench.coils", "magbench.magnetorquer",
            "magbench.estimation", "magbench.control", "magbench.units", "magbench.sensors",
            "magbench.bench"]
 SOURCE_LINE = re.compile(r"Thesis (eqs?\.|§)|Not in the (thesis|sources)|Kovalenko \(1975\)")
@@ -41,7 +42,8 @@ def test_parameters_documented_with_units(func):
 
 
 def test_physics_modules_do_not_import_plotting_or_io():
-    code = ("import sys, magbench.geomag, magbench.attitude, magbench.coils, magbench.magnetorquer; "
+    code = ("import sys, magbench.geomag, magbench.attitude, magbench.coils, magbench.magnetorquer, "
+            "magbench.fields, magbench.hardware, magbench.dynamics; "
             "bad = [m for m in ('matplotlib', 'pandas', 'magbench.figures', 'magbench.data') if m in sys.modules]; "
             "print(bad); sys.exit(bool(bad))")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)

@@ -16,7 +16,9 @@ from ..errata import SourceCheck
 from ..units import ampere_per_meter_to_oersted, tesla_to_oersted
 from ._base import Chapter, chapter_parameters
 
-__all__ = ['CHAPTER', 'INPUTS', 'IGRF_NEWEST_EPOCH', 'geomagnetic_rows', 'geomagnetic_checks', 'kovalenko_field_checks']
+__all__ = ["CHAPTER", "INPUTS", "IGRF_NEWEST_EPOCH", "geomagnetic_rows", "geomagnetic_checks",
+           "kovalenko_field_checks"]
+
 
 #: The chapter's inputs: names in the parameter set of its source.
 INPUTS = ("earth_dipole_moment", "earth_dipole_tilt", "geomagnetic_pole_latitude",

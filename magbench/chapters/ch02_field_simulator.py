@@ -4,12 +4,59 @@ Thesis §2 (pp. 12–20) and Kovalenko (1975) §3.4: the coil pair as designed, 
 COMSOL, built and measured, beside the exact field of thin loops.
 """
 
+import numpy as np
+
+from .._validate import as_finite, as_positive
 from ..compare import make_row
 from ..data import load_measurements, load_parameter_set
 from ..errata import SourceCheck
 from ._base import Chapter, chapter_parameters
 
-__all__ = ['CHAPTER', 'INPUTS', 'ZONE_TOLERANCE', 'simulator_rows', 'simulator_center_h_tolerance', 'simulator_checks', 'simulator_field_checks']
+__all__ = ["CHAPTER", "INPUTS", "ZONE_TOLERANCE", "simulator_rows", "simulator_center_h_tolerance",
+           "simulator_checks", "simulator_field_checks", "thesis_printed_ampere_turns"]
+
+
+def thesis_printed_ampere_turns(center_h, radius, spacing_ratio):
+    r"""The thesis's printed ampere-turns, reproducing its arithmetic slip in eq. (16).
+
+    Parameters
+    ----------
+    center_h : array_like
+        Target field at the midpoint H [A/m].
+    radius : array_like
+        Coil radius a_c [m], > 0.
+    spacing_ratio : array_like
+        d_c / a_c [-], >= 0.
+
+    Returns
+    -------
+    ndarray
+        The thesis's NI [A]; *not* the field-correct value.
+
+    Notes
+    -----
+    Thesis eq. (16) solved for NI at seed line 270, as evaluated there. Deviation from
+    source, reproduced on purpose: the thesis evaluated (d_c/2a_c)² as (d_c/a_c)²/2 (the
+    2 in the denominator was not squared),
+
+    .. math:: NI_\text{printed} = H a_c\left[\frac{(d_c/a_c)^2}{2} + 1\right]^{3/2},
+
+    which turns the correct 187.7 A (:func:`helmholtz_ampere_turns`) into the printed
+    258 A for H = 250 A/m, a_c = 0.5 m, d_c/a_c = 1.116. Use only to show where the
+    printed number comes from.
+
+    Examples
+    --------
+    >>> round(float(thesis_printed_ampere_turns(250.0, 0.5, 1.116)))
+    258
+    """
+    h = as_finite("center_h", center_h)
+    a = as_positive("radius", radius, unit="m")
+    r = as_finite("spacing_ratio", spacing_ratio)
+    if np.any(r < 0):
+        raise ValueError(f"spacing_ratio must be >= 0, got {r[r < 0].ravel()[0]!r}")
+    return h * a * (r**2 / 2.0 + 1.0) ** 1.5
+
 
 #: The chapter's inputs: names in the parameter set of its source.
 INPUTS = ("mockup_inertia", "mockup_magnet_moment", "oscillation_period", "oscillation_amplitude",

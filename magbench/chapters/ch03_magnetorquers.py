@@ -11,7 +11,9 @@ from ..data import load_measurements, load_parameter_set
 from ..errata import SourceCheck, kovalenko_page
 from ._base import Chapter, chapter_parameters
 
-__all__ = ['CHAPTER', 'INPUTS', 'magnetorquer_rows', 'magnetorquer_checks', 'magnetorquer_design_checks', 'kovalenko_actuator_checks']
+__all__ = ["CHAPTER", "INPUTS", "magnetorquer_rows", "magnetorquer_checks", "magnetorquer_design_checks",
+           "kovalenko_actuator_checks"]
+
 
 #: The chapter's inputs: names in the parameter set of its source.
 INPUTS = ("copper_resistivity", "copper_density", "mtq_moment", "mtq_voltage", "mtq_side",

@@ -11,7 +11,8 @@ from ..compare import make_row
 from ..errata import SourceCheck
 from ._base import Chapter, chapter_parameters
 
-__all__ = ['CHAPTER', 'INPUTS', 'bench_rows', 'dynamics_checks']
+__all__ = ["CHAPTER", "INPUTS", "bench_rows", "dynamics_checks"]
+
 
 #: The chapter's inputs: names in the parameter set of its source.
 INPUTS = (
