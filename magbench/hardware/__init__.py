@@ -1,9 +1,32 @@
-"""Hardware that makes or measures a field: windings (for now, of round turns).
+"""Hardware that makes or measures a field: turns and wires, air-core magnetorquers and
+their design space, windings, cored rods and electromagnets, permanent magnets.
 
-Re-exports the public functions of its modules. The magnetorquer's sizing formulas
-still live in :mod:`magbench.magnetorquer`.
+Pure functions of numpy arrays, SI. Re-exports the public functions of its modules.
 """
 
+from .turn import SHAPES, awg_diameter, turn_area, turn_length, wire_area, wire_diameter
+from .magnetorquer import (coil_current, coil_mass, coil_mass_for_moment, coil_resistance,
+                           current_for_moment, dipole_moment, joule_power, joule_power_for_moment,
+                           joule_power_for_winding_length, mass_power_product,
+                           mass_power_product_kovalenko, moment_from_voltage, supply_voltage,
+                           turn_resistance, turns_from_resistance, turns_from_winding_length,
+                           turns_per_volt_bounds, winding_density, winding_length,
+                           wire_area_for_moment, wire_diameter_from_resistance)
+from .coil_design import design_magnetorquer
+from .cores import (core_central_magnetization, effective_permeability, electromagnet_design,
+                    field_for_magnetization, magnetization_curve, rod_demagnetizing_factor)
+from .magnets import (magnet_mass_for_torque, magnet_moment_per_mass, magnet_torque_per_mass,
+                      permanent_magnet_min_mass)
 from .winding import winding_mass, winding_power, winding_resistance, winding_voltage
 
-__all__ = ["winding_resistance", "winding_voltage", "winding_power", "winding_mass"]
+__all__ = ["SHAPES", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
+           "dipole_moment", "current_for_moment", "coil_current", "turn_resistance", "coil_resistance",
+           "moment_from_voltage", "wire_area_for_moment", "joule_power", "joule_power_for_moment",
+           "turns_from_winding_length", "winding_length", "joule_power_for_winding_length", "coil_mass",
+           "coil_mass_for_moment", "mass_power_product", "winding_density", "mass_power_product_kovalenko",
+           "supply_voltage", "turns_per_volt_bounds", "turns_from_resistance",
+           "wire_diameter_from_resistance", "design_magnetorquer", "rod_demagnetizing_factor",
+           "effective_permeability", "magnetization_curve", "field_for_magnetization",
+           "core_central_magnetization", "electromagnet_design", "magnet_torque_per_mass",
+           "magnet_mass_for_torque", "magnet_moment_per_mass", "permanent_magnet_min_mass",
+           "winding_resistance", "winding_voltage", "winding_power", "winding_mass"]

@@ -5,7 +5,8 @@ throughout.
 """
 
 from .._validate import as_finite, as_positive
-from ..magnetorquer import coil_mass, coil_resistance, wire_area
+from .magnetorquer import coil_mass, coil_resistance
+from .turn import wire_area
 
 __all__ = ["winding_resistance", "winding_voltage", "winding_power", "winding_mass"]
 

@@ -1,0 +1,269 @@
+"""The magnetorquer design space: every (turns, wire) pair that meets the limits.
+
+Thesis §3.2, eq. (32) (the band of N/U where both the power and the mass limit hold),
+enumerated over real wire sizes (IEC 60317, not in the sources). SI throughout.
+"""
+
+import math
+
+import numpy as np
+
+from .._validate import as_nonnegative, as_positive
+from .magnetorquer import _RTOL
+from .turn import _check_shape, turn_area, turn_length
+
+__all__ = ["design_magnetorquer"]
+
+
+# Largest number of (turns, wire) rows the design solver will enumerate.
+_MAX_ROWS = 2_000_000
+
+
+def design_magnetorquer(
+    moment,
+    voltage,
+    side,
+    shape,
+    max_power,
+    max_mass,
+    wire_diameters,
+    resistivity,
+    density,
+    enamel_thickness=10e-6,
+    *,
+    winding_length=None,
+    max_layers=1,
+    require_fit=False,
+    overall_diameters=None,
+):
+    r"""Every feasible (turns, wire) design of an air-core magnetorquer, and the best two.
+
+    A coil of N turns of wire of bare diameter d, driven at the voltage U, has
+    R = N ρ P/S_r (P the turn length), draws I = U/R and W = U²/R, weighs
+    M = ρ̃ P S_r N and has the moment m = I S N = U l S_r/(4ρ), independent of N (eq. 20).
+    So the wire fixes the moment, and N trades power against mass. A design is feasible
+    when its moment is at least ``moment``, W ≤ ``max_power`` and M ≤ ``max_mass``; every
+    integer N for every listed wire is tried.
+
+    Parameters
+    ----------
+    moment : float
+        Required dipole moment m [A·m²].
+    voltage : float
+        Supply voltage U [V].
+    side : float
+        Turn diameter (round) or side (square) l [m].
+    shape : {"round", "square"}
+        Turn shape [-].
+    max_power : float
+        Joule power limit per coil W_max [W].
+    max_mass : float
+        Conductor mass limit per coil M_max [kg].
+    wire_diameters : array_like, shape (k,)
+        Bare conductor diameters available [m] (a wire table).
+    resistivity : float
+        Conductor resistivity ρ [Ω·m].
+    density : float
+        Conductor density ρ̃ [kg/m³].
+    enamel_thickness : float, optional
+        Radial thickness of the enamel t [m]; the wire pitch is d + 2t. Used only for the
+        winding-fit check. The default 10 µm is an order of magnitude, not a standard
+        value: 0.100 mm grade-1 enamelled wire measures 0.108–0.117 mm overall (4–8.5 µm
+        radial; Elektrisola data quoted at enameled-wires.com, Technical-Documentation/341),
+        thicker wires carry somewhat more. Take the value from the wire's datasheet.
+    winding_length : float, optional
+        Axial length available for one layer [m]; default ``side``, the thesis's
+        assumption of a single-layer winding as long as the face (seed line 434).
+    max_layers : int, optional
+        Number of layers the former can hold [-].
+    require_fit : bool, optional
+        If true, designs whose winding does not fit are not feasible [-].
+    overall_diameters : array_like, shape (k,), optional
+        Overall (enamelled) diameter of each wire of ``wire_diameters`` [m], e.g. the
+        maximum overall diameter of a wire standard's table; when given it is the winding
+        pitch and ``enamel_thickness`` is not used. Each must exceed its bare diameter.
+
+    Returns
+    -------
+    dict
+        ``"turns"`` (int), ``"wire_diameter"`` [m], ``"wire_area"`` [m²], ``"resistance"``
+        [Ω], ``"current"`` [A], ``"power"`` [W], ``"mass"`` [kg], ``"moment"`` [A·m²],
+        ``"pitch"`` (d + 2t, or the overall diameter) [m], ``"layer_length"``
+        (single-layer winding length N·pitch) [m], ``"layers"`` (int), ``"fits"`` (bool)
+        and ``"fill_factor"`` (conductor cross-section N S_r over the winding window
+        ``winding_length`` × layers·pitch it occupies) [-]: one array entry per feasible
+        design, ordered by wire diameter then turns. ``"min_power"`` and ``"min_mass"``: the feasible design of
+        least power and of least mass, each a dict of scalars, or None. ``"feasible"``
+        (bool), ``"binding_limit"`` (None, ``"moment"``, ``"power and mass"``,
+        ``"integer turns"`` or ``"winding fit"``) and ``"explanation"`` (str).
+
+    Notes
+    -----
+    Not in the thesis: an enumeration over a wire table of thesis eqs. (17)–(31); the
+    thesis solves the continuous problem (eq. 32) and then picks 0.2 mm wire at N = 240,
+    which this solver rejects (2.69 W > 2 W). The infeasibility test is the mass × power
+    product, eq. (26)/(30): with the thinnest adequate wire, M·W = 16ρρ̃m_w²/l² must not
+    exceed M_max·W_max, where m_w ≥ m is that wire's moment.
+
+    Examples
+    --------
+    >>> res = design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, [0.18e-3, 0.2e-3],
+    ...                           0.0175e-6, 8.9e3)
+    >>> best = res["min_mass"]
+    >>> int(best["turns"]), round(best["wire_diameter"] * 1e3, 2), round(best["power"], 3)
+    (262, 0.18, 1.998)
+    >>> design_magnetorquer(0.4, 12.0, 0.1, "square", 1.0, 0.02, [0.2e-3], 0.0175e-6,
+    ...                     8.9e3)["binding_limit"]
+    'power and mass'
+    """
+    m_req = float(as_positive("moment", moment, unit="A·m²"))
+    u = float(as_positive("voltage", voltage, unit="V"))
+    l = float(as_positive("side", side, unit="m"))
+    _check_shape(shape)
+    w_max = float(as_positive("max_power", max_power, unit="W"))
+    m_max = float(as_positive("max_mass", max_mass, unit="kg"))
+    d_all = np.atleast_1d(as_positive("wire_diameters", wire_diameters, unit="m"))
+    if d_all.ndim != 1 or d_all.size == 0:
+        raise ValueError(
+            f"wire_diameters must be a non-empty 1-D array, got shape {d_all.shape}"
+        )
+    if overall_diameters is None:
+        d_all = np.unique(d_all)
+        od_all = d_all + 2.0 * float(as_nonnegative("enamel_thickness", enamel_thickness, unit="m"))
+    else:
+        od_all = np.atleast_1d(as_positive("overall_diameters", overall_diameters, unit="m"))
+        if od_all.shape != d_all.shape:
+            raise ValueError(f"overall_diameters must have the shape of wire_diameters {d_all.shape}, "
+                             f"got {od_all.shape}")
+        if np.any(od_all <= d_all):
+            k = int(np.argmax(od_all <= d_all))
+            raise ValueError(f"overall_diameters must exceed the bare diameters, got {od_all[k]!r} m "
+                             f"for wire_diameters {d_all[k]!r} m")
+        if np.unique(d_all).size != d_all.size:
+            raise ValueError("wire_diameters must not repeat a size when overall_diameters are given")
+        order = np.argsort(d_all)
+        d_all, od_all = d_all[order], od_all[order]
+    rho = float(as_positive("resistivity", resistivity, unit="Ω·m"))
+    gamma = float(as_positive("density", density, unit="kg/m³"))
+    as_nonnegative("enamel_thickness", enamel_thickness, unit="m")   # checked even when unused
+    length_avail = l if winding_length is None else float(
+        as_positive("winding_length", winding_length, unit="m"))
+    if isinstance(max_layers, bool) or not isinstance(max_layers, (int, np.integer)) or max_layers < 1:
+        raise ValueError(f"max_layers must be an integer >= 1, got {max_layers!r}")
+
+    area = float(turn_area(l, shape))
+    perimeter = float(turn_length(l, shape))
+
+    cols = {k: [] for k in ("turns", "wire_diameter", "wire_area", "resistance", "current",
+                            "power", "mass", "moment", "pitch", "layer_length", "layers", "fits",
+                            "fill_factor")}
+    adequate = []          # wires that reach the moment: (d, n_lo, n_hi)
+    n_rows = 0
+    any_power_mass = False
+    for d, pitch in zip(d_all, od_all):
+        s_r = math.pi * d**2 / 4.0
+        r = rho * perimeter / s_r
+        m_wire = u * l * s_r / (4.0 * rho)
+        if m_wire < m_req * (1.0 - _RTOL):
+            continue
+        n_lo = max(1, math.ceil(u**2 / (r * w_max) * (1.0 - _RTOL)))
+        n_hi = math.floor(m_max / (gamma * perimeter * s_r) * (1.0 + _RTOL))
+        adequate.append((d, n_lo, n_hi))
+        if n_hi < n_lo:
+            continue
+        any_power_mass = True
+        n_rows += n_hi - n_lo + 1
+        if n_rows > _MAX_ROWS:
+            raise ValueError(
+                f"max_mass = {m_max!r} kg admits more than {_MAX_ROWS} (turns, wire) designs; "
+                "tighten the limits or shorten wire_diameters"
+            )
+        n = np.arange(n_lo, n_hi + 1)
+        per_layer = math.floor(length_avail / pitch * (1.0 + _RTOL))
+        if per_layer >= 1:
+            layers = -(-n // per_layer)
+        else:
+            layers = np.full(n.shape, np.iinfo(np.int64).max)
+        fits = layers <= max_layers
+        resistance = n * r
+        cols["turns"].append(n)
+        cols["wire_diameter"].append(np.full(n.shape, d))
+        cols["wire_area"].append(np.full(n.shape, s_r))
+        cols["resistance"].append(resistance)
+        cols["current"].append(u / resistance)
+        cols["power"].append(u**2 / resistance)
+        cols["mass"].append(gamma * perimeter * s_r * n)
+        cols["moment"].append(u / resistance * area * n)
+        cols["pitch"].append(np.full(n.shape, pitch))
+        cols["layer_length"].append(n * pitch)
+        cols["layers"].append(layers)
+        cols["fits"].append(fits)
+        # conductor over the window the layers occupy (layers·pitch deep); 0 if nothing fits
+        depth = np.where(per_layer >= 1, layers * pitch, np.inf)
+        cols["fill_factor"].append(n * s_r / (length_avail * depth))
+
+    dtypes = {"turns": np.int64, "layers": np.int64, "fits": bool}
+    out = {k: (np.concatenate(v) if v else np.array([], dtype=dtypes.get(k, float)))
+           for k, v in cols.items()}
+    if require_fit:
+        keep = out["fits"]
+        out = {k: v[keep] for k, v in out.items()}
+
+    feasible = out["turns"].size > 0
+    out["feasible"] = feasible
+    out["min_power"] = out["min_mass"] = None
+    out["binding_limit"] = None
+    if feasible:
+        keys = [k for k in cols]
+        for label, col in (("min_power", "power"), ("min_mass", "mass")):
+            i = int(np.argmin(out[col]))
+            out[label] = {k: out[k][i].item() for k in keys}
+        out["explanation"] = (
+            f"{out['turns'].size} feasible designs; least power "
+            f"{out['min_power']['power']:.4g} W at N = {out['min_power']['turns']}, "
+            f"d = {out['min_power']['wire_diameter'] * 1e3:.4g} mm; least mass "
+            f"{out['min_mass']['mass'] * 1e3:.4g} g at N = {out['min_mass']['turns']}, "
+            f"d = {out['min_mass']['wire_diameter'] * 1e3:.4g} mm"
+        )
+        return out
+
+    if not adequate:
+        s_need = 4.0 * rho * m_req / (u * l)
+        d_max = d_all[-1]
+        m_best = u * l * (math.pi * d_max**2 / 4.0) / (4.0 * rho)
+        out["binding_limit"] = "moment"
+        out["explanation"] = (
+            f"moment: no wire reaches {m_req:.4g} A·m² at {u:.4g} V. By eq. (20) the thickest "
+            f"wire, d = {d_max * 1e3:.4g} mm, gives {m_best:.4g} A·m² whatever the turns; "
+            f"eq. (21) needs S_r >= {s_need:.4g} m² (d >= "
+            f"{math.sqrt(4.0 * s_need / math.pi) * 1e3:.4g} mm) or a higher voltage"
+        )
+    elif not any_power_mass:
+        d, n_lo, n_hi = adequate[0]          # thinnest adequate wire: least mass × power
+        s_r = math.pi * d**2 / 4.0
+        m_wire = u * l * s_r / (4.0 * rho)
+        product = 16.0 * rho * gamma * m_wire**2 / l**2
+        if product > m_max * w_max * (1.0 + _RTOL):
+            out["binding_limit"] = "power and mass"
+            out["explanation"] = (
+                f"power and mass together: with the thinnest adequate wire, d = {d * 1e3:.4g} mm "
+                f"(moment {m_wire:.4g} A·m²), W <= {w_max:.4g} W needs N >= {n_lo} but "
+                f"M <= {m_max:.4g} kg allows N <= {n_hi}. Their product, eq. (26)/(30), "
+                f"M·W = 16ρρ̃m²/l² = {product:.4g} kg·W whatever N and U, exceeds "
+                f"max_mass·max_power = {m_max * w_max:.4g} kg·W; raise a limit, enlarge the "
+                f"coil or use a thinner wire closer to the required moment"
+            )
+        else:
+            out["binding_limit"] = "integer turns"
+            out["explanation"] = (
+                f"integer turns: for d = {d * 1e3:.4g} mm the limits allow "
+                f"{u**2 / (rho * perimeter / s_r * w_max):.6g} <= N <= "
+                f"{m_max / (gamma * perimeter * s_r):.6g}, which holds no integer"
+            )
+    else:
+        out["binding_limit"] = "winding fit"
+        out["explanation"] = (
+            f"winding fit: designs meet the moment, power and mass limits, but none fits in "
+            f"{max_layers} layer(s) over {length_avail:.4g} m at the wires' pitch (enamel included)"
+        )
+    return out

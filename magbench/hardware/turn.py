@@ -1,0 +1,177 @@
+"""Turns and wires: the area and length of a round or square turn, wire cross-sections.
+
+Thesis §3.1 (eq. 19: the turn's length and the wire's cross-section) and the AWG and
+IEC 60317 wire series (not in the sources). A turn has the characteristic size ``side``
+= l: the diameter of a round turn (``shape="round"``, area πl²/4, length πl) or the side
+of a square turn (``shape="square"``, area l², length 4l). SI throughout.
+"""
+
+import numpy as np
+
+from .._validate import as_finite, as_positive
+
+__all__ = ["SHAPES", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter"]
+
+
+#: The turn shapes understood by the ``shape`` keyword.
+SHAPES = ("round", "square")
+
+
+def _check_shape(shape):
+    if not isinstance(shape, str) or shape not in SHAPES:
+        raise ValueError(f"shape must be one of {SHAPES}, got {shape!r}")
+    return shape
+
+
+def _area_factor(shape):
+    """S / l²: π/4 for a round turn, 1 for a square one."""
+    return np.pi / 4.0 if _check_shape(shape) == "round" else 1.0
+
+
+def _length_factor(shape):
+    """Turn length / l: π for a round turn, 4 for a square one."""
+    return np.pi if _check_shape(shape) == "round" else 4.0
+
+
+def turn_area(side, shape="round"):
+    r"""Area enclosed by one turn.
+
+    Parameters
+    ----------
+    side : array_like
+        Turn diameter (round) or side (square), thesis symbol l [m].
+    shape : {"round", "square"}, optional
+        Turn shape [-].
+
+    Returns
+    -------
+    ndarray
+        S = πl²/4 (round) or l² (square) [m²].
+
+    Notes
+    -----
+    Thesis eq. (19), seed line 340 ("S = πl²/4"); the square area l² is implied by eqs. (28)–(31).
+
+    Examples
+    --------
+    >>> float(turn_area(0.1, "square"))
+    0.010000000000000002
+    """
+    k = _area_factor(shape)
+    return k * as_positive("side", side, unit="m") ** 2
+
+
+def turn_length(side, shape="round"):
+    r"""Length of conductor in one turn.
+
+    Parameters
+    ----------
+    side : array_like
+        Turn diameter (round) or side (square) l [m].
+    shape : {"round", "square"}, optional
+        Turn shape [-].
+
+    Returns
+    -------
+    ndarray
+        πl (round) or 4l (square) [m].
+
+    Notes
+    -----
+    Thesis eq. (19), seed line 338 (πl) and eq. (31), seed line 382 (4l).
+
+    Examples
+    --------
+    >>> round(float(turn_length(0.1, "round")), 4)
+    0.3142
+    """
+    k = _length_factor(shape)
+    return k * as_positive("side", side, unit="m")
+
+
+def wire_area(diameter):
+    r"""Conductor cross-section of a round wire.
+
+    Parameters
+    ----------
+    diameter : array_like
+        Bare conductor diameter d [m].
+
+    Returns
+    -------
+    ndarray
+        S_r = πd²/4 [m²].
+
+    Notes
+    -----
+    Thesis §3.2, seed line 431 (S_r "corresponds to d = 0.172 mm") and §3.3, seed line 439.
+
+    Examples
+    --------
+    >>> round(float(wire_area(0.2e-3)) * 1e8, 4)
+    3.1416
+    """
+    d = as_positive("diameter", diameter, unit="m")
+    return np.pi * d**2 / 4.0
+
+
+def wire_diameter(area):
+    r"""Bare diameter of a round wire of a given conductor cross-section.
+
+    Parameters
+    ----------
+    area : array_like
+        Conductor cross-section S_r [m²].
+
+    Returns
+    -------
+    ndarray
+        d = √(4 S_r/π) [m].
+
+    Notes
+    -----
+    Thesis §3.2, seed line 431: S_r "corresponds to d = 0.172 mm". The d = 0.172 mm follows
+    from the exact S_r = 2.333·10⁻⁸ m² of eq. (21); the printed S_r = 2.34·10⁻⁸ m² is rounded
+    up and would give 0.173 mm.
+
+    Examples
+    --------
+    >>> round(float(wire_diameter(2.34e-8)) * 1e3, 3)
+    0.173
+    >>> round(float(wire_diameter(4 * 0.0175e-6 * 0.4 / 1.2)) * 1e3, 3)
+    0.172
+    """
+    s = as_positive("area", area, unit="m²")
+    return np.sqrt(4.0 * s / np.pi)
+
+
+def awg_diameter(gauge):
+    r"""Bare diameter of an American Wire Gauge size.
+
+    Parameters
+    ----------
+    gauge : array_like
+        AWG number n [-]; 0000, 000, 00 and 0 are −3, −2, −1 and 0. At least −3.
+
+    Returns
+    -------
+    ndarray
+        d = 0.127 mm × 92^((36 − n)/39) [m], exact by the gauge's definition (36 AWG is
+        0.005 in and 0000 AWG is 0.46 in, with 38 geometric steps between them).
+
+    Notes
+    -----
+    Not in the thesis: ASTM B258, the definition of the American Wire Gauge. The thesis's
+    0.2 mm wire lies between 32 AWG (0.202 mm) and 33 AWG (0.180 mm).
+
+    Examples
+    --------
+    >>> round(float(awg_diameter(36)) * 1e3, 4), round(float(awg_diameter(-3)) / 0.0254, 4)
+    (0.127, 0.46)
+    >>> round(float(awg_diameter(32)) * 1e3, 4)
+    0.2019
+    """
+    n = as_finite("gauge", gauge)
+    if np.any(n < -3):
+        raise ValueError(f"gauge must be >= -3 (0000 AWG) [-], got {n[n < -3].ravel()[0]!r}")
+    return 0.127e-3 * 92.0 ** ((36.0 - n) / 39.0)
