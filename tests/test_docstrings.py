@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-PHYSICS = ["magbench.fields", "magbench.hardware", "magbench.dynamics",
+PHYSICS = ["magbench.fields", "magbench.hardware", "magbench.dynamics", "magbench.earth",
            "magbench.geomag", "magbench.attitude", "magbench.coils", "magbench.magnetorquer",
            "magbench.estimation", "magbench.control", "magbench.units", "magbench.sensors",
            "magbench.bench"]
@@ -43,7 +43,7 @@ def test_parameters_documented_with_units(func):
 
 def test_physics_modules_do_not_import_plotting_or_io():
     code = ("import sys, magbench.geomag, magbench.attitude, magbench.coils, magbench.magnetorquer, "
-            "magbench.fields, magbench.hardware, magbench.dynamics; "
+            "magbench.fields, magbench.hardware, magbench.dynamics, magbench.earth; "
             "bad = [m for m in ('matplotlib', 'pandas', 'magbench.figures', 'magbench.data') if m in sys.modules]; "
             "print(bad); sys.exit(bool(bad))")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)

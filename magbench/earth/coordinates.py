@@ -1,0 +1,107 @@
+"""Geomagnetic coordinates of a place from its geographic coordinates and the pole's.
+
+Thesis §1.1 (the unnumbered formulas before eq. (1)). Angles in radians.
+"""
+
+import numpy as np
+
+from .._validate import as_finite, as_in_range
+
+__all__ = ["geomagnetic_latitude", "geomagnetic_longitude"]
+
+
+def _unit_vector(latitude, longitude):
+    """Earth-centred, Earth-fixed unit vector for a latitude and east longitude [rad]."""
+    clat = np.cos(latitude)
+    return np.stack(
+        np.broadcast_arrays(clat * np.cos(longitude), clat * np.sin(longitude), np.sin(latitude)),
+        axis=-1,
+    )
+
+
+def geomagnetic_latitude(latitude, longitude, pole_latitude, pole_longitude):
+    r"""Geomagnetic latitude of a place.
+
+    Parameters
+    ----------
+    latitude : array_like
+        Geographic latitude φ [rad].
+    longitude : array_like
+        Geographic longitude λ, east positive [rad].
+    pole_latitude : array_like
+        Geographic latitude φ0 of the northern geomagnetic pole [rad].
+    pole_longitude : array_like
+        Geographic longitude λ0 of the northern geomagnetic pole, east positive [rad].
+
+    Returns
+    -------
+    ndarray
+        Geomagnetic latitude Φ [rad], in [-π/2, π/2].
+
+    Notes
+    -----
+    Thesis eq. (TH-g1), seed line 90 (from Kovalenko 1975, p. 34):
+
+    .. math:: \sin\Phi = \sin\varphi\sin\varphi_0 + \cos\varphi\cos\varphi_0\cos(\lambda_0-\lambda)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> phi = geomagnetic_latitude(np.radians(59.94), np.radians(30.31),
+    ...                            np.radians(78.5), np.radians(-69.0))
+    >>> round(float(np.degrees(phi)), 2)
+    56.3
+    """
+    lat = as_in_range("latitude", latitude, -np.pi / 2, np.pi / 2, unit="rad")
+    lon = as_finite("longitude", longitude)
+    plat = as_in_range("pole_latitude", pole_latitude, -np.pi / 2, np.pi / 2, unit="rad")
+    plon = as_finite("pole_longitude", pole_longitude)
+    s = np.sin(lat) * np.sin(plat) + np.cos(lat) * np.cos(plat) * np.cos(plon - lon)
+    # Rounding can push |s| a few ulp past 1 at the pole itself.
+    return np.arcsin(np.clip(s, -1.0, 1.0))
+
+
+def geomagnetic_longitude(latitude, longitude, pole_latitude, pole_longitude):
+    r"""Geomagnetic longitude of a place, in the full range (-π, π].
+
+    Parameters
+    ----------
+    latitude : array_like
+        Geographic latitude φ [rad].
+    longitude : array_like
+        Geographic longitude λ, east positive [rad].
+    pole_latitude : array_like
+        Geographic latitude φ0 of the northern geomagnetic pole [rad].
+    pole_longitude : array_like
+        Geographic longitude λ0 of the northern geomagnetic pole, east positive [rad].
+
+    Returns
+    -------
+    ndarray
+        Geomagnetic longitude Λ [rad], counted from the geomagnetic meridian that
+        passes through the geographic north pole.
+
+    Notes
+    -----
+    Thesis eq. (TH-g2), seed line 92:
+
+    .. math:: \sin\Lambda = \cos\varphi\,\frac{\sin(\lambda_0-\lambda)}{\cos\Phi}
+
+    Deviation from source: the printed relation gives only sin Λ, which leaves the
+    quadrant open. The function computes both the sine and the cosine of Λ from the
+    rotation into geomagnetic axes, so that sin Λ agrees with the printed formula
+    everywhere and Λ is unambiguous.
+    """
+    lat = as_in_range("latitude", latitude, -np.pi / 2, np.pi / 2, unit="rad")
+    lon = as_finite("longitude", longitude)
+    plat = as_in_range("pole_latitude", pole_latitude, -np.pi / 2, np.pi / 2, unit="rad")
+    plon = as_finite("pole_longitude", pole_longitude)
+    r = _unit_vector(lat, lon)
+    n = _unit_vector(plat, plon)
+    z_geo = np.array([0.0, 0.0, 1.0])
+    # x' points from the geomagnetic pole towards the geographic pole along their
+    # common meridian; y' = n × x' makes sin Λ match the thesis's sign.
+    x = z_geo - np.sum(z_geo * n, axis=-1, keepdims=True) * n
+    x = x / np.linalg.norm(x, axis=-1, keepdims=True)
+    y = np.cross(n, x)
+    return np.arctan2(np.sum(r * y, axis=-1), np.sum(r * x, axis=-1))
