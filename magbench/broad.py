@@ -27,6 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from . import estimation
+from .rotations import hamilton_product
 
 __all__ = [
     "BROAD_DIR_ENV",
@@ -142,7 +143,7 @@ def error_quaternion_earth(estimate, reference):
     est_v = np.broadcast_to(est, out.shape)[valid]
     ref_v = np.broadcast_to(ref, out.shape)[valid]
     # q_est ⊗ conj(q_ref), as BROAD's quatmult(imu_quat, invquat(opt_quat)).
-    product = estimation._hamilton_product(est_v, ref_v * [1.0, -1.0, -1.0, -1.0])
+    product = hamilton_product(est_v, ref_v * [1.0, -1.0, -1.0, -1.0])
     out[valid] = product / np.linalg.norm(product, axis=-1, keepdims=True)
     return out
 

@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-PHYSICS = ["magbench.fields", "magbench.hardware", "magbench.dynamics", "magbench.earth",
+PHYSICS = ["magbench.fields", "magbench.hardware", "magbench.dynamics", "magbench.earth", "magbench.rotations",
            "magbench.geomag", "magbench.attitude", "magbench.coils", "magbench.magnetorquer",
            "magbench.estimation", "magbench.control", "magbench.units", "magbench.sensors",
            "magbench.bench"]

@@ -1,144 +1,19 @@
-r"""Attitude estimation from inertial sensors.
+r"""Three-dimensional tilt from a gyro and an accelerometer: accelerometer tilt, strapdown
+integration, the rest bias of the gyro, and the complementary tilt estimator.
 
-Thesis §4 (eq. 39): the complementary filter that blends the integrated gyro rate
-with an absolute angle from another sensor. Further estimators (3-D tilt from gyro and
-accelerometer, heading from the magnetometer) build on it.
+Not in the sources beyond thesis §4.2's one-axis filter: it extends eq. (39) to
+quaternions (a quaternion complementary filter, cf. Laidig and Seel, VQF). SI.
 """
 
 import numpy as np
 from scipy.signal import butter, lfilter, lfilter_zi
 from scipy.spatial.transform import Rotation
 
-from ._validate import (as_finite, as_in_range, as_nonnegative, as_positive, as_positive_scalar,
-                        as_vectors)
+from .._validate import as_finite, as_nonnegative, as_positive, as_positive_scalar, as_vectors
+from ..rotations import hamilton_product
+from .complementary import complementary_filter
 
-__all__ = [
-    "complementary_filter", "complementary_filter_step", "complementary_time_constant",
-    "accelerometer_tilt", "strapdown_orientation", "rest_gyro_bias", "complementary_tilt",
-    "magnetometer_heading",
-]
-
-
-def complementary_filter_step(angle, gyro_rate, reference_angle, dt, alpha):
-    r"""One update of the complementary filter, for use inside a simulation loop.
-
-    Parameters
-    ----------
-    angle : array_like
-        Filtered angle of the previous step [rad].
-    gyro_rate : array_like
-        Gyro rate about the same axis at this step [rad/s].
-    reference_angle : array_like
-        Absolute angle from the reference sensor at this step [rad].
-    dt : array_like
-        Step length [s].
-    alpha : array_like
-        Filter coefficient A in [0, 1] [-].
-
-    Returns
-    -------
-    ndarray
-        The new filtered angle [rad],
-        :math:`A\,(\text{angle} + \omega\,\Delta t) + (1 - A)\,\text{angle}_{ref}`.
-
-    Notes
-    -----
-    Thesis eq. (39), seed line 587. No argument checks: the loop that calls this checks
-    its inputs once (see :func:`complementary_filter`).
-
-    Examples
-    --------
-    >>> float(complementary_filter_step(0.0, 1.0, 0.0, 0.01, 0.98))
-    0.0098
-    """
-    return alpha * (angle + gyro_rate * dt) + (1.0 - alpha) * reference_angle
-
-
-def complementary_filter(gyro_rate, accel_angle, dt, alpha, initial_angle=None):
-    r"""The thesis's complementary filter over a whole record, vectorised over time.
-
-    Parameters
-    ----------
-    gyro_rate : array_like, shape (N, ...)
-        Gyro rate about the filtered axis [rad/s]; time runs along axis 0, further axes
-        are independent channels (for instance Monte Carlo members).
-    accel_angle : array_like, shape (N, ...)
-        Absolute angle from the accelerometer (or any absolute reference) [rad],
-        broadcastable against ``gyro_rate``.
-    dt : float or array_like, shape (N,)
-        Sample interval [s], > 0; an array gives the interval before each sample.
-    alpha : float
-        Filter coefficient A [-] in [0, 1]; the thesis uses 0.95–0.99.
-    initial_angle : array_like, optional
-        Filtered angle before the first sample [rad]. Default: the first reference angle.
-
-    Returns
-    -------
-    ndarray, shape (N, ...)
-        Filtered angle [rad]:
-        :math:`\theta_k = A(\theta_{k-1} + \omega_k\Delta t_k) + (1 - A)\,\theta_{ref,k}`.
-
-    Notes
-    -----
-    Thesis eq. (39), seed line 587, in the discrete form the thesis implies
-    (its angle_gyro is the previous filtered angle advanced by the gyro). The recursion is
-    linear with a constant pole A, so it runs as one IIR filter (scipy.signal.lfilter)
-    instead of a Python loop. A = 0 returns the reference angle; A = 1 the gyro integral.
-    The filter does not unwrap angles: pass continuous angles (np.unwrap) when they
-    cross ±π.
-
-    Examples
-    --------
-    >>> complementary_filter([0.0, 0.0, 0.0], [1.0, 1.0, 1.0], 0.01, 0.5, initial_angle=0.0)
-    array([0.5  , 0.75 , 0.875])
-    """
-    gyro = as_finite("gyro_rate", gyro_rate)
-    ref = as_finite("accel_angle", accel_angle)
-    if gyro.ndim == 0:
-        raise ValueError("gyro_rate must be an array with time along axis 0, got a scalar")
-    gyro, ref = np.broadcast_arrays(gyro, ref)
-    n = gyro.shape[0]
-    step = as_positive("dt", dt, unit="s")
-    if step.ndim == 1 and step.shape[0] == n:
-        step = step.reshape((n,) + (1,) * (gyro.ndim - 1))
-    elif step.ndim != 0:
-        raise ValueError(f"dt must be a scalar or have shape ({n},), got shape {step.shape}")
-    a = float(as_in_range("alpha", alpha, 0.0, 1.0))
-    start = ref[0] if initial_angle is None else as_finite("initial_angle", initial_angle)
-    start = np.broadcast_to(start, gyro.shape[1:])
-    drive = a * gyro * step + (1.0 - a) * ref
-    filtered, _ = lfilter([1.0], [1.0, -a], drive, axis=0, zi=(a * start)[np.newaxis])
-    return filtered
-
-
-def complementary_time_constant(dt, alpha):
-    r"""Time constant of the complementary filter [s].
-
-    Parameters
-    ----------
-    dt : array_like
-        Sample interval [s], > 0.
-    alpha : array_like
-        Filter coefficient A [-] in [0, 1).
-
-    Returns
-    -------
-    ndarray
-        :math:`\tau = A\,\Delta t / (1 - A)` [s]: the reference enters through a first-order
-        low-pass with this time constant, the gyro through the complementary high-pass.
-
-    Notes
-    -----
-    Not in the thesis or the sources: follows from eq. (39) (the inventory's gap G19).
-
-    Examples
-    --------
-    >>> round(float(complementary_time_constant(0.01, 0.98)), 12)
-    0.49
-    """
-    step = as_positive("dt", dt, unit="s")
-    a = as_in_range("alpha", alpha, 0.0, np.nextafter(1.0, 0.0))
-    return a * step / (1.0 - a)
+__all__ = ["accelerometer_tilt", "strapdown_orientation", "rest_gyro_bias", "complementary_tilt"]
 
 
 def _rotations(quaternions):
@@ -149,21 +24,6 @@ def _rotations(quaternions):
 def _quaternions(rotations):
     """(..., 4) quaternions in (w, x, y, z) order from a scipy Rotation."""
     return rotations.as_quat(scalar_first=True)
-
-
-def _hamilton_product(p, q):
-    """Row-wise p ⊗ q of (N, 4) quaternions (w, x, y, z).
-
-    Written out because the prefix scan below calls it log2(N) times on whole arrays:
-    composing scipy Rotation objects costs ~17x more (scipy 1.17's ``__mul__`` takes
-    ~70 ms for 57 000 rotations); tests check this product against scipy's composition.
-    """
-    w1, x1, y1, z1 = p.T
-    w2, x2, y2, z2 = q.T
-    return np.stack([w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
-                     w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
-                     w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
-                     w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2], axis=-1)
 
 
 def _check_series3(name, value):
@@ -255,7 +115,7 @@ def strapdown_orientation(gyro, dt, initial_orientation=None):
     while shift < len(prefix):
         # Hillis–Steele scan: P[i] <- P[i - shift] ⊗ P[i] (order kept: composition is not
         # commutative, associativity is all the scan needs).
-        prefix[shift:] = _hamilton_product(prefix[:-shift], prefix[shift:])
+        prefix[shift:] = hamilton_product(prefix[:-shift], prefix[shift:])
         shift *= 2
     prefix /= np.linalg.norm(prefix, axis=-1, keepdims=True)
     if initial_orientation is not None:
@@ -264,6 +124,7 @@ def strapdown_orientation(gyro, dt, initial_orientation=None):
             raise ValueError(f"initial_orientation must be a unit quaternion of shape (4,), got {start!r}")
         prefix = _quaternions(_rotations(start) * _rotations(prefix))
     return prefix
+
 
 def _first_order_lowpass(signal, dt, tau):
     """Eq. (39) with no gyro term, y_k = A y_{k-1} + (1 - A) x_k, A = tau/(tau + dt), y_0 = x_0."""
@@ -435,45 +296,5 @@ def complementary_tilt(gyro, accel, dt, *, tau=3.0, order=2, rest_bias=True):
                          f"(cut-off below the Nyquist frequency {0.5 / step:g} Hz), got {time_constant!r}")
     smooth = _lowpass_from_mean(acc_inertial, step, time_constant, order)
     correction = accelerometer_tilt(smooth)
-    q = _hamilton_product(correction, gyro_frame)
+    q = hamilton_product(correction, gyro_frame)
     return q / np.linalg.norm(q, axis=-1, keepdims=True)
-
-
-def magnetometer_heading(b_sensor):
-    r"""Heading of a level sensor from the horizontal components of the measured field.
-
-    Parameters
-    ----------
-    b_sensor : array_like, shape (..., 3)
-        Magnetic flux density in the sensor frame [T] (any unit works: only the direction
-        of the horizontal part matters), with the sensor's z axis vertical.
-
-    Returns
-    -------
-    ndarray, shape (...)
-        Heading ψ [rad] in (−π, π]: the rotation of the sensor about the vertical,
-        counter-clockwise seen from above, from the direction of the horizontal field,
-        :math:`\psi = \operatorname{atan2}(-b_y, b_x)`. Apply ``np.unwrap`` along time
-        before filtering.
-
-    Notes
-    -----
-    Thesis §4 (seed line 599) names the HMC5883 magnetometer on the bench but gives no
-    formula; eq. (39) needs an absolute heading reference, which gravity cannot supply
-    (inventory gap G19). A sensor turned by ψ about the vertical sees the horizontal
-    field :math:`B_h` as :math:`(B_h\cos\psi, -B_h\sin\psi)`, the convention of the
-    planar field used for eq. (36). A tilted sensor needs its tilt removed first.
-
-    Examples
-    --------
-    >>> psi = np.radians([0.0, 30.0, -120.0])
-    >>> b = np.stack([np.cos(psi), -np.sin(psi), np.full(3, 0.7)], axis=-1)
-    >>> np.round(np.degrees(magnetometer_heading(b)), 9).tolist()
-    [0.0, 30.0, -120.0]
-    """
-    field = as_vectors("b_sensor", b_sensor)
-    horizontal = np.hypot(field[..., 0], field[..., 1])
-    if np.any(horizontal == 0):
-        raise ValueError("b_sensor must have a non-zero horizontal part (x, y) in every sample; "
-                         "a vertical field defines no heading")
-    return np.arctan2(-field[..., 1], field[..., 0]) + 0.0

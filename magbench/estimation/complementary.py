@@ -1,0 +1,135 @@
+r"""The complementary filter of thesis §4.2, eq. (39): one step, a whole series, and its
+time constant.
+
+The filter blends the integrated gyro rate with an absolute angle from another sensor.
+SI: radians, rad/s, seconds.
+"""
+
+import numpy as np
+from scipy.signal import lfilter
+
+from .._validate import as_finite, as_in_range, as_positive
+
+__all__ = ["complementary_filter_step", "complementary_filter", "complementary_time_constant"]
+
+
+def complementary_filter_step(angle, gyro_rate, reference_angle, dt, alpha):
+    r"""One update of the complementary filter, for use inside a simulation loop.
+
+    Parameters
+    ----------
+    angle : array_like
+        Filtered angle of the previous step [rad].
+    gyro_rate : array_like
+        Gyro rate about the same axis at this step [rad/s].
+    reference_angle : array_like
+        Absolute angle from the reference sensor at this step [rad].
+    dt : array_like
+        Step length [s].
+    alpha : array_like
+        Filter coefficient A in [0, 1] [-].
+
+    Returns
+    -------
+    ndarray
+        The new filtered angle [rad],
+        :math:`A\,(\text{angle} + \omega\,\Delta t) + (1 - A)\,\text{angle}_{ref}`.
+
+    Notes
+    -----
+    Thesis eq. (39), seed line 587. No argument checks: the loop that calls this checks
+    its inputs once (see :func:`complementary_filter`).
+
+    Examples
+    --------
+    >>> float(complementary_filter_step(0.0, 1.0, 0.0, 0.01, 0.98))
+    0.0098
+    """
+    return alpha * (angle + gyro_rate * dt) + (1.0 - alpha) * reference_angle
+
+
+def complementary_filter(gyro_rate, accel_angle, dt, alpha, initial_angle=None):
+    r"""The thesis's complementary filter over a whole record, vectorised over time.
+
+    Parameters
+    ----------
+    gyro_rate : array_like, shape (N, ...)
+        Gyro rate about the filtered axis [rad/s]; time runs along axis 0, further axes
+        are independent channels (for instance Monte Carlo members).
+    accel_angle : array_like, shape (N, ...)
+        Absolute angle from the accelerometer (or any absolute reference) [rad],
+        broadcastable against ``gyro_rate``.
+    dt : float or array_like, shape (N,)
+        Sample interval [s], > 0; an array gives the interval before each sample.
+    alpha : float
+        Filter coefficient A [-] in [0, 1]; the thesis uses 0.95–0.99.
+    initial_angle : array_like, optional
+        Filtered angle before the first sample [rad]. Default: the first reference angle.
+
+    Returns
+    -------
+    ndarray, shape (N, ...)
+        Filtered angle [rad]:
+        :math:`\theta_k = A(\theta_{k-1} + \omega_k\Delta t_k) + (1 - A)\,\theta_{ref,k}`.
+
+    Notes
+    -----
+    Thesis eq. (39), seed line 587, in the discrete form the thesis implies
+    (its angle_gyro is the previous filtered angle advanced by the gyro). The recursion is
+    linear with a constant pole A, so it runs as one IIR filter (scipy.signal.lfilter)
+    instead of a Python loop. A = 0 returns the reference angle; A = 1 the gyro integral.
+    The filter does not unwrap angles: pass continuous angles (np.unwrap) when they
+    cross ±π.
+
+    Examples
+    --------
+    >>> complementary_filter([0.0, 0.0, 0.0], [1.0, 1.0, 1.0], 0.01, 0.5, initial_angle=0.0)
+    array([0.5  , 0.75 , 0.875])
+    """
+    gyro = as_finite("gyro_rate", gyro_rate)
+    ref = as_finite("accel_angle", accel_angle)
+    if gyro.ndim == 0:
+        raise ValueError("gyro_rate must be an array with time along axis 0, got a scalar")
+    gyro, ref = np.broadcast_arrays(gyro, ref)
+    n = gyro.shape[0]
+    step = as_positive("dt", dt, unit="s")
+    if step.ndim == 1 and step.shape[0] == n:
+        step = step.reshape((n,) + (1,) * (gyro.ndim - 1))
+    elif step.ndim != 0:
+        raise ValueError(f"dt must be a scalar or have shape ({n},), got shape {step.shape}")
+    a = float(as_in_range("alpha", alpha, 0.0, 1.0))
+    start = ref[0] if initial_angle is None else as_finite("initial_angle", initial_angle)
+    start = np.broadcast_to(start, gyro.shape[1:])
+    drive = a * gyro * step + (1.0 - a) * ref
+    filtered, _ = lfilter([1.0], [1.0, -a], drive, axis=0, zi=(a * start)[np.newaxis])
+    return filtered
+
+
+def complementary_time_constant(dt, alpha):
+    r"""Time constant of the complementary filter [s].
+
+    Parameters
+    ----------
+    dt : array_like
+        Sample interval [s], > 0.
+    alpha : array_like
+        Filter coefficient A [-] in [0, 1).
+
+    Returns
+    -------
+    ndarray
+        :math:`\tau = A\,\Delta t / (1 - A)` [s]: the reference enters through a first-order
+        low-pass with this time constant, the gyro through the complementary high-pass.
+
+    Notes
+    -----
+    Not in the thesis or the sources: follows from eq. (39) (the inventory's gap G19).
+
+    Examples
+    --------
+    >>> round(float(complementary_time_constant(0.01, 0.98)), 12)
+    0.49
+    """
+    step = as_positive("dt", dt, unit="s")
+    a = as_in_range("alpha", alpha, 0.0, np.nextafter(1.0, 0.0))
+    return a * step / (1.0 - a)
