@@ -1,0 +1,31 @@
+r"""Feedback control of the mock-up: laws as pure step functions and their linear analysis.
+
+Thesis §4.1, eqs. (37)–(38): the PID law (:mod:`.pid`), the dipole allocation
+L = m × B (:mod:`.allocation`), the loop's poles and limits (:mod:`.linear`) and the
+readings of the thesis's unit-less gains (:mod:`.gain_readings`). Re-exports the public
+names of its modules. The simulated loop moved to :mod:`magbench.sim.pid_loop`; its names
+are still served from here, imported on use.
+"""
+
+from .allocation import ALLOCATIONS, body_field_exact, body_field_small_angle, dipole_allocation
+from .gain_readings import GAIN_READINGS, gain_reading_scale
+from .linear import (closed_loop_poles, closed_loop_polynomial, critical_gain_scale,
+                     double_integrator_ultimate_gain, integral_gain_limit)
+from .pid import pid_gains_for_triple_pole, pid_step, ziegler_nichols_pid
+
+_SIMULATION = ("PidLoop", "loop_torque", "pid_continuous_rhs", "ClosedLoopResult", "simulate_pid")
+
+
+def __getattr__(name):
+    # Compatibility: the simulation composes control laws, so control must not import it.
+    if name in _SIMULATION:
+        from ..sim import pid_loop
+
+        return getattr(pid_loop, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+__all__ = ["pid_step", "pid_gains_for_triple_pole", "ALLOCATIONS", "body_field_exact", "body_field_small_angle",
+           "dipole_allocation", *_SIMULATION, "closed_loop_polynomial", "closed_loop_poles",
+           "integral_gain_limit", "critical_gain_scale", "ziegler_nichols_pid",
+           "double_integrator_ultimate_gain", "GAIN_READINGS", "gain_reading_scale"]
