@@ -10,6 +10,7 @@ import sys
 import pytest
 
 PHYSICS = ["magbench.fields", "magbench.hardware", "magbench.dynamics", "magbench.earth", "magbench.rotations",
+           "magbench.sim.bench", "magbench.sim.pid_loop",
            "magbench.geomag", "magbench.attitude", "magbench.coils", "magbench.magnetorquer",
            "magbench.estimation", "magbench.control", "magbench.units", "magbench.sensors",
            "magbench.bench"]

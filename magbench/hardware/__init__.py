@@ -1,9 +1,14 @@
 """Hardware that makes or measures a field: turns and wires, air-core magnetorquers and
-their design space, windings, cored rods and electromagnets, permanent magnets.
+their design space, windings, cored rods and electromagnets, permanent magnets, and the
+sensors (datasheet error models).
 
 Pure functions of numpy arrays, SI. Re-exports the public functions of its modules.
 """
 
+from .sensors import (HMC5883L_MAX_OUTPUT_RATE, HMC5883L_NOISE_FLOOR, MPU6050_ACCEL_NOISE_DENSITY,
+                      MPU6050_ACCEL_ZERO_G_TOLERANCE, MPU6050_DLPF_BANDWIDTH, MPU6050_GYRO_NOISE_DENSITY,
+                      MPU6050_GYRO_TOTAL_RMS_NOISE, MPU6050_GYRO_ZRO_TOLERANCE, accelerometer_readings,
+                      gyro_readings, magnetometer_readings, noise_std_from_density)
 from .turn import SHAPES, awg_diameter, turn_area, turn_length, wire_area, wire_diameter
 from .magnetorquer import (coil_current, coil_mass, coil_mass_for_moment, coil_resistance,
                            current_for_moment, dipole_moment, joule_power, joule_power_for_moment,
@@ -29,4 +34,8 @@ __all__ = ["SHAPES", "turn_area", "turn_length", "wire_area", "wire_diameter", "
            "effective_permeability", "magnetization_curve", "field_for_magnetization",
            "core_central_magnetization", "electromagnet_design", "magnet_torque_per_mass",
            "magnet_mass_for_torque", "magnet_moment_per_mass", "permanent_magnet_min_mass",
-           "winding_resistance", "winding_voltage", "winding_power", "winding_mass"]
+           "winding_resistance", "winding_voltage", "winding_power", "winding_mass",
+           "MPU6050_GYRO_NOISE_DENSITY", "MPU6050_GYRO_TOTAL_RMS_NOISE", "MPU6050_GYRO_ZRO_TOLERANCE",
+           "MPU6050_ACCEL_NOISE_DENSITY", "MPU6050_ACCEL_ZERO_G_TOLERANCE", "MPU6050_DLPF_BANDWIDTH",
+           "HMC5883L_NOISE_FLOOR", "HMC5883L_MAX_OUTPUT_RATE", "noise_std_from_density", "gyro_readings",
+           "accelerometer_readings", "magnetometer_readings"]

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._validate import as_finite, as_positive
-from ..attitude import two_coil_torque
+from ..dynamics.pendulum import two_coil_torque
 
 from ..control.allocation import ALLOCATIONS
 from ..control.pid import pid_step

@@ -1,0 +1,743 @@
+r"""Closed-loop simulation of the thesis's bench experiments (thesis §4.2–4.4, Figs. 19–20).
+
+The mock-up hangs on a thread inside the Helmholtz field simulator and turns about the
+vertical only. This module puts the physics modules together into the loop that ran on
+the bench's Arduino, one controller sample at a time, vectorised over Monte Carlo
+members (every state is an array of shape ``(members,)``):
+
+1. **Sensors** (:mod:`magbench.sensors`, MPU-6050 gyro and HMC5883L magnetometer). Both
+   models are additive (reading = truth + error, the error independent of the truth),
+   so their errors are drawn ahead, in blocks of samples, by calling the sensor
+   functions on a zero signal; ``rng=None`` gives ideal sensors.
+2. **Filter** (thesis eq. 39, :func:`magbench.estimation.complementary_filter_step`). The
+   absolute reference is the magnetometer heading ψ_mag = atan2(−B_y', B_x'), *not* an
+   accelerometer angle: gravity is parallel to the turning axis, so an accelerometer
+   cannot observe this angle (inventory gap G19, a deviation from the text). The
+   heading is unwrapped onto the branch of the current estimate, as firmware would.
+3. **PID** (thesis eq. 37, :func:`magbench.control.pid_step`) on e = ψ_des − ψ̂ with
+   de/dt = −ω_gyro, saturated at the coils' full-scale moment, with anti-windup.
+4. **Allocation** (thesis §4.1, seed lines 545–557): with b the measured unit field in
+   body axes, M_x = −m_z b_y and M_y = m_z b_x for a torque −|B| m_z about the vertical;
+   the PID output u is the torque per unit field, m_z = −u.
+5. **Driver**: Arduino ``analogWrite`` sets an 8-bit duty (255 levels each way, the L298
+   sets the sign); the coil's mean current is duty·(U − drop)/R, with each coil's
+   measured resistance, and its moment follows from :mod:`magbench.magnetorquer`.
+   Assumptions (ours): the PWM period (≈ 2 ms at the Arduino's 490 Hz) is far longer
+   than the coil's L/R time and far shorter than the motion, so the torque is that of
+   the mean current; the controller knows the nominal full-scale moment, the coils may
+   differ from it (Monte Carlo moment spread).
+6. **Plant**: J ψ̈ = τ_coils + τ_thread, with τ_coils from thesis eq. (36)
+   (:func:`magbench.dynamics.two_coil_torque`) held over the sample (zero-order hold)
+   and the thread's torsion τ_thread = −κ(ψ − ψ_thread). One classical Runge–Kutta step
+   per sample; :func:`simulate_bench_reference` integrates the same loop with
+   :func:`scipy.integrate.solve_ivp` instead, as an oracle.
+
+ψ is the angle from the horizontal field to coil 1's axis, counted positive in the
+sense of the gyro's vertical axis. The field B0 is the magnitude of the horizontal
+field the mock-up sees; :func:`horizontal_field` combines the simulator's field with a
+horizontal background (the Earth's) at a given azimuth.
+
+The thesis's gains (K_p = 0.1, K_d = 0.5, K_i = 0.5, seed line 614) make the loop
+unstable when read in SI (inventory A40); the bench default gains here come from
+:func:`magbench.control.pid_gains_for_triple_pole` with a bandwidth of ours.
+"""
+
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from .. import control, dynamics, estimation, hardware
+from .._validate import as_finite, as_in_range, as_nonnegative, as_positive
+from ..constants import MU_0
+
+__all__ = ["BenchSetup", "BenchRun", "horizontal_field", "coil_full_scale_moment",
+           "quantise_duty", "plant_step", "simulate_bench", "simulate_bench_reference",
+           "monte_carlo", "steady_error_band", "draw_sensor_errors"]
+
+# Samples of sensor error drawn at once: bounds memory at members × block × 3 floats.
+_BLOCK = 256
+
+
+def _wrap(angle):
+    """Angle mapped into [−π, π] [rad] (round-to-nearest turn: cheaper than a remainder)."""
+    return angle - (2.0 * np.pi) * np.rint(angle * (0.5 / np.pi))
+
+
+@dataclass(frozen=True)
+class BenchSetup:
+    """The bench: mock-up, field, coils, driver, sensors and controller (SI values).
+
+    The thesis's bench is :meth:`from_parameters` of the chapter-4 inputs; every field
+    is documented with its unit and source there and in ``data/params/thesis.toml``.
+    """
+
+    inertia: float                      # J [kg m^2]
+    field: float                        # horizontal field magnitude B0 [T]
+    coil_resistance: tuple              # (R1, R2) [ohm]
+    coil_turns: float                   # N [-]
+    coil_side: float                    # square turn side l [m]
+    supply_voltage: float               # U [V]
+    kp: float                           # [A m^2/rad]
+    ki: float                           # [A m^2/(rad s)]
+    kd: float                           # [A m^2 s/rad]
+    filter_coefficient: float           # A of eq. (39) [-]
+    sample_interval: float = 0.01       # controller period [s]
+    pwm_levels: int = 255               # duty steps each way (0: no quantisation) [-]
+    driver_voltage_drop: float = 0.0    # L298 output-stage drop [V]
+    thread_stiffness: float = 0.0       # torsion constant kappa [N m/rad]
+    thread_neutral_angle: float = 0.0   # psi at which the thread is untwisted [rad]
+    gyro_noise_density: float | None = None       # [rad/s/sqrt(Hz)]; None: datasheet
+    gyro_bias: float = 0.0              # residual gyro offset after calibration [rad/s]
+    magnetometer_noise: float | None = None       # per-sample std [T]; None: datasheet
+
+    def __post_init__(self):
+        as_positive("inertia", self.inertia, unit="kg·m²")
+        as_positive("field", self.field, unit="T")
+        r = as_positive("coil_resistance", self.coil_resistance, unit="Ω")
+        if r.shape != (2,):
+            raise ValueError(f"coil_resistance must hold two values (R1, R2) [Ω], got shape {r.shape}")
+        as_positive("coil_turns", self.coil_turns)
+        as_positive("coil_side", self.coil_side, unit="m")
+        u = as_positive("supply_voltage", self.supply_voltage, unit="V")
+        for name in ("kp", "ki", "kd", "thread_stiffness", "gyro_bias"):
+            as_finite(name, getattr(self, name))
+        for name in ("kp", "ki", "kd", "thread_stiffness"):
+            as_nonnegative(name, getattr(self, name))
+        as_in_range("filter_coefficient", self.filter_coefficient, 0.0, 1.0)
+        as_positive("sample_interval", self.sample_interval, unit="s")
+        levels = as_nonnegative("pwm_levels", self.pwm_levels)
+        if float(levels) != int(levels):
+            raise ValueError(f"pwm_levels must be a whole number of duty steps, got {self.pwm_levels!r}")
+        as_in_range("driver_voltage_drop", self.driver_voltage_drop, 0.0, float(u), unit="V")
+        if float(self.driver_voltage_drop) >= float(u):
+            raise ValueError(f"driver_voltage_drop must be below supply_voltage ({float(u)} V), "
+                             f"got {self.driver_voltage_drop!r}")
+        as_finite("thread_neutral_angle", self.thread_neutral_angle)
+        if self.gyro_noise_density is not None:
+            as_nonnegative("gyro_noise_density", self.gyro_noise_density)
+        if self.magnetometer_noise is not None:
+            as_nonnegative("magnetometer_noise", self.magnetometer_noise, unit="T")
+
+    @classmethod
+    def from_parameters(cls, params, **changes):
+        """The bench of the chapter-4 inputs (``chapter_parameters("ch04")``, SI).
+
+        Field: ``bench_field_h`` (the 262 A/m measured at the simulator's centre) combined
+        with ``bench_background_h`` at ``bench_background_azimuth``; gains: the triple
+        pole at ``bench_bandwidth``. ``changes`` replace single fields afterwards.
+        """
+        p = params
+        b0 = horizontal_field(p["bench_field_h"], p["bench_background_h"],
+                              p["bench_background_azimuth"])
+        kp, ki, kd = control.pid_gains_for_triple_pole(p["mockup_inertia"], b0, p["bench_bandwidth"])
+        setup = cls(
+            inertia=p["mockup_inertia"], field=float(b0),
+            coil_resistance=(p["bench_coil_resistance"], p["bench_coil_resistance"]),
+            coil_turns=p["mtq_turns"], coil_side=p["mtq_side"], supply_voltage=p["mtq_voltage"],
+            kp=float(kp), ki=float(ki), kd=float(kd),
+            filter_coefficient=p["bench_filter_coefficient"],
+            sample_interval=p["bench_sample_interval"], pwm_levels=int(p["bench_pwm_levels"]),
+            thread_stiffness=p["bench_thread_stiffness"], gyro_bias=p["bench_gyro_bias"])
+        return replace(setup, **changes) if changes else setup
+
+    @property
+    def full_scale_moments(self):
+        """Moments of the two coils at full duty, (m1, m2) [A·m²]."""
+        return coil_full_scale_moment(self.supply_voltage - self.driver_voltage_drop,
+                                      np.asarray(self.coil_resistance, float), self.coil_turns,
+                                      self.coil_side)
+
+    @property
+    def moment_limit(self):
+        """Largest moment the controller commands: the weaker coil's full scale [A·m²]."""
+        return float(np.min(self.full_scale_moments))
+
+
+@dataclass
+class BenchRun:
+    """What :func:`simulate_bench` returns; traces are sampled every ``record_interval``."""
+
+    time: np.ndarray            # (K,) [s]
+    psi: np.ndarray             # (K, members) true angle [rad]
+    rate: np.ndarray            # (K, members) true rate [rad/s]
+    estimate: np.ndarray        # (K, members) filtered angle [rad]
+    moments: np.ndarray         # (K, members, 2) coil moments applied from that sample on [A m^2]
+    psi_des: float              # target [rad]
+    window: float               # length of the final window of the error band [s]
+    error_band: np.ndarray      # (members,) max |psi - psi_des| over the final window [rad]
+    indicated_error_band: np.ndarray  # (members,) the same for the filtered angle [rad]
+    inputs: dict = field(default_factory=dict)   # per-member inputs (Monte Carlo)
+
+
+def horizontal_field(simulator_h, background_h=0.0, background_azimuth=0.0):
+    r"""Magnitude of the horizontal flux density the mock-up sees.
+
+    Parameters
+    ----------
+    simulator_h : array_like
+        Field strength of the simulator at the centre [A/m] (the thesis measured 262 A/m,
+        designed for 250 A/m).
+    background_h : array_like, optional
+        Horizontal background field strength, e.g. the Earth's [A/m]; default 0.
+    background_azimuth : array_like, optional
+        Angle from the simulator's axis to the background's horizontal direction [rad].
+
+    Returns
+    -------
+    ndarray
+        :math:`B_0 = \mu_0\,|H_s\hat x + H_b(\cos\beta, \sin\beta)|` [T].
+
+    Notes
+    -----
+    Not in the thesis: it states neither how the simulator was oriented relative to the
+    Earth's field nor whether the measured 262 A/m includes it (inventory gap G18). The
+    angle ψ is then counted from this total horizontal field, which is also what the
+    magnetometer measures, so the background only changes the loop gain.
+
+    Examples
+    --------
+    >>> round(float(horizontal_field(262.0)) * 1e6, 2)
+    329.24
+    """
+    hs = as_positive("simulator_h", simulator_h, unit="A/m")
+    hb = as_nonnegative("background_h", background_h, unit="A/m")
+    beta = as_finite("background_azimuth", background_azimuth)
+    return MU_0 * np.hypot(hs + hb * np.cos(beta), hb * np.sin(beta))
+
+
+def coil_full_scale_moment(voltage, resistance, turns, side):
+    r"""Dipole moment of a square magnetorquer at full drive, from its measured resistance.
+
+    Parameters
+    ----------
+    voltage : array_like
+        Voltage across the coil [V].
+    resistance : array_like
+        The coil's measured resistance R [Ω] (the thesis: ≈ 55 Ω).
+    turns : array_like
+        Number of turns N [-].
+    side : array_like
+        Side of the square turn l [m].
+
+    Returns
+    -------
+    ndarray
+        m = N (U/R) l² [A·m²], through :func:`magbench.hardware.coil_current` and
+        :func:`magbench.hardware.dipole_moment`.
+
+    Notes
+    -----
+    Thesis eq. (17)–(18) with the measured resistance of seed line 441: 0.524 A·m² for
+    12 V, 55 Ω, N = 240, l = 0.1 m. If the extra 1.5 Ω were extra turns (the thesis's
+    explanation), eq. (20) would give 0.539 A·m² whatever N; the Monte Carlo's ±5 %
+    moment spread covers the difference.
+
+    Examples
+    --------
+    >>> round(float(coil_full_scale_moment(12.0, 55.0, 240, 0.1)), 4)
+    0.5236
+    """
+    r = as_positive("resistance", resistance, unit="Ω")
+    n = as_positive("turns", turns)
+    current = hardware.coil_current(voltage, r / n, n)
+    return hardware.dipole_moment(current, n, hardware.turn_area(side, "square"))
+
+
+def quantise_duty(duty, levels):
+    r"""Signed PWM duty as the Arduino's ``analogWrite`` and the L298 deliver it.
+
+    Parameters
+    ----------
+    duty : array_like
+        Requested duty in [−1, 1] [-]; the sign selects the L298's bridge direction.
+    levels : int
+        Duty steps each way [-]: 255 for ``analogWrite``'s 8 bits; 0 for no quantisation.
+
+    Returns
+    -------
+    ndarray
+        sign(d)·round(|d|·levels)/levels [-] (round half to even, as numpy rounds; the
+        firmware's rounding is not known).
+
+    Notes
+    -----
+    Not in the thesis: it names the L298 module (seed line 591) but not the resolution.
+
+    Examples
+    --------
+    >>> quantise_duty([0.5, -0.001, 0.003], 255).round(6).tolist()
+    [0.501961, -0.0, 0.003922]
+    """
+    d = np.asarray(duty, dtype=float)
+    if not levels:
+        return d
+    return np.rint(d * levels) / levels
+
+
+def _angular_acceleration(psi, omega, m1, m2, field, inertia, stiffness, neutral):
+    torque = dynamics.two_coil_torque(psi, m1, m2, field) - stiffness * (psi - neutral)
+    return torque / inertia
+
+
+def plant_step(psi, omega, moment_1, moment_2, dt, *, field, inertia, thread_stiffness=0.0,
+               thread_neutral_angle=0.0):
+    r"""Advance the mock-up by one sample with the coil moments held (classical RK4).
+
+    Parameters
+    ----------
+    psi : array_like
+        Angle from the field to coil 1's axis [rad].
+    omega : array_like
+        Rate about the vertical [rad/s].
+    moment_1, moment_2 : array_like
+        Moments of coil 1 and coil 2, held over the step [A·m²].
+    dt : float
+        Step [s].
+    field : array_like
+        Horizontal field B0 [T].
+    inertia : array_like
+        Moment of inertia J about the vertical [kg·m²].
+    thread_stiffness : array_like, optional
+        Torsion constant κ of the thread [N·m/rad].
+    thread_neutral_angle : array_like, optional
+        Angle at which the thread is untwisted [rad].
+
+    Returns
+    -------
+    psi, omega : ndarray
+        State after the step [rad], [rad/s].
+
+    Notes
+    -----
+    Thesis eq. (36), J ω̇ = −B0(m1 sin ψ + m2 cos ψ), plus the torsion −κ(ψ − ψ_thread)
+    that the thesis names as a cause of the bench's error (seed line 616) but does not
+    quantify. The local error is O((ω_n dt)⁵) with ω_n ≈ 0.2 rad/s: ~1e-14 rad per 10 ms
+    step. No argument checks (inner loop).
+
+    Examples
+    --------
+    >>> p, w = plant_step(0.0, 0.0, 0.0, 0.4, 0.01, field=3e-4, inertia=0.005)
+    >>> round(float(w), 8)   # torque -B0 m2 = -1.2e-4 N m for 10 ms
+    -0.00024
+    """
+    args = (moment_1, moment_2, field, inertia, thread_stiffness, thread_neutral_angle)
+    h = dt
+    k1p, k1w = omega, _angular_acceleration(psi, omega, *args)
+    k2p = omega + 0.5 * h * k1w
+    k2w = _angular_acceleration(psi + 0.5 * h * k1p, k2p, *args)
+    k3p = omega + 0.5 * h * k2w
+    k3w = _angular_acceleration(psi + 0.5 * h * k2p, k3p, *args)
+    k4p = omega + h * k3w
+    k4w = _angular_acceleration(psi + h * k3p, k4p, *args)
+    return (psi + h / 6.0 * (k1p + 2.0 * (k2p + k3p) + k4p),
+            omega + h / 6.0 * (k1w + 2.0 * (k2w + k3w) + k4w))
+
+
+def draw_sensor_errors(setup, steps, members, rng):
+    r"""Additive errors of the gyro (vertical axis) and magnetometer (two horizontal axes).
+
+    Parameters
+    ----------
+    setup : BenchSetup
+        The bench (noise levels; None picks the datasheet defaults) [-].
+    steps : int
+        Number of samples [-].
+    members : int
+        Number of Monte Carlo members [-].
+    rng : numpy.random.Generator or None
+        Source of randomness [-]; None gives ideal sensors (zero errors).
+
+    Returns
+    -------
+    gyro : ndarray, shape (steps, members)
+        Gyro error about the vertical [rad/s].
+    magnetometer : ndarray, shape (steps, members, 2)
+        Magnetometer errors along coil 1's and coil 2's axes [T].
+
+    Notes
+    -----
+    Not in the thesis: the errors are what :func:`magbench.sensors.gyro_readings` and
+    :func:`magbench.sensors.magnetometer_readings` add to a zero signal; since both models
+    add errors independent of the signal, truth + these errors is exactly their reading.
+
+    Examples
+    --------
+    >>> g, m = draw_sensor_errors(None, 3, 2, None)
+    >>> g.shape, m.shape, float(abs(g).max() + abs(m).max())
+    ((3, 2), (3, 2, 2), 0.0)
+    """
+    if rng is None:
+        return np.zeros((steps, members)), np.zeros((steps, members, 2))
+    from ..hardware import sensors
+
+    dt = setup.sample_interval
+    gkw = {} if setup.gyro_noise_density is None else {"noise_density": setup.gyro_noise_density}
+    mkw = {} if setup.magnetometer_noise is None else {"noise_std": setup.magnetometer_noise}
+    gyro = sensors.gyro_readings(np.zeros((steps, members)), dt, rng=rng, bias=setup.gyro_bias, **gkw)
+    mag = sensors.magnetometer_readings(np.zeros((steps, members, 2)), dt, rng=rng, **mkw)
+    return gyro, mag
+
+
+def _member_array(name, value, members):
+    arr = as_finite(name, value)
+    try:
+        return np.array(np.broadcast_to(arr, (members,)), dtype=float)
+    except ValueError:
+        raise ValueError(f"{name} must be a scalar or have shape ({members},), got shape {arr.shape}") from None
+
+
+def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=0.0, members=None,
+                   moment_scale=1.0, thread_stiffness=None, rng=None, sensor_errors=None,
+                   record_interval=None, window=20.0):
+    r"""Simulate the bench's closed loop, vectorised over Monte Carlo members.
+
+    Parameters
+    ----------
+    setup : BenchSetup
+        The bench [-].
+    psi_des : float
+        Target angle ψ_des from the field to coil 1 [rad] (Figs. 19–20: π/3, 2π/3).
+    duration : float
+        Simulated time [s], a whole number of samples.
+    release_angle, release_rate : array_like, optional
+        True angle [rad] and rate [rad/s] at release, per member.
+    members : int, optional
+        Number of members [-]; default: the length of the per-member inputs (or 1).
+    moment_scale : array_like, optional
+        Factor on each coil's full-scale moment [-], broadcast to (members, 2): a scalar
+        for all, shape (2,) per coil, (members, 1) per member, (members, 2) for each.
+    thread_stiffness : array_like, optional
+        Torsion constant per member [N·m/rad]; default ``setup.thread_stiffness``.
+    rng : numpy.random.Generator, optional
+        Source of sensor noise [-]; None (default) for ideal sensors.
+    sensor_errors : tuple of ndarray, optional
+        Explicit (gyro (steps, members) [rad/s], magnetometer (steps, members, 2) [T])
+        errors instead of drawing them; excludes ``rng``.
+    record_interval : float, optional
+        Spacing of the recorded traces [s], a multiple of the sample interval; default
+        every sample.
+    window : float, optional
+        Length of the final window over which the error band is taken [s].
+
+    Returns
+    -------
+    BenchRun
+        Traces, the per-member error bands and the inputs.
+
+    Notes
+    -----
+    Not in the thesis: the loop of thesis §4 (eqs. 36, 37, 39 and the allocation of
+    seed lines 545–557) as laid out in the module docstring. At each sample k the
+    sensors read the state at t_k, the controller sets the moments, and the plant
+    advances to t_{k+1} with them held. The error band is
+    max |ψ(t) − ψ_des| over the samples with t ≥ duration − window (and the final
+    state): the thesis does not say what its 10° measures (gap G23).
+
+    Examples
+    --------
+    >>> from magbench.params import chapter_parameters
+    >>> s = BenchSetup.from_parameters(chapter_parameters("ch04", overrides=""))
+    >>> run = simulate_bench(s, np.pi / 3, duration=120.0)
+    >>> bool(run.error_band[0] < np.radians(1.0))
+    True
+    """
+    if not isinstance(setup, BenchSetup):
+        raise ValueError(f"setup must be a BenchSetup, got {type(setup).__name__}")
+    psi_des = float(as_finite("psi_des", psi_des))
+    dt = setup.sample_interval
+    steps_f = float(as_positive("duration", duration, unit="s")) / dt
+    steps = int(round(steps_f))
+    if abs(steps - steps_f) > 1e-6 * max(1.0, steps_f):
+        raise ValueError(f"duration must be a whole number of samples of {dt} s, got {duration!r}")
+    window = float(as_in_range("window", window, 0.0, steps * dt, unit="s"))
+    if members is None:
+        sizes = [np.size(v) for v in (release_angle, release_rate, thread_stiffness) if v is not None]
+        if np.ndim(moment_scale) == 2:
+            sizes.append(np.shape(moment_scale)[0])
+        if sensor_errors is not None:
+            sizes.append(np.shape(sensor_errors[0])[-1])
+        members = max(sizes + [1])
+    members = int(as_positive("members", members))
+    psi = _member_array("release_angle", release_angle, members)
+    omega = _member_array("release_rate", release_rate, members)
+    kappa = _member_array("thread_stiffness",
+                          setup.thread_stiffness if thread_stiffness is None else thread_stiffness, members)
+    as_nonnegative("thread_stiffness", kappa)
+    scale = as_positive("moment_scale", moment_scale)
+    try:
+        scale = np.broadcast_to(scale, (members, 2))
+    except ValueError:
+        raise ValueError(f"moment_scale must broadcast to ({members}, 2), got shape {scale.shape}") from None
+    every = 1 if record_interval is None else float(as_positive("record_interval", record_interval, unit="s")) / dt
+    if abs(every - round(every)) > 1e-6 or round(every) < 1:
+        raise ValueError(f"record_interval must be a multiple of the sample interval {dt} s, got {record_interval!r}")
+    every = int(round(every))
+    if sensor_errors is not None:
+        if rng is not None:
+            raise ValueError("give either rng or sensor_errors, not both")
+        g_err, m_err = (as_finite("sensor_errors", e) for e in sensor_errors)
+        if g_err.shape != (steps, members) or m_err.shape != (steps, members, 2):
+            raise ValueError(f"sensor_errors must have shapes ({steps}, {members}) and ({steps}, {members}, 2), "
+                             f"got {g_err.shape} and {m_err.shape}")
+    elif rng is not None and not isinstance(rng, np.random.Generator):
+        raise ValueError(f"rng must be a numpy.random.Generator or None, got {type(rng).__name__}")
+
+    b0, inertia, neutral = setup.field, setup.inertia, setup.thread_neutral_angle
+    alpha, kp, ki, kd = setup.filter_coefficient, setup.kp, setup.ki, setup.kd
+    limit = setup.moment_limit
+    levels = int(setup.pwm_levels)
+    # Nominal full scale (what the controller divides by) and each member's actual one.
+    full_nominal = setup.full_scale_moments
+    full_actual = full_nominal * scale                       # (members, 2)
+    duty_gain = 1.0 / full_nominal
+    full_1, full_2 = np.ascontiguousarray(full_actual[:, 0]), np.ascontiguousarray(full_actual[:, 1])
+
+    n_rec = steps // every + 1
+    rec = {k: np.empty((n_rec, members)) for k in ("psi", "rate", "estimate")}
+    rec_m = np.empty((n_rec, members, 2))
+    band = np.zeros(members)
+    band_est = np.zeros(members)
+    first_in_window = int(np.ceil((steps * dt - window) / dt - 1e-9))
+    estimate = None
+    integral = np.zeros(members)
+    for start in range(0, steps, _BLOCK):
+        count = min(_BLOCK, steps - start)
+        if sensor_errors is not None:
+            g_blk, m_blk = g_err[start:start + count], m_err[start:start + count]
+        else:
+            g_blk, m_blk = draw_sensor_errors(setup, count, members, rng)
+        for j in range(count):
+            k = start + j
+            c, s = np.cos(psi), np.sin(psi)
+            gyro = omega + g_blk[j]
+            bx = b0 * c + m_blk[j, :, 0]
+            by = -b0 * s + m_blk[j, :, 1]
+            heading = np.arctan2(-by, bx)
+            if estimate is None:
+                estimate = heading
+            reference = estimate + _wrap(heading - estimate)
+            estimate = estimation.complementary_filter_step(estimate, gyro, reference, dt, alpha)
+            error = _wrap(psi_des - estimate)          # the shorter way round (ours)
+            u, integral = control.pid_step(error, -gyro, integral, dt, kp, ki, kd, limit)
+            u_over_b = u / np.sqrt(bx * bx + by * by)
+            # Thesis allocation with m_z = -u: M_x = u b_y, M_y = -u b_x (torque B0 u).
+            moment_1 = quantise_duty(u_over_b * by * duty_gain[0], levels) * full_1
+            moment_2 = quantise_duty(u_over_b * bx * -duty_gain[1], levels) * full_2
+            if k % every == 0:
+                i = k // every
+                rec["psi"][i], rec["rate"][i], rec["estimate"][i] = psi, omega, estimate
+                rec_m[i, :, 0], rec_m[i, :, 1] = moment_1, moment_2
+            if k >= first_in_window:
+                np.maximum(band, np.abs(_wrap(psi - psi_des)), out=band)
+                np.maximum(band_est, np.abs(_wrap(estimate - psi_des)), out=band_est)
+            psi, omega = plant_step(psi, omega, moment_1, moment_2, dt, field=b0,
+                                    inertia=inertia, thread_stiffness=kappa, thread_neutral_angle=neutral)
+    if steps % every == 0:
+        rec["psi"][-1], rec["rate"][-1], rec["estimate"][-1] = psi, omega, estimate
+        rec_m[-1, :, 0], rec_m[-1, :, 1] = moment_1, moment_2
+    else:
+        for key in rec:
+            rec[key] = rec[key][:-1]
+        rec_m = rec_m[:-1]
+    np.maximum(band, np.abs(_wrap(psi - psi_des)), out=band)
+    time = np.arange(rec["psi"].shape[0]) * every * dt
+    inputs = {"release_angle": _member_array("release_angle", release_angle, members),
+              "release_rate": _member_array("release_rate", release_rate, members),
+              "moment_scale": np.array(scale), "thread_stiffness": kappa}
+    return BenchRun(time=time, psi=rec["psi"], rate=rec["rate"], estimate=rec["estimate"],
+                    moments=rec_m, psi_des=psi_des, window=window, error_band=band,
+                    indicated_error_band=band_est, inputs=inputs)
+
+
+def simulate_bench_reference(setup, psi_des, *, duration, release_angle=0.0, release_rate=0.0,
+                             moment_scale=1.0, thread_stiffness=None, sensor_errors=None,
+                             rtol=1e-10, atol=1e-12):
+    r"""The same closed loop for one member, the plant integrated by scipy's solve_ivp.
+
+    Parameters
+    ----------
+    setup : BenchSetup
+        The bench [-].
+    psi_des : float
+        Target angle [rad].
+    duration : float
+        Simulated time [s], a whole number of samples.
+    release_angle, release_rate : float, optional
+        Angle [rad] and rate [rad/s] at release.
+    moment_scale : array_like, optional
+        Factor on each coil's full-scale moment, shape (2,) or scalar [-].
+    thread_stiffness : float, optional
+        Torsion constant [N·m/rad]; default ``setup.thread_stiffness``.
+    sensor_errors : tuple of ndarray, optional
+        (gyro (steps,) [rad/s], magnetometer (steps, 2) [T]) errors; default ideal sensors.
+    rtol, atol : float, optional
+        Tolerances of solve_ivp (RK45) on each held-moment interval [-], [rad or rad/s].
+
+    Returns
+    -------
+    time, psi, omega, estimate : ndarray
+        At every sample and the final time [s], [rad], [rad/s], [rad].
+
+    Notes
+    -----
+    Not in the thesis: the oracle for :func:`simulate_bench`. The controller is written
+    out again here with scalars, one :func:`scipy.integrate.solve_ivp` call per sample
+    (the moments jump at each sample, so one call per interval is the way to integrate
+    a zero-order hold exactly). It is slow: the benchmark times it on a few members.
+
+    Examples
+    --------
+    >>> from magbench.params import chapter_parameters
+    >>> s = BenchSetup.from_parameters(chapter_parameters("ch04", overrides=""))
+    >>> t, p, w, e = simulate_bench_reference(s, 1.0, duration=0.05)
+    >>> t.shape
+    (6,)
+    """
+    from scipy.integrate import solve_ivp
+
+    dt = setup.sample_interval
+    steps = int(round(float(duration) / dt))
+    kappa = setup.thread_stiffness if thread_stiffness is None else float(thread_stiffness)
+    scale = np.broadcast_to(np.asarray(moment_scale, float), (2,))
+    full_nominal = setup.full_scale_moments
+    full_actual = full_nominal * scale
+    g_err, m_err = sensor_errors if sensor_errors is not None else (np.zeros(steps), np.zeros((steps, 2)))
+    b0, j = setup.field, setup.inertia
+
+    def rhs(t, y, m1, m2):
+        torque = -b0 * (m1 * np.sin(y[0]) + m2 * np.cos(y[0])) - kappa * (y[0] - setup.thread_neutral_angle)
+        return [y[1], torque / j]
+
+    state = np.array([float(release_angle), float(release_rate)])
+    out = np.empty((steps + 1, 3))
+    estimate, integral = None, 0.0
+    for k in range(steps):
+        psi, omega = state
+        gyro = omega + g_err[k]
+        bx = b0 * np.cos(psi) + m_err[k, 0]
+        by = -b0 * np.sin(psi) + m_err[k, 1]
+        heading = np.arctan2(-by, bx)
+        if estimate is None:
+            estimate = heading
+        diff = (heading - estimate + np.pi) % (2.0 * np.pi) - np.pi
+        estimate = setup.filter_coefficient * (estimate + gyro * dt) + (1.0 - setup.filter_coefficient) * (estimate + diff)
+        error = (psi_des - estimate + np.pi) % (2.0 * np.pi) - np.pi
+        u, integral = control.pid_step(error, -gyro, integral, dt, setup.kp, setup.ki,
+                                       setup.kd, setup.moment_limit)
+        norm = np.hypot(bx, by)
+        m1 = quantise_duty(u * by / norm / full_nominal[0], setup.pwm_levels) * full_actual[0]
+        m2 = quantise_duty(-u * bx / norm / full_nominal[1], setup.pwm_levels) * full_actual[1]
+        out[k] = psi, omega, estimate
+        sol = solve_ivp(rhs, (k * dt, (k + 1) * dt), state, args=(float(m1), float(m2)),
+                        rtol=rtol, atol=atol)
+        state = sol.y[:, -1]
+    out[steps] = state[0], state[1], estimate
+    return np.arange(steps + 1) * dt, out[:, 0], out[:, 1], out[:, 2]
+
+
+def monte_carlo(setup, psi_des, *, members, seed, duration, moment_tolerance, release_angle_spread,
+                release_rate_std, thread_stiffness_factor, record_interval=None, window=20.0,
+                release_angle=None, release_rate=0.0):
+    r"""Seeded Monte Carlo of the bench over its uncertain inputs.
+
+    Parameters
+    ----------
+    setup : BenchSetup
+        The nominal bench [-].
+    psi_des : float
+        Target angle [rad].
+    members : int
+        Number of members [-].
+    seed : int
+        Seed of :func:`numpy.random.default_rng` [-]; the same seed gives the same run.
+    duration : float
+        Simulated time [s].
+    moment_tolerance : float
+        Each coil's moment is uniform in nominal·(1 ± tolerance) [-] (thesis: σ = 5 %).
+    release_angle_spread : float
+        Release angle uniform in centre ± spread [rad] (ours: the mock-up is turned by hand).
+    release_rate_std : float
+        Release rate normal about ``release_rate`` with this standard deviation [rad/s] (ours).
+    thread_stiffness_factor : float
+        Thread stiffness log-uniform in nominal ×/÷ factor [-], ≥ 1 (ours).
+    record_interval : float, optional
+        Spacing of the recorded traces [s].
+    window : float, optional
+        Final window of the error band [s].
+    release_angle : float, optional
+        Centre of the release angles [rad]; default ψ_des. A nominal run released at
+        ``release_angle`` with ``release_rate`` is then the centre of the members' inputs.
+    release_rate : float, optional
+        Mean of the release rates [rad/s]; default 0.
+
+    Returns
+    -------
+    BenchRun
+        All members; ``inputs`` holds the drawn values.
+
+    Notes
+    -----
+    Not in the thesis: the thesis reports single runs with unstated initial conditions.
+    Sensor noise is drawn from the same generator after the inputs.
+
+    Examples
+    --------
+    >>> from magbench.params import chapter_parameters
+    >>> s = BenchSetup.from_parameters(chapter_parameters("ch04", overrides=""))
+    >>> a = monte_carlo(s, 1.0, members=3, seed=1, duration=1.0, moment_tolerance=0.05,
+    ...                 release_angle_spread=0.5, release_rate_std=0.01, thread_stiffness_factor=3.0,
+    ...                 window=0.5)
+    >>> b = monte_carlo(s, 1.0, members=3, seed=1, duration=1.0, moment_tolerance=0.05,
+    ...                 release_angle_spread=0.5, release_rate_std=0.01, thread_stiffness_factor=3.0,
+    ...                 window=0.5)
+    >>> bool(np.array_equal(a.psi, b.psi))
+    True
+    """
+    members = int(as_positive("members", members))
+    tol = float(as_in_range("moment_tolerance", moment_tolerance, 0.0, 0.5))
+    spread = float(as_in_range("release_angle_spread", release_angle_spread, 0.0, np.pi, unit="rad"))
+    rate_std = float(as_nonnegative("release_rate_std", release_rate_std, unit="rad/s"))
+    factor = float(as_in_range("thread_stiffness_factor", thread_stiffness_factor, 1.0, 1e6))
+    centre = psi_des if release_angle is None else float(as_finite("release_angle", release_angle))
+    mean_rate = float(as_finite("release_rate", release_rate))
+    rng = np.random.default_rng(seed)
+    scale = rng.uniform(1.0 - tol, 1.0 + tol, (members, 2))
+    angle = centre + rng.uniform(-spread, spread, members)
+    rate = mean_rate + rate_std * rng.standard_normal(members)
+    stiffness = setup.thread_stiffness * np.exp(rng.uniform(-np.log(factor), np.log(factor), members))
+    return simulate_bench(setup, psi_des, duration=duration, release_angle=angle, release_rate=rate,
+                          members=members, moment_scale=scale, thread_stiffness=stiffness, rng=rng,
+                          record_interval=record_interval, window=window)
+
+
+def steady_error_band(run, quantile=None):
+    r"""The error band of a run: per member, or a quantile over members.
+
+    Parameters
+    ----------
+    run : BenchRun
+        A simulated run [-].
+    quantile : float, optional
+        Quantile over members in [0, 1] [-]; default: the per-member values.
+
+    Returns
+    -------
+    ndarray or float
+        max |ψ − ψ_des| over the final window [rad].
+
+    Notes
+    -----
+    Not in the thesis: the thesis's "absolute orientation error of 10°" (seed line 616)
+    has no stated metric (gap G23); this is the one used here.
+
+    Examples
+    --------
+    >>> r = BenchRun(np.zeros(1), np.zeros((1, 2)), np.zeros((1, 2)), np.zeros((1, 2)),
+    ...              np.zeros((1, 2, 2)), 0.0, 1.0, np.array([0.1, 0.3]), np.zeros(2))
+    >>> round(float(steady_error_band(r, 0.5)), 6)
+    0.2
+    """
+    if quantile is None:
+        return run.error_band
+    q = float(as_in_range("quantile", quantile, 0.0, 1.0))
+    return float(np.quantile(run.error_band, q))
