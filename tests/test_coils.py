@@ -181,33 +181,36 @@ def test_loop_against_high_precision_reference():
 
 # ----------------------------------------------------------------- magpylib peer
 
-magpy = pytest.importorskip("magpylib")
+@pytest.fixture
+def magpy():
+    """magpylib, the peer; only the tests that compare with it skip without it."""
+    return pytest.importorskip("magpylib")
 
 
-def _magpy_loop(points, radius, ampere_turns, position=(0.0, 0.0, 0.0)):
+def _magpy_loop(magpy, points, radius, ampere_turns, position=(0.0, 0.0, 0.0)):
     pts = np.asarray(points, dtype=float).reshape(-1, 3)
     return magpy.func.circle_field("B", pts, 2 * radius, ampere_turns, positions=position)
 
 
-def test_loop_against_magpylib_random_and_near_axis():
+def test_loop_against_magpylib_random_and_near_axis(magpy):
     rng = np.random.default_rng(17)
     pts = np.concatenate(
         [rng.uniform(-3 * A, 3 * A, (2000, 3))]
         + [_near_axis_points(rng, e, 100) for e in (1e-3, 1e-5, 1e-7, 1e-9)]
     )
     b = loop_b(pts, A, CURRENT, TURNS)
-    ref = _magpy_loop(pts, A, TURNS * CURRENT)
+    ref = _magpy_loop(magpy, pts, A, TURNS * CURRENT)
     # Both codes are accurate to a few 1e-15 of |B| (magpylib's near-axis B_ρ loses
     # digits relative to B_ρ, but B_ρ ≪ |B| there); the brief's bound is 1e-12 of |B|.
     assert np.max(_relative_to_norm(b, ref)) <= 1e-12
 
 
 @pytest.mark.parametrize("delta_over_a", [1e-2, 1e-3, 1e-4])
-def test_loop_against_magpylib_near_wire(delta_over_a):
+def test_loop_against_magpylib_near_wire(delta_over_a, magpy):
     rng = np.random.default_rng(19)
     pts = _near_wire_points(rng, delta_over_a, 200)
     b = loop_b(pts, A, CURRENT, TURNS)
-    ref = _magpy_loop(pts, A, TURNS * CURRENT)
+    ref = _magpy_loop(magpy, pts, A, TURNS * CURRENT)
     # Near the wire B ~ 1/δ and one ulp of ρ = hypot(x, y) moves the point by ~1e-16 a:
     # the problem's condition number is ~a/δ, and the two codes round ρ differently
     # (measured: 5e-16·a/δ). 1e-13·a/δ leaves a factor 200; against exactly representable
@@ -215,19 +218,19 @@ def test_loop_against_magpylib_near_wire(delta_over_a):
     assert np.max(_relative_to_norm(b, ref)) <= 1e-13 / delta_over_a
 
 
-def test_helmholtz_against_magpylib():
+def test_helmholtz_against_magpylib(magpy):
     rng = np.random.default_rng(23)
     d = 0.51
     pts = rng.uniform(-A, A, (2000, 3))
     b = helmholtz_b(pts, A, d, CURRENT, TURNS)
-    ref = _magpy_loop(pts, A, TURNS * CURRENT, (0, 0, -d / 2)) + _magpy_loop(
-        pts, A, TURNS * CURRENT, (0, 0, d / 2)
+    ref = _magpy_loop(magpy, pts, A, TURNS * CURRENT, (0, 0, -d / 2)) + _magpy_loop(
+        magpy, pts, A, TURNS * CURRENT, (0, 0, d / 2)
     )
     # Sum of two loops, each accurate to a few 1e-15 of its own |B|; 1e-12 is the contract.
     assert np.max(_relative_to_norm(b, ref)) <= 1e-12
 
 
-def test_posed_loop_against_magpylib():
+def test_posed_loop_against_magpylib(magpy):
     from scipy.spatial.transform import Rotation
 
     rng = np.random.default_rng(29)
@@ -360,7 +363,7 @@ def test_square_axis_closed_form_and_centre():
     assert np.max(np.abs(b[:, :2])) <= 1e-15 * np.max(np.abs(b[:, 2]))
 
 
-def test_square_against_magpylib():
+def test_square_against_magpylib(magpy):
     rng = np.random.default_rng(41)
     side, center, normal = 0.7, np.array([0.1, -0.2, 0.05]), np.array([0.0, 0.0, 1.0])
     pts = rng.uniform(-1, 1, (1000, 3))
