@@ -1,4 +1,4 @@
 """Compatibility module: the bench loop moved to :mod:`magbench.sim.bench`."""
 
 from .sim.bench import *  # noqa: F403 - the re-export is the point
-from .sim.bench import __all__, _wrap  # noqa: F401 - _wrap: the chapter-4 figures use it
+from .sim.bench import __all__  # noqa: F401

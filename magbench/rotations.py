@@ -2,7 +2,7 @@
 
 import numpy as np
 
-__all__ = ["hamilton_product"]
+__all__ = ["hamilton_product", "wrap_angle"]
 
 
 def hamilton_product(p, q):
@@ -35,3 +35,28 @@ def hamilton_product(p, q):
                      w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
                      w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
                      w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2], axis=-1)
+
+
+def wrap_angle(angle):
+    """An angle mapped into [−π, π], the shorter way round.
+
+    Not in the sources: the usual wrap, by round-to-nearest turn (cheaper than a
+    remainder, and exact for angles of a few turns).
+
+    Parameters
+    ----------
+    angle : array_like
+        Angle [rad].
+
+    Returns
+    -------
+    ndarray
+        The same angle in [−π, π] [rad].
+
+    Examples
+    --------
+    >>> float(wrap_angle(3 * np.pi / 2))
+    -1.5707963267948966
+    """
+    angle = np.asarray(angle, dtype=float)
+    return angle - (2.0 * np.pi) * np.rint(angle * (0.5 / np.pi))

@@ -13,6 +13,7 @@ import numpy as np
 from .. import bench, benchlog
 from ..data import load_parameter_set, measurement
 from ..params import chapter_parameters
+from ..rotations import wrap_angle
 from . import FigureData, FigureParameter, FigureSpec, Series, register
 
 SOURCE = "Bui (2016), thesis §4.4, Figs. 19–20; model: magbench.bench"
@@ -52,7 +53,7 @@ def _logs_for(psi_des, alpha):
     series = []
     for log in benchlog.load_bench_logs():
         target = log.psi_des
-        if target is not None and abs(bench._wrap(target - psi_des)) > 1e-6:
+        if target is not None and abs(wrap_angle(target - psi_des)) > 1e-6:
             continue
         series.append(Series(f"bench log {log.path.name}", {
             "time": ("s", log.time),

@@ -49,18 +49,14 @@ import numpy as np
 from .. import control, dynamics, estimation, hardware
 from .._validate import as_finite, as_in_range, as_nonnegative, as_positive
 from ..constants import MU_0
+from ..rotations import wrap_angle
 
-__all__ = ["BenchSetup", "BenchRun", "horizontal_field", "coil_full_scale_moment",
+__all__ = ["BenchSetup", "BenchRun", "controller_step", "horizontal_field", "coil_full_scale_moment",
            "quantise_duty", "plant_step", "simulate_bench", "simulate_bench_reference",
            "monte_carlo", "steady_error_band", "draw_sensor_errors"]
 
 # Samples of sensor error drawn at once: bounds memory at members × block × 3 floats.
 _BLOCK = 256
-
-
-def _wrap(angle):
-    """Angle mapped into [−π, π] [rad] (round-to-nearest turn: cheaper than a remainder)."""
-    return angle - (2.0 * np.pi) * np.rint(angle * (0.5 / np.pi))
 
 
 @dataclass(frozen=True)
@@ -386,6 +382,105 @@ def _member_array(name, value, members):
         raise ValueError(f"{name} must be a scalar or have shape ({members},), got shape {arr.shape}") from None
 
 
+def controller_step(setup, psi_des, gyro, bx, by, estimate, integral, full_1, full_2):
+    r"""One sample of the bench's controller: filter, PID, allocation and PWM (pure).
+
+    Parameters
+    ----------
+    setup : BenchSetup
+        The bench: sample interval, filter coefficient, gains, moment limit, PWM levels
+        and nominal full-scale moments [-].
+    psi_des : float
+        Target angle [rad].
+    gyro : array_like
+        Gyro reading [rad/s], per member.
+    bx, by : array_like
+        Magnetometer reading along coil 1 and coil 2 [T], per member.
+    estimate : array_like or None
+        The filter's angle before this sample [rad]; None at the first sample, where the
+        filter starts from the magnetometer heading.
+    integral : array_like
+        The PID integral before this sample [rad·s].
+    full_1, full_2 : array_like
+        Each coil's actual full-scale moment [A·m²], per member.
+
+    Returns
+    -------
+    moment_1, moment_2, estimate, integral : ndarray
+        The coils' moments held until the next sample [A·m²], the filter's new angle
+        [rad] and the new integral [rad·s].
+
+    Notes
+    -----
+    Thesis §4.1–4.2: eq. (39) on the magnetometer heading (the reference unwrapped to
+    within half a turn of the estimate), the PID of eqs. (37)–(38) on the wrapped error
+    (the shorter way round, our choice), and the thesis's allocation with m_z = −u:
+    M_x = u b_y, M_y = −u b_x (torque B₀u), each duty cycle quantised to the PWM levels.
+    """
+    heading = np.arctan2(-by, bx)
+    if estimate is None:
+        estimate = heading
+    reference = estimate + wrap_angle(heading - estimate)
+    estimate = estimation.complementary_filter_step(estimate, gyro, reference, setup.sample_interval,
+                                                    setup.filter_coefficient)
+    error = wrap_angle(psi_des - estimate)
+    u, integral = control.pid_step(error, -gyro, integral, setup.sample_interval, setup.kp, setup.ki,
+                                   setup.kd, setup.moment_limit)
+    u_over_b = u / np.sqrt(bx * bx + by * by)
+    duty_gain = 1.0 / setup.full_scale_moments
+    levels = int(setup.pwm_levels)
+    moment_1 = quantise_duty(u_over_b * by * duty_gain[0], levels) * full_1
+    moment_2 = quantise_duty(u_over_b * bx * -duty_gain[1], levels) * full_2
+    return moment_1, moment_2, estimate, integral
+
+
+def _loop_inputs(setup, duration, window, members, release_angle, release_rate, moment_scale,
+                 thread_stiffness, rng, sensor_errors, record_interval):
+    """Checked inputs of :func:`simulate_bench`: steps, window, members, initial state,
+    stiffness, moment scale, recording stride and sensor errors (None: draw them)."""
+    if not isinstance(setup, BenchSetup):
+        raise ValueError(f"setup must be a BenchSetup, got {type(setup).__name__}")
+    dt = setup.sample_interval
+    steps_f = float(as_positive("duration", duration, unit="s")) / dt
+    steps = int(round(steps_f))
+    if abs(steps - steps_f) > 1e-6 * max(1.0, steps_f):
+        raise ValueError(f"duration must be a whole number of samples of {dt} s, got {duration!r}")
+    window = float(as_in_range("window", window, 0.0, steps * dt, unit="s"))
+    if members is None:
+        sizes = [np.size(v) for v in (release_angle, release_rate, thread_stiffness) if v is not None]
+        if np.ndim(moment_scale) == 2:
+            sizes.append(np.shape(moment_scale)[0])
+        if sensor_errors is not None:
+            sizes.append(np.shape(sensor_errors[0])[-1])
+        members = max(sizes + [1])
+    members = int(as_positive("members", members))
+    psi = _member_array("release_angle", release_angle, members)
+    omega = _member_array("release_rate", release_rate, members)
+    kappa = _member_array("thread_stiffness",
+                          setup.thread_stiffness if thread_stiffness is None else thread_stiffness, members)
+    as_nonnegative("thread_stiffness", kappa)
+    scale = as_positive("moment_scale", moment_scale)
+    try:
+        scale = np.broadcast_to(scale, (members, 2))
+    except ValueError:
+        raise ValueError(f"moment_scale must broadcast to ({members}, 2), got shape {scale.shape}") from None
+    every = 1 if record_interval is None else float(as_positive("record_interval", record_interval, unit="s")) / dt
+    if abs(every - round(every)) > 1e-6 or round(every) < 1:
+        raise ValueError(f"record_interval must be a multiple of the sample interval {dt} s, got {record_interval!r}")
+    every = int(round(every))
+    g_err = m_err = None
+    if sensor_errors is not None:
+        if rng is not None:
+            raise ValueError("give either rng or sensor_errors, not both")
+        g_err, m_err = (as_finite("sensor_errors", e) for e in sensor_errors)
+        if g_err.shape != (steps, members) or m_err.shape != (steps, members, 2):
+            raise ValueError(f"sensor_errors must have shapes ({steps}, {members}) and ({steps}, {members}, 2), "
+                             f"got {g_err.shape} and {m_err.shape}")
+    elif rng is not None and not isinstance(rng, np.random.Generator):
+        raise ValueError(f"rng must be a numpy.random.Generator or None, got {type(rng).__name__}")
+    return steps, window, members, psi, omega, kappa, scale, every, g_err, m_err
+
+
 def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=0.0, members=None,
                    moment_scale=1.0, thread_stiffness=None, rng=None, sensor_errors=None,
                    record_interval=None, window=20.0):
@@ -441,55 +536,14 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
     >>> bool(run.error_band[0] < np.radians(1.0))
     True
     """
-    if not isinstance(setup, BenchSetup):
-        raise ValueError(f"setup must be a BenchSetup, got {type(setup).__name__}")
     psi_des = float(as_finite("psi_des", psi_des))
+    steps, window, members, psi, omega, kappa, scale, every, g_err, m_err = _loop_inputs(
+        setup, duration, window, members, release_angle, release_rate, moment_scale, thread_stiffness,
+        rng, sensor_errors, record_interval)
     dt = setup.sample_interval
-    steps_f = float(as_positive("duration", duration, unit="s")) / dt
-    steps = int(round(steps_f))
-    if abs(steps - steps_f) > 1e-6 * max(1.0, steps_f):
-        raise ValueError(f"duration must be a whole number of samples of {dt} s, got {duration!r}")
-    window = float(as_in_range("window", window, 0.0, steps * dt, unit="s"))
-    if members is None:
-        sizes = [np.size(v) for v in (release_angle, release_rate, thread_stiffness) if v is not None]
-        if np.ndim(moment_scale) == 2:
-            sizes.append(np.shape(moment_scale)[0])
-        if sensor_errors is not None:
-            sizes.append(np.shape(sensor_errors[0])[-1])
-        members = max(sizes + [1])
-    members = int(as_positive("members", members))
-    psi = _member_array("release_angle", release_angle, members)
-    omega = _member_array("release_rate", release_rate, members)
-    kappa = _member_array("thread_stiffness",
-                          setup.thread_stiffness if thread_stiffness is None else thread_stiffness, members)
-    as_nonnegative("thread_stiffness", kappa)
-    scale = as_positive("moment_scale", moment_scale)
-    try:
-        scale = np.broadcast_to(scale, (members, 2))
-    except ValueError:
-        raise ValueError(f"moment_scale must broadcast to ({members}, 2), got shape {scale.shape}") from None
-    every = 1 if record_interval is None else float(as_positive("record_interval", record_interval, unit="s")) / dt
-    if abs(every - round(every)) > 1e-6 or round(every) < 1:
-        raise ValueError(f"record_interval must be a multiple of the sample interval {dt} s, got {record_interval!r}")
-    every = int(round(every))
-    if sensor_errors is not None:
-        if rng is not None:
-            raise ValueError("give either rng or sensor_errors, not both")
-        g_err, m_err = (as_finite("sensor_errors", e) for e in sensor_errors)
-        if g_err.shape != (steps, members) or m_err.shape != (steps, members, 2):
-            raise ValueError(f"sensor_errors must have shapes ({steps}, {members}) and ({steps}, {members}, 2), "
-                             f"got {g_err.shape} and {m_err.shape}")
-    elif rng is not None and not isinstance(rng, np.random.Generator):
-        raise ValueError(f"rng must be a numpy.random.Generator or None, got {type(rng).__name__}")
-
     b0, inertia, neutral = setup.field, setup.inertia, setup.thread_neutral_angle
-    alpha, kp, ki, kd = setup.filter_coefficient, setup.kp, setup.ki, setup.kd
-    limit = setup.moment_limit
-    levels = int(setup.pwm_levels)
-    # Nominal full scale (what the controller divides by) and each member's actual one.
-    full_nominal = setup.full_scale_moments
-    full_actual = full_nominal * scale                       # (members, 2)
-    duty_gain = 1.0 / full_nominal
+    # Each member's actual full-scale moments (the controller divides by the nominal ones).
+    full_actual = setup.full_scale_moments * scale                       # (members, 2)
     full_1, full_2 = np.ascontiguousarray(full_actual[:, 0]), np.ascontiguousarray(full_actual[:, 1])
 
     n_rec = steps // every + 1
@@ -508,28 +562,18 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
             g_blk, m_blk = draw_sensor_errors(setup, count, members, rng)
         for j in range(count):
             k = start + j
-            c, s = np.cos(psi), np.sin(psi)
             gyro = omega + g_blk[j]
-            bx = b0 * c + m_blk[j, :, 0]
-            by = -b0 * s + m_blk[j, :, 1]
-            heading = np.arctan2(-by, bx)
-            if estimate is None:
-                estimate = heading
-            reference = estimate + _wrap(heading - estimate)
-            estimate = estimation.complementary_filter_step(estimate, gyro, reference, dt, alpha)
-            error = _wrap(psi_des - estimate)          # the shorter way round (ours)
-            u, integral = control.pid_step(error, -gyro, integral, dt, kp, ki, kd, limit)
-            u_over_b = u / np.sqrt(bx * bx + by * by)
-            # Thesis allocation with m_z = -u: M_x = u b_y, M_y = -u b_x (torque B0 u).
-            moment_1 = quantise_duty(u_over_b * by * duty_gain[0], levels) * full_1
-            moment_2 = quantise_duty(u_over_b * bx * -duty_gain[1], levels) * full_2
+            bx = b0 * np.cos(psi) + m_blk[j, :, 0]
+            by = -b0 * np.sin(psi) + m_blk[j, :, 1]
+            moment_1, moment_2, estimate, integral = controller_step(
+                setup, psi_des, gyro, bx, by, estimate, integral, full_1, full_2)
             if k % every == 0:
                 i = k // every
                 rec["psi"][i], rec["rate"][i], rec["estimate"][i] = psi, omega, estimate
                 rec_m[i, :, 0], rec_m[i, :, 1] = moment_1, moment_2
             if k >= first_in_window:
-                np.maximum(band, np.abs(_wrap(psi - psi_des)), out=band)
-                np.maximum(band_est, np.abs(_wrap(estimate - psi_des)), out=band_est)
+                np.maximum(band, np.abs(wrap_angle(psi - psi_des)), out=band)
+                np.maximum(band_est, np.abs(wrap_angle(estimate - psi_des)), out=band_est)
             psi, omega = plant_step(psi, omega, moment_1, moment_2, dt, field=b0,
                                     inertia=inertia, thread_stiffness=kappa, thread_neutral_angle=neutral)
     if steps % every == 0:
@@ -539,7 +583,7 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
         for key in rec:
             rec[key] = rec[key][:-1]
         rec_m = rec_m[:-1]
-    np.maximum(band, np.abs(_wrap(psi - psi_des)), out=band)
+    np.maximum(band, np.abs(wrap_angle(psi - psi_des)), out=band)
     time = np.arange(rec["psi"].shape[0]) * every * dt
     inputs = {"release_angle": _member_array("release_angle", release_angle, members),
               "release_rate": _member_array("release_rate", release_rate, members),
@@ -580,10 +624,11 @@ def simulate_bench_reference(setup, psi_des, *, duration, release_angle=0.0, rel
 
     Notes
     -----
-    Not in the thesis: the oracle for :func:`simulate_bench`. The controller is written
-    out again here with scalars, one :func:`scipy.integrate.solve_ivp` call per sample
-    (the moments jump at each sample, so one call per interval is the way to integrate
-    a zero-order hold exactly). It is slow: the benchmark times it on a few members.
+    Not in the thesis: the oracle for :func:`simulate_bench`'s integrator. The same
+    :func:`controller_step` sets the moments; the plant is integrated by one
+    :func:`scipy.integrate.solve_ivp` call per sample instead of the fixed-step RK4 (the
+    moments jump at each sample, so one call per interval is the way to integrate a
+    zero-order hold exactly). It is slow: the benchmark times it on a few members.
 
     Examples
     --------
@@ -599,8 +644,7 @@ def simulate_bench_reference(setup, psi_des, *, duration, release_angle=0.0, rel
     steps = int(round(float(duration) / dt))
     kappa = setup.thread_stiffness if thread_stiffness is None else float(thread_stiffness)
     scale = np.broadcast_to(np.asarray(moment_scale, float), (2,))
-    full_nominal = setup.full_scale_moments
-    full_actual = full_nominal * scale
+    full_actual = setup.full_scale_moments * scale
     g_err, m_err = sensor_errors if sensor_errors is not None else (np.zeros(steps), np.zeros((steps, 2)))
     b0, j = setup.field, setup.inertia
 
@@ -616,17 +660,8 @@ def simulate_bench_reference(setup, psi_des, *, duration, release_angle=0.0, rel
         gyro = omega + g_err[k]
         bx = b0 * np.cos(psi) + m_err[k, 0]
         by = -b0 * np.sin(psi) + m_err[k, 1]
-        heading = np.arctan2(-by, bx)
-        if estimate is None:
-            estimate = heading
-        diff = (heading - estimate + np.pi) % (2.0 * np.pi) - np.pi
-        estimate = setup.filter_coefficient * (estimate + gyro * dt) + (1.0 - setup.filter_coefficient) * (estimate + diff)
-        error = (psi_des - estimate + np.pi) % (2.0 * np.pi) - np.pi
-        u, integral = control.pid_step(error, -gyro, integral, dt, setup.kp, setup.ki,
-                                       setup.kd, setup.moment_limit)
-        norm = np.hypot(bx, by)
-        m1 = quantise_duty(u * by / norm / full_nominal[0], setup.pwm_levels) * full_actual[0]
-        m2 = quantise_duty(-u * bx / norm / full_nominal[1], setup.pwm_levels) * full_actual[1]
+        m1, m2, estimate, integral = controller_step(setup, psi_des, gyro, bx, by, estimate, integral,
+                                                     full_actual[0], full_actual[1])
         out[k] = psi, omega, estimate
         sol = solve_ivp(rhs, (k * dt, (k + 1) * dt), state, args=(float(m1), float(m2)),
                         rtol=rtol, atol=atol)
