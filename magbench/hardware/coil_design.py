@@ -12,11 +12,324 @@ from .._validate import as_nonnegative, as_positive
 from .magnetorquer import _RTOL
 from .turn import _check_shape, turn_area, turn_length
 
-__all__ = ["design_magnetorquer"]
+__all__ = ["coil_designs", "binding_limit", "design_explanation", "design_magnetorquer"]
 
 
 # Largest number of (turns, wire) rows the design solver will enumerate.
 _MAX_ROWS = 2_000_000
+
+
+_COLUMNS = ("turns", "wire_diameter", "wire_area", "resistance", "current", "power", "mass", "moment",
+            "pitch", "layer_length", "layers", "fits", "fill_factor")
+
+
+def _design_inputs(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
+                   enamel_thickness, winding_length, max_layers, overall_diameters):
+    """Checked inputs of the design solver, with the wires sorted by bare diameter."""
+    m_req = float(as_positive("moment", moment, unit="A·m²"))
+    u = float(as_positive("voltage", voltage, unit="V"))
+    l = float(as_positive("side", side, unit="m"))
+    _check_shape(shape)
+    w_max = float(as_positive("max_power", max_power, unit="W"))
+    m_max = float(as_positive("max_mass", max_mass, unit="kg"))
+    d_all = np.atleast_1d(as_positive("wire_diameters", wire_diameters, unit="m"))
+    if d_all.ndim != 1 or d_all.size == 0:
+        raise ValueError(
+            f"wire_diameters must be a non-empty 1-D array, got shape {d_all.shape}"
+        )
+    if overall_diameters is None:
+        d_all = np.unique(d_all)
+        od_all = d_all + 2.0 * float(as_nonnegative("enamel_thickness", enamel_thickness, unit="m"))
+    else:
+        od_all = np.atleast_1d(as_positive("overall_diameters", overall_diameters, unit="m"))
+        if od_all.shape != d_all.shape:
+            raise ValueError(f"overall_diameters must have the shape of wire_diameters {d_all.shape}, "
+                             f"got {od_all.shape}")
+        if np.any(od_all <= d_all):
+            k = int(np.argmax(od_all <= d_all))
+            raise ValueError(f"overall_diameters must exceed the bare diameters, got {od_all[k]!r} m "
+                             f"for wire_diameters {d_all[k]!r} m")
+        if np.unique(d_all).size != d_all.size:
+            raise ValueError("wire_diameters must not repeat a size when overall_diameters are given")
+        order = np.argsort(d_all)
+        d_all, od_all = d_all[order], od_all[order]
+    rho = float(as_positive("resistivity", resistivity, unit="Ω·m"))
+    gamma = float(as_positive("density", density, unit="kg/m³"))
+    as_nonnegative("enamel_thickness", enamel_thickness, unit="m")   # checked even when unused
+    length_avail = l if winding_length is None else float(
+        as_positive("winding_length", winding_length, unit="m"))
+    if isinstance(max_layers, bool) or not isinstance(max_layers, (int, np.integer)) or max_layers < 1:
+        raise ValueError(f"max_layers must be an integer >= 1, got {max_layers!r}")
+    return m_req, u, l, w_max, m_max, d_all, od_all, rho, gamma, length_avail
+
+
+def _enumerate(m_req, u, l, shape, w_max, m_max, d_all, od_all, rho, gamma, length_avail, max_layers):
+    """Every (turns, wire) design within the power and mass limits, and the wires that
+    reach the moment: (table of arrays, [(d, n_lo, n_hi)], any design within both limits)."""
+    area = float(turn_area(l, shape))
+    perimeter = float(turn_length(l, shape))
+
+    cols = {k: [] for k in ("turns", "wire_diameter", "wire_area", "resistance", "current",
+                            "power", "mass", "moment", "pitch", "layer_length", "layers", "fits",
+                            "fill_factor")}
+    adequate = []          # wires that reach the moment: (d, n_lo, n_hi)
+    n_rows = 0
+    any_power_mass = False
+    for d, pitch in zip(d_all, od_all):
+        s_r = math.pi * d**2 / 4.0
+        r = rho * perimeter / s_r
+        m_wire = u * l * s_r / (4.0 * rho)
+        if m_wire < m_req * (1.0 - _RTOL):
+            continue
+        n_lo = max(1, math.ceil(u**2 / (r * w_max) * (1.0 - _RTOL)))
+        n_hi = math.floor(m_max / (gamma * perimeter * s_r) * (1.0 + _RTOL))
+        adequate.append((d, n_lo, n_hi))
+        if n_hi < n_lo:
+            continue
+        any_power_mass = True
+        n_rows += n_hi - n_lo + 1
+        if n_rows > _MAX_ROWS:
+            raise ValueError(
+                f"max_mass = {m_max!r} kg admits more than {_MAX_ROWS} (turns, wire) designs; "
+                "tighten the limits or shorten wire_diameters"
+            )
+        n = np.arange(n_lo, n_hi + 1)
+        per_layer = math.floor(length_avail / pitch * (1.0 + _RTOL))
+        if per_layer >= 1:
+            layers = -(-n // per_layer)
+        else:
+            layers = np.full(n.shape, np.iinfo(np.int64).max)
+        fits = layers <= max_layers
+        resistance = n * r
+        cols["turns"].append(n)
+        cols["wire_diameter"].append(np.full(n.shape, d))
+        cols["wire_area"].append(np.full(n.shape, s_r))
+        cols["resistance"].append(resistance)
+        cols["current"].append(u / resistance)
+        cols["power"].append(u**2 / resistance)
+        cols["mass"].append(gamma * perimeter * s_r * n)
+        cols["moment"].append(u / resistance * area * n)
+        cols["pitch"].append(np.full(n.shape, pitch))
+        cols["layer_length"].append(n * pitch)
+        cols["layers"].append(layers)
+        cols["fits"].append(fits)
+        # conductor over the window the layers occupy (layers·pitch deep); 0 if nothing fits
+        depth = np.where(per_layer >= 1, layers * pitch, np.inf)
+        cols["fill_factor"].append(n * s_r / (length_avail * depth))
+
+    dtypes = {"turns": np.int64, "layers": np.int64, "fits": bool}
+    out = {k: (np.concatenate(v) if v else np.array([], dtype=dtypes.get(k, float)))
+           for k, v in cols.items()}
+    return out, adequate, any_power_mass
+
+
+
+def _limit(checked, adequate, any_power_mass, max_layers):
+    """(kind, numbers) of the limit that leaves no design: see :func:`binding_limit`."""
+    m_req, u, l, w_max, m_max, d_all, od_all, rho, gamma, length_avail, perimeter = checked
+    if not adequate:
+        s_need = 4.0 * rho * m_req / (u * l)
+        d_max = d_all[-1]
+        return "moment", {"thickest_wire": float(d_max),
+                          "thickest_wire_moment": u * l * (math.pi * d_max**2 / 4.0) / (4.0 * rho),
+                          "wire_area_needed": s_need, "wire_diameter_needed": math.sqrt(4.0 * s_need / math.pi)}
+    if not any_power_mass:
+        d, n_lo, n_hi = adequate[0]          # thinnest adequate wire: least mass × power
+        s_r = math.pi * d**2 / 4.0
+        m_wire = u * l * s_r / (4.0 * rho)
+        product = 16.0 * rho * gamma * m_wire**2 / l**2
+        numbers = {"wire": float(d), "wire_moment": m_wire, "turns_for_power": n_lo, "turns_for_mass": n_hi,
+                   "mass_power_product": product, "budget_product": m_max * w_max,
+                   "exact_turns_for_power": u**2 / (rho * perimeter / s_r * w_max),
+                   "exact_turns_for_mass": m_max / (gamma * perimeter * s_r)}
+        if product > m_max * w_max * (1.0 + _RTOL):
+            return "power and mass", numbers
+        return "integer turns", numbers
+    return "winding fit", {"max_layers": max_layers, "winding_length": length_avail}
+
+
+def design_explanation(kind, numbers, max_power, max_mass, moment, voltage):
+    """A sentence saying why no design exists (the CLI and the book print it).
+
+    Not in the sources: the wording of the solver's verdict, from the numbers of
+    :func:`binding_limit` (thesis §3.2, eqs. (20), (26)/(30)).
+
+    Parameters
+    ----------
+    kind : str
+        The binding limit, as :func:`binding_limit` returns it [-].
+    numbers : dict
+        Its numbers, as :func:`binding_limit` returns them (SI) [-].
+    max_power, max_mass, moment, voltage : float
+        The limits [W], [kg], the required moment [A·m²] and the supply [V].
+
+    Returns
+    -------
+    str
+        The explanation.
+    """
+    w_max, m_max, m_req, u = max_power, max_mass, moment, voltage
+    if kind == "moment":
+        return (
+            f"moment: no wire reaches {m_req:.4g} A·m² at {u:.4g} V. By eq. (20) the thickest "
+            f"wire, d = {numbers['thickest_wire'] * 1e3:.4g} mm, gives {numbers['thickest_wire_moment']:.4g} A·m² "
+            f"whatever the turns; eq. (21) needs S_r >= {numbers['wire_area_needed']:.4g} m² (d >= "
+            f"{numbers['wire_diameter_needed'] * 1e3:.4g} mm) or a higher voltage"
+        )
+    if kind == "power and mass":
+        return (
+            f"power and mass together: with the thinnest adequate wire, d = {numbers['wire'] * 1e3:.4g} mm "
+            f"(moment {numbers['wire_moment']:.4g} A·m²), W <= {w_max:.4g} W needs N >= {numbers['turns_for_power']} "
+            f"but M <= {m_max:.4g} kg allows N <= {numbers['turns_for_mass']}. Their product, eq. (26)/(30), "
+            f"M·W = 16ρρ̃m²/l² = {numbers['mass_power_product']:.4g} kg·W whatever N and U, exceeds "
+            f"max_mass·max_power = {numbers['budget_product']:.4g} kg·W; raise a limit, enlarge the "
+            f"coil or use a thinner wire closer to the required moment"
+        )
+    if kind == "integer turns":
+        return (
+            f"integer turns: for d = {numbers['wire'] * 1e3:.4g} mm the limits allow "
+            f"{numbers['exact_turns_for_power']:.6g} <= N <= {numbers['exact_turns_for_mass']:.6g}, "
+            f"which holds no integer"
+        )
+    return (
+        f"winding fit: designs meet the moment, power and mass limits, but none fits in "
+        f"{numbers['max_layers']} layer(s) over {numbers['winding_length']:.4g} m at the wires' pitch "
+        f"(enamel included)"
+    )
+
+
+def _solve(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
+           enamel_thickness, winding_length, max_layers, require_fit, overall_diameters):
+    checked = _design_inputs(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity,
+                             density, enamel_thickness, winding_length, max_layers, overall_diameters)
+    m_req, u, l, w_max, m_max, d_all, od_all, rho, gamma, length_avail = checked
+    table, adequate, any_power_mass = _enumerate(m_req, u, l, shape, w_max, m_max, d_all, od_all, rho, gamma,
+                                                 length_avail, max_layers)
+    if require_fit:
+        keep = table["fits"]
+        table = {k: v[keep] for k, v in table.items()}
+    return table, (*checked, float(turn_length(l, shape))), adequate, any_power_mass
+
+
+def coil_designs(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
+                 enamel_thickness=10e-6, *, winding_length=None, max_layers=1, require_fit=False,
+                 overall_diameters=None):
+    r"""Every feasible (turns, wire) design of an air-core magnetorquer, as a table.
+
+    Thesis §3.2, eqs. (17)–(32), enumerated over a wire table: a design is feasible when
+    its moment is at least ``moment``, W ≤ ``max_power`` and M ≤ ``max_mass`` (and, with
+    ``require_fit``, when its winding fits).
+
+    Parameters
+    ----------
+    moment : float
+        Required dipole moment m [A·m²].
+    voltage : float
+        Supply voltage U [V].
+    side : float
+        Turn diameter (round) or side (square) l [m].
+    shape : {"round", "square"}
+        Turn shape [-].
+    max_power : float
+        Joule power limit per coil W_max [W].
+    max_mass : float
+        Conductor mass limit per coil M_max [kg].
+    wire_diameters : array_like, shape (k,)
+        Bare conductor diameters available [m] (a wire table).
+    resistivity : float
+        Conductor resistivity ρ [Ω·m].
+    density : float
+        Conductor density ρ̃ [kg/m³].
+    enamel_thickness : float, optional
+        Radial thickness of the enamel t [m]; the wire pitch is d + 2t. Used only for the
+        winding-fit check. The default 10 µm is an order of magnitude, not a standard
+        value: 0.100 mm grade-1 enamelled wire measures 0.108–0.117 mm overall (4–8.5 µm
+        radial; Elektrisola data quoted at enameled-wires.com, Technical-Documentation/341),
+        thicker wires carry somewhat more. Take the value from the wire's datasheet.
+    winding_length : float, optional
+        Axial length available for one layer [m]; default ``side``, the thesis's
+        assumption of a single-layer winding as long as the face (seed line 434).
+    max_layers : int, optional
+        Number of layers the former can hold [-].
+    require_fit : bool, optional
+        If true, designs whose winding does not fit are not feasible [-].
+    overall_diameters : array_like, shape (k,), optional
+        Overall (enamelled) diameter of each wire of ``wire_diameters`` [m], e.g. the
+        maximum overall diameter of a wire standard's table; when given it is the winding
+        pitch and ``enamel_thickness`` is not used. Each must exceed its bare diameter.
+
+    Returns
+    -------
+    dict of str to ndarray
+        One array entry per feasible design, ordered by wire diameter then turns:
+        ``turns``, ``wire_diameter`` [m], ``wire_area`` [m²], ``resistance`` [Ω],
+        ``current`` [A], ``power`` [W], ``mass`` [kg], ``moment`` [A·m²], ``pitch`` [m],
+        ``layer_length`` [m], ``layers``, ``fits`` and ``fill_factor`` [-].
+    """
+    return _solve(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
+                  enamel_thickness, winding_length, max_layers, require_fit, overall_diameters)[0]
+
+
+def binding_limit(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
+                  enamel_thickness=10e-6, *, winding_length=None, max_layers=1, require_fit=False,
+                  overall_diameters=None):
+    r"""The limit that leaves no feasible design, and the numbers that show it.
+
+    Thesis §3.2: the moment fixes the wire (eq. 20); the mass × power product, eq.
+    (26)/(30), M·W = 16ρρ̃m²/l², is independent of N and U, so with the thinnest adequate
+    wire it must not exceed M_max·W_max.
+
+    Parameters
+    ----------
+    moment : float
+        Required dipole moment m [A·m²].
+    voltage : float
+        Supply voltage U [V].
+    side : float
+        Turn diameter (round) or side (square) l [m].
+    shape : {"round", "square"}
+        Turn shape [-].
+    max_power : float
+        Joule power limit per coil W_max [W].
+    max_mass : float
+        Conductor mass limit per coil M_max [kg].
+    wire_diameters : array_like, shape (k,)
+        Bare conductor diameters available [m] (a wire table).
+    resistivity : float
+        Conductor resistivity ρ [Ω·m].
+    density : float
+        Conductor density ρ̃ [kg/m³].
+    enamel_thickness : float, optional
+        Radial thickness of the enamel t [m]; the wire pitch is d + 2t. Used only for the
+        winding-fit check. The default 10 µm is an order of magnitude, not a standard
+        value: 0.100 mm grade-1 enamelled wire measures 0.108–0.117 mm overall (4–8.5 µm
+        radial; Elektrisola data quoted at enameled-wires.com, Technical-Documentation/341),
+        thicker wires carry somewhat more. Take the value from the wire's datasheet.
+    winding_length : float, optional
+        Axial length available for one layer [m]; default ``side``, the thesis's
+        assumption of a single-layer winding as long as the face (seed line 434).
+    max_layers : int, optional
+        Number of layers the former can hold [-].
+    require_fit : bool, optional
+        If true, designs whose winding does not fit are not feasible [-].
+    overall_diameters : array_like, shape (k,), optional
+        Overall (enamelled) diameter of each wire of ``wire_diameters`` [m], e.g. the
+        maximum overall diameter of a wire standard's table; when given it is the winding
+        pitch and ``enamel_thickness`` is not used. Each must exceed its bare diameter.
+
+    Returns
+    -------
+    tuple of (str, dict) or None
+        None when a design exists; else the kind (``"moment"``, ``"power and mass"``,
+        ``"integer turns"`` or ``"winding fit"``) and its numbers in SI (the wire, its
+        moment, the turns each limit allows, the two products, …).
+    """
+    table, checked, adequate, any_power_mass = _solve(
+        moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
+        enamel_thickness, winding_length, max_layers, require_fit, overall_diameters)
+    if table["turns"].size:
+        return None
+    return _limit(checked, adequate, any_power_mass, max_layers)
 
 
 def design_magnetorquer(
@@ -86,14 +399,10 @@ def design_magnetorquer(
     Returns
     -------
     dict
-        ``"turns"`` (int), ``"wire_diameter"`` [m], ``"wire_area"`` [m²], ``"resistance"``
-        [Ω], ``"current"`` [A], ``"power"`` [W], ``"mass"`` [kg], ``"moment"`` [A·m²],
-        ``"pitch"`` (d + 2t, or the overall diameter) [m], ``"layer_length"``
-        (single-layer winding length N·pitch) [m], ``"layers"`` (int), ``"fits"`` (bool)
-        and ``"fill_factor"`` (conductor cross-section N S_r over the winding window
-        ``winding_length`` × layers·pitch it occupies) [-]: one array entry per feasible
-        design, ordered by wire diameter then turns. ``"min_power"`` and ``"min_mass"``: the feasible design of
-        least power and of least mass, each a dict of scalars, or None. ``"feasible"``
+        The table of :func:`coil_designs` (``"pitch"``: d + 2t or the overall diameter;
+        ``"fill_factor"``: N S_r over the window ``winding_length`` × layers·pitch), and
+        ``"min_power"`` and ``"min_mass"``: the feasible design of least power and of
+        least mass, each a dict of scalars, or None. ``"feasible"``
         (bool), ``"binding_limit"`` (None, ``"moment"``, ``"power and mass"``,
         ``"integer turns"`` or ``"winding fit"``) and ``"explanation"`` (str).
 
@@ -116,108 +425,18 @@ def design_magnetorquer(
     ...                     8.9e3)["binding_limit"]
     'power and mass'
     """
-    m_req = float(as_positive("moment", moment, unit="A·m²"))
-    u = float(as_positive("voltage", voltage, unit="V"))
-    l = float(as_positive("side", side, unit="m"))
-    _check_shape(shape)
-    w_max = float(as_positive("max_power", max_power, unit="W"))
-    m_max = float(as_positive("max_mass", max_mass, unit="kg"))
-    d_all = np.atleast_1d(as_positive("wire_diameters", wire_diameters, unit="m"))
-    if d_all.ndim != 1 or d_all.size == 0:
-        raise ValueError(
-            f"wire_diameters must be a non-empty 1-D array, got shape {d_all.shape}"
-        )
-    if overall_diameters is None:
-        d_all = np.unique(d_all)
-        od_all = d_all + 2.0 * float(as_nonnegative("enamel_thickness", enamel_thickness, unit="m"))
-    else:
-        od_all = np.atleast_1d(as_positive("overall_diameters", overall_diameters, unit="m"))
-        if od_all.shape != d_all.shape:
-            raise ValueError(f"overall_diameters must have the shape of wire_diameters {d_all.shape}, "
-                             f"got {od_all.shape}")
-        if np.any(od_all <= d_all):
-            k = int(np.argmax(od_all <= d_all))
-            raise ValueError(f"overall_diameters must exceed the bare diameters, got {od_all[k]!r} m "
-                             f"for wire_diameters {d_all[k]!r} m")
-        if np.unique(d_all).size != d_all.size:
-            raise ValueError("wire_diameters must not repeat a size when overall_diameters are given")
-        order = np.argsort(d_all)
-        d_all, od_all = d_all[order], od_all[order]
-    rho = float(as_positive("resistivity", resistivity, unit="Ω·m"))
-    gamma = float(as_positive("density", density, unit="kg/m³"))
-    as_nonnegative("enamel_thickness", enamel_thickness, unit="m")   # checked even when unused
-    length_avail = l if winding_length is None else float(
-        as_positive("winding_length", winding_length, unit="m"))
-    if isinstance(max_layers, bool) or not isinstance(max_layers, (int, np.integer)) or max_layers < 1:
-        raise ValueError(f"max_layers must be an integer >= 1, got {max_layers!r}")
-
-    area = float(turn_area(l, shape))
-    perimeter = float(turn_length(l, shape))
-
-    cols = {k: [] for k in ("turns", "wire_diameter", "wire_area", "resistance", "current",
-                            "power", "mass", "moment", "pitch", "layer_length", "layers", "fits",
-                            "fill_factor")}
-    adequate = []          # wires that reach the moment: (d, n_lo, n_hi)
-    n_rows = 0
-    any_power_mass = False
-    for d, pitch in zip(d_all, od_all):
-        s_r = math.pi * d**2 / 4.0
-        r = rho * perimeter / s_r
-        m_wire = u * l * s_r / (4.0 * rho)
-        if m_wire < m_req * (1.0 - _RTOL):
-            continue
-        n_lo = max(1, math.ceil(u**2 / (r * w_max) * (1.0 - _RTOL)))
-        n_hi = math.floor(m_max / (gamma * perimeter * s_r) * (1.0 + _RTOL))
-        adequate.append((d, n_lo, n_hi))
-        if n_hi < n_lo:
-            continue
-        any_power_mass = True
-        n_rows += n_hi - n_lo + 1
-        if n_rows > _MAX_ROWS:
-            raise ValueError(
-                f"max_mass = {m_max!r} kg admits more than {_MAX_ROWS} (turns, wire) designs; "
-                "tighten the limits or shorten wire_diameters"
-            )
-        n = np.arange(n_lo, n_hi + 1)
-        per_layer = math.floor(length_avail / pitch * (1.0 + _RTOL))
-        if per_layer >= 1:
-            layers = -(-n // per_layer)
-        else:
-            layers = np.full(n.shape, np.iinfo(np.int64).max)
-        fits = layers <= max_layers
-        resistance = n * r
-        cols["turns"].append(n)
-        cols["wire_diameter"].append(np.full(n.shape, d))
-        cols["wire_area"].append(np.full(n.shape, s_r))
-        cols["resistance"].append(resistance)
-        cols["current"].append(u / resistance)
-        cols["power"].append(u**2 / resistance)
-        cols["mass"].append(gamma * perimeter * s_r * n)
-        cols["moment"].append(u / resistance * area * n)
-        cols["pitch"].append(np.full(n.shape, pitch))
-        cols["layer_length"].append(n * pitch)
-        cols["layers"].append(layers)
-        cols["fits"].append(fits)
-        # conductor over the window the layers occupy (layers·pitch deep); 0 if nothing fits
-        depth = np.where(per_layer >= 1, layers * pitch, np.inf)
-        cols["fill_factor"].append(n * s_r / (length_avail * depth))
-
-    dtypes = {"turns": np.int64, "layers": np.int64, "fits": bool}
-    out = {k: (np.concatenate(v) if v else np.array([], dtype=dtypes.get(k, float)))
-           for k, v in cols.items()}
-    if require_fit:
-        keep = out["fits"]
-        out = {k: v[keep] for k, v in out.items()}
-
-    feasible = out["turns"].size > 0
-    out["feasible"] = feasible
+    table, checked, adequate, any_power_mass = _solve(
+        moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
+        enamel_thickness, winding_length, max_layers, require_fit, overall_diameters)
+    m_req, u = checked[0], checked[1]
+    out = dict(table)
+    out["feasible"] = feasible = out["turns"].size > 0
     out["min_power"] = out["min_mass"] = None
     out["binding_limit"] = None
     if feasible:
-        keys = [k for k in cols]
         for label, col in (("min_power", "power"), ("min_mass", "mass")):
             i = int(np.argmin(out[col]))
-            out[label] = {k: out[k][i].item() for k in keys}
+            out[label] = {k: out[k][i].item() for k in _COLUMNS}
         out["explanation"] = (
             f"{out['turns'].size} feasible designs; least power "
             f"{out['min_power']['power']:.4g} W at N = {out['min_power']['turns']}, "
@@ -226,44 +445,7 @@ def design_magnetorquer(
             f"d = {out['min_mass']['wire_diameter'] * 1e3:.4g} mm"
         )
         return out
-
-    if not adequate:
-        s_need = 4.0 * rho * m_req / (u * l)
-        d_max = d_all[-1]
-        m_best = u * l * (math.pi * d_max**2 / 4.0) / (4.0 * rho)
-        out["binding_limit"] = "moment"
-        out["explanation"] = (
-            f"moment: no wire reaches {m_req:.4g} A·m² at {u:.4g} V. By eq. (20) the thickest "
-            f"wire, d = {d_max * 1e3:.4g} mm, gives {m_best:.4g} A·m² whatever the turns; "
-            f"eq. (21) needs S_r >= {s_need:.4g} m² (d >= "
-            f"{math.sqrt(4.0 * s_need / math.pi) * 1e3:.4g} mm) or a higher voltage"
-        )
-    elif not any_power_mass:
-        d, n_lo, n_hi = adequate[0]          # thinnest adequate wire: least mass × power
-        s_r = math.pi * d**2 / 4.0
-        m_wire = u * l * s_r / (4.0 * rho)
-        product = 16.0 * rho * gamma * m_wire**2 / l**2
-        if product > m_max * w_max * (1.0 + _RTOL):
-            out["binding_limit"] = "power and mass"
-            out["explanation"] = (
-                f"power and mass together: with the thinnest adequate wire, d = {d * 1e3:.4g} mm "
-                f"(moment {m_wire:.4g} A·m²), W <= {w_max:.4g} W needs N >= {n_lo} but "
-                f"M <= {m_max:.4g} kg allows N <= {n_hi}. Their product, eq. (26)/(30), "
-                f"M·W = 16ρρ̃m²/l² = {product:.4g} kg·W whatever N and U, exceeds "
-                f"max_mass·max_power = {m_max * w_max:.4g} kg·W; raise a limit, enlarge the "
-                f"coil or use a thinner wire closer to the required moment"
-            )
-        else:
-            out["binding_limit"] = "integer turns"
-            out["explanation"] = (
-                f"integer turns: for d = {d * 1e3:.4g} mm the limits allow "
-                f"{u**2 / (rho * perimeter / s_r * w_max):.6g} <= N <= "
-                f"{m_max / (gamma * perimeter * s_r):.6g}, which holds no integer"
-            )
-    else:
-        out["binding_limit"] = "winding fit"
-        out["explanation"] = (
-            f"winding fit: designs meet the moment, power and mass limits, but none fits in "
-            f"{max_layers} layer(s) over {length_avail:.4g} m at the wires' pitch (enamel included)"
-        )
+    kind, numbers = _limit(checked, adequate, any_power_mass, max_layers)
+    out["binding_limit"] = kind
+    out["explanation"] = design_explanation(kind, numbers, checked[3], checked[4], m_req, u)
     return out
