@@ -9,7 +9,7 @@ import scipy.constants as _sc
 #: Vacuum permeability [H/m]; CODATA 2018 via scipy (not 4e-7*pi, which is no longer exact).
 MU_0 = _sc.mu_0
 
-#: Mean Earth radius [m]; the value the thesis (seed line 118) and Kovalenko (1975, p. 35) use.
+#: Mean Earth radius [m]; the value the thesis (thesis §1.1) and Kovalenko (1975, p. 35) use.
 EARTH_RADIUS = 6371.0e3
 
 #: Reference radius of the IGRF spherical-harmonic expansion [m] (IAGA, IGRF-14).

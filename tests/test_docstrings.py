@@ -14,7 +14,10 @@ PHYSICS = ["magbench.fields", "magbench.hardware", "magbench.dynamics", "magbenc
            "magbench.geomag", "magbench.attitude", "magbench.coils", "magbench.magnetorquer",
            "magbench.estimation", "magbench.control", "magbench.units", "magbench.sensors",
            "magbench.bench"]
-SOURCE_LINE = re.compile(r"Thesis (eqs?\.|§)|Not in the (thesis|sources)|Kovalenko \(1975\)")
+#: A line a reader can look up, in any of the five sources (the thesis, Kovalenko, the
+#: SamSat-218D paper, the rotor slides, the TNS-0 preprint), or an explicit "not in".
+SOURCE_LINE = re.compile(r"Thesis (eqs?\.|§)|Not in the (thesis|sources)|Kovalenko \(1975\)"
+                         r"|SamSat-218D (eqs?\.|§|Fig)|[Rr]otor slides?,? (slide|eq)|TNS-0 (preprint )?(§|eqs?\.|Table|Fig)")
 
 
 def _public_functions():
@@ -49,3 +52,13 @@ def test_physics_modules_do_not_import_plotting_or_io():
             "print(bad); sys.exit(bool(bad))")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert result.returncode == 0, result.stdout + result.stderr
+
+
+@pytest.mark.parametrize("line, cites", [
+    ("Thesis §2.2, eq. (16).", True), ("Kovalenko (1975) eq. (9.21), p. 160.", True),
+    ("SamSat-218D eq. (3): the B-dot law.", True), ("Rotor slides, slide 12: the spin law.", True),
+    ("TNS-0 preprint §3: the hysteresis rods.", True), ("Not in the sources: Wertz (1978).", True),
+    ("Some formula.", False), ("seed line 278", False),
+])
+def test_the_source_rule_takes_the_five_sources(line, cites):
+    assert bool(SOURCE_LINE.search(line)) is cites

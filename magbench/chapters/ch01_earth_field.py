@@ -134,7 +134,7 @@ def geomagnetic_checks(params=None):
         jc, wc, -wc, EARTH_POLAR_MOMENT_OF_INERTIA, EARTH_ROTATION_RATE)))
     thesis_ratio = float(attitude.thesis_energy_ratio(jc, EARTH_POLAR_MOMENT_OF_INERTIA))
 
-    moment_l, field_h = 0.4, 250.0      # thesis design values (seed lines 240, 398)
+    moment_l, field_h = 0.4, 250.0      # thesis design values (§2.1 and §3.2)
     return [
         SourceCheck(
             id="thesis-eq3-inclination-sign", chapter="ch01", source="thesis",

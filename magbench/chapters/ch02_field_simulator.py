@@ -35,7 +35,7 @@ def thesis_printed_ampere_turns(center_h, radius, spacing_ratio):
 
     Notes
     -----
-    Thesis eq. (16) solved for NI at seed line 270, as evaluated there. Deviation from
+    Thesis §2.2, eq. (16) solved for NI, as evaluated there. Deviation from
     source, reproduced on purpose: the thesis evaluated (d_c/2a_c)² as (d_c/a_c)²/2 (the
     2 in the denominator was not squared),
 

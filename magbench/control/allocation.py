@@ -29,8 +29,8 @@ def body_field_exact(psi, world_field):
 
     Notes
     -----
-    Thesis §4.1, seed line 561, with the exact rotation instead of the small-angle
-    matrix (inventory gap G20). For B⁰ = (B0, 0, 0) it is B0 (cos ψ, −sin ψ, 0), the
+    Thesis §4.1, with the exact rotation instead of the small-angle
+    matrix. For B⁰ = (B0, 0, 0) it is B0 (cos ψ, −sin ψ, 0), the
     convention of eq. (36).
 
     Examples
@@ -64,10 +64,10 @@ def body_field_small_angle(psi, world_field):
 
     Notes
     -----
-    Thesis §4.1, seed lines 561–563. The thesis then divides by :math:`|\mathbf B^0|`,
+    Thesis §4.1. The thesis then divides by :math:`|\mathbf B^0|`,
     not by the length of this vector, so the "unit" vector it allocates with is
     :math:`\sqrt{1+\psi^2}` long. Valid only while ψ² ≪ 1; the bench targets π/3 and
-    2π/3 (inventory gap G20).
+    2π/3.
 
     Examples
     --------
@@ -100,7 +100,7 @@ def dipole_allocation(desired_moment, field_direction):
 
     Notes
     -----
-    Thesis §4.1, seed lines 545–557. With a unit b perpendicular to z, the torque of M
+    Thesis §4.1. With a unit b perpendicular to z, the torque of M
     is :math:`(\mathbf M\times\mathbf B)_z = -|\mathbf B|\,m_z`: the demand is realised
     exactly, with a minus sign that eq. (38) compensates by flipping the sign of (37)
     (inventory audit A38).

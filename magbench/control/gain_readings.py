@@ -43,8 +43,7 @@ def gain_reading_scale(reading, field, moment_limit):
 
     Notes
     -----
-    Not in the thesis: it never states the units of K_p, K_i, K_d (seed lines 530–579;
-    inventory gap G15). Every candidate reading is a constant factor, so
+    Not in the thesis: it never states the units of K_p, K_i, K_d (thesis §4.1). Every candidate reading is a constant factor, so
     :func:`critical_gain_scale` decides its stability at once.
 
     Examples

@@ -99,7 +99,7 @@ def integral_gain_limit(inertia, field, kp, kd):
 
     Notes
     -----
-    Not in the thesis: the stability condition its gains (seed lines 565–579) violate in
+    Not in the thesis: the stability condition its gains (thesis §4.1) violate in
     SI by a factor of 25–160 (inventory audit A40).
 
     Examples

@@ -40,8 +40,8 @@ def pid_step(error, error_rate, integral, dt, kp, ki, kd, output_limit=np.inf):
 
     Notes
     -----
-    Thesis eq. (37), seed lines 530–534, with rectangle-rule integration. The thesis does
-    not state a sample time, derivative source or anti-windup (inventory gap G15); these
+    Thesis eq. (37), with rectangle-rule integration. The thesis does
+    not state a sample time, derivative source or anti-windup; these
     choices are ours. No argument checks: the simulation that calls this checks its
     inputs once. Broadcasts over any shape (Monte Carlo members).
 

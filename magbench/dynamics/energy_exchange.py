@@ -38,7 +38,7 @@ def momentum_exchange_energy_ratio(spacecraft_inertia, spacecraft_rate, rate_cha
 
     Notes
     -----
-    Thesis eqs. (11)–(12), seed lines 186–196.
+    Thesis eqs. (11)–(12).
 
     Deviation from source: the thesis concludes ΔT_E/ΔT_c ≈ |Δω_E/Δω_c| = J_c/J_E by
     treating Δ(ω²) as (Δω)². With ΔK_E = −ΔK_c the exact ratio is
@@ -85,7 +85,7 @@ def thesis_energy_ratio(spacecraft_inertia, earth_inertia):
 
     Notes
     -----
-    Thesis eq. (12a), seed line 196, kept to show the size of its error beside
+    Thesis eq. (12a), kept to show the size of its error beside
     :func:`momentum_exchange_energy_ratio`.
     """
     return (as_positive("spacecraft_inertia", spacecraft_inertia, unit="kg·m²")

@@ -35,7 +35,7 @@ def two_coil_torque(psi, moment_1, moment_2, field):
 
     Notes
     -----
-    Thesis eq. (36), seed lines 508–512 (the right-hand side of J ω̇ = τ_z); with
+    Thesis eq. (36) (the right-hand side of J ω̇ = τ_z); with
     m₂ = 0 it is the restoring torque of eqs. (34)–(35). No argument checks: this is the
     inner kernel of simulations that check their inputs once.
 
@@ -86,7 +86,7 @@ def euler_313_matrix(psi, theta, phi):
 
     Notes
     -----
-    Thesis §4.1, Fig. 10 (seed lines 450–472): the angles whose rates give the thesis's
+    Thesis §4.1, Fig. 10: the angles whose rates give the thesis's
     p, q, r. The matrix itself is not printed; it is the one that reproduces the
     printed centre-of-mass velocity (inventory audit A36).
 
@@ -128,7 +128,7 @@ def thread_centre_of_mass(x, y, psi, theta, cm_offset):
 
     Notes
     -----
-    Thesis §4.1, seed lines 450 and 464 (C at (0, 0, −d) in Ax'y'z').
+    Thesis §4.1 (C at (0, 0, −d) in Ax'y'z').
 
     Examples
     --------
@@ -162,7 +162,7 @@ def body_rates_313(psi, theta, phi, psi_rate, theta_rate, phi_rate):
 
     Notes
     -----
-    Thesis §4.1, seed line 472. With θ = 0 only r = ψ̇ + φ̇ survives: rotation about
+    Thesis §4.1. With θ = 0 only r = ψ̇ + φ̇ survives: rotation about
     the vertical, the case of eqs. (34)–(36).
 
     Examples
@@ -198,7 +198,7 @@ def pendulum_rhs(t, state, params):
 
     Notes
     -----
-    Thesis eqs. (34)–(35), seed lines 496–504. Use as
+    Thesis eqs. (34)–(35). Use as
     ``solve_ivp(pendulum_rhs, (0, t_end), (psi0, 0.0), args=(Mockup(...),))``.
 
     Examples
@@ -229,7 +229,7 @@ def two_coil_rhs(t, state, params):
 
     Notes
     -----
-    Thesis eq. (36), seed lines 508–512. The equilibrium is ψ = −atan2(m₂, m₁): the net
+    Thesis eq. (36). The equilibrium is ψ = −atan2(m₂, m₁): the net
     dipole lines up with the field.
 
     Examples
@@ -265,7 +265,7 @@ def pendulum_energy(psi, omega, inertia, moment, field):
 
     Notes
     -----
-    Thesis §4.1, seed lines 468 and 488 (T = Cr²/2, Π = −mB0 cos ψ); the first
+    Thesis §4.1 (T = Cr²/2, Π = −mB0 cos ψ); the first
     integral of eq. (35).
 
     Examples
@@ -295,7 +295,7 @@ def natural_frequency(inertia, moment, field):
 
     Notes
     -----
-    Thesis eq. (14), seed line 234.
+    Thesis eq. (14).
 
     Examples
     --------
@@ -325,8 +325,8 @@ def small_angle_period(inertia, moment, field):
 
     Notes
     -----
-    Thesis eq. (14), seed line 234. The thesis sizes the simulator and the coils with
-    it at an amplitude of π (seed lines 240, 396), where it does not hold
+    Thesis eq. (14). The thesis sizes the simulator and the coils with
+    it at an amplitude of π (thesis §2.1), where it does not hold
     (see :func:`pendulum_period`).
 
     Examples
@@ -432,7 +432,7 @@ def field_for_period(period, amplitude, inertia, moment):
     Notes
     -----
     Not in the thesis: eq. (35) solved exactly for the field. Compare the thesis's
-    eq. (15) as used, :math:`B = 4\pi^2 J A/(m T^2)` (seed lines 238–240, 396).
+    eq. (15) as used, :math:`B = 4\pi^2 J A/(m T^2)`.
 
     Examples
     --------
@@ -471,7 +471,7 @@ def amplitude_for_period(period, inertia, moment, field):
     Notes
     -----
     Not in the thesis: inverts the exact period, to ask at which amplitude the sized
-    design (seed lines 240, 398) really swings with its design period.
+    design (thesis §2.1) really swings with its design period.
 
     Examples
     --------

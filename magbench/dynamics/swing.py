@@ -33,7 +33,7 @@ def oscillation_field_h(inertia, moment, period, amplitude=1.0):
 
     Notes
     -----
-    Thesis eqs. (13)–(15), seed lines 232–240. The small-angle torque mBφ (13) gives
+    Thesis eqs. (13)–(15). The small-angle torque mBφ (13) gives
     ω = 2π/T = √(mB/J) (14), so
 
     .. math:: H = \frac{B}{\mu_0} = \frac{4\pi^2 J A}{\mu_0 m T^2}.

@@ -28,7 +28,7 @@ def magnetic_torque(moment, b):
 
     Notes
     -----
-    Thesis eq. (4), seed line 128 (components: eq. (6); Kovalenko eq. 1.1–1.2).
+    Thesis eq. (4) (components: eq. (6); Kovalenko eq. 1.1–1.2).
 
     Examples
     --------
@@ -55,7 +55,7 @@ def magnetic_torque_from_h(moment, h):
 
     Notes
     -----
-    Thesis eq. (5), seed line 136.
+    Thesis eq. (5).
 
     Deviation from source: the thesis writes **M** = **L** × **H**, which holds only in
     CGS units, where B and H coincide in vacuum. In SI the factor μ0 is required.
@@ -80,7 +80,7 @@ def perpendicular_moment(moment, b):
 
     Notes
     -----
-    Thesis eq. (8), seed line 162.
+    Thesis eq. (8).
     """
     m = as_vectors("moment", moment)
     bb = as_vectors("b", b)

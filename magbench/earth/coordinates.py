@@ -40,7 +40,7 @@ def geomagnetic_latitude(latitude, longitude, pole_latitude, pole_longitude):
 
     Notes
     -----
-    Thesis eq. (TH-g1), seed line 90 (from Kovalenko 1975, p. 34):
+    Thesis §1.1, the unnumbered formula before eq. (1) (from Kovalenko 1975, p. 34):
 
     .. math:: \sin\Phi = \sin\varphi\sin\varphi_0 + \cos\varphi\cos\varphi_0\cos(\lambda_0-\lambda)
 
@@ -83,7 +83,7 @@ def geomagnetic_longitude(latitude, longitude, pole_latitude, pole_longitude):
 
     Notes
     -----
-    Thesis eq. (TH-g2), seed line 92:
+    Thesis §1.1, the second unnumbered formula before eq. (1):
 
     .. math:: \sin\Lambda = \cos\varphi\,\frac{\sin(\lambda_0-\lambda)}{\cos\Phi}
 

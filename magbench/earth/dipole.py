@@ -41,7 +41,7 @@ def dipole_equatorial_b(moment, radius):
 
     Notes
     -----
-    Thesis eq. (2) at Φ = 0 (seed line 118: "from M/R³ at the equator"); in CGS the
+    Thesis eq. (2) at Φ = 0 ("from M/R³ at the equator"); in CGS the
     thesis writes M/R³ [Oe]. The value at the poles is twice this.
 
     Examples
@@ -73,7 +73,7 @@ def dipole_vertical_b(geomagnetic_latitude, moment, radius):
 
     Notes
     -----
-    Thesis eq. (1), seed line 108, with θ_M = π/2 − Φ.
+    Thesis eq. (1), with θ_M = π/2 − Φ.
 
     Deviation from source: the thesis prints Z = −2(M/R³) cos θ_M, which is negative
     in the north although its own z axis points down and J > 0 there. The magnitude
@@ -102,7 +102,7 @@ def dipole_horizontal_b(geomagnetic_latitude, moment, radius):
 
     Notes
     -----
-    Thesis eq. (1), seed line 108: H = (M/R³) sin θ_M.
+    Thesis eq. (1): H = (M/R³) sin θ_M.
     """
     lat = as_in_range("geomagnetic_latitude", geomagnetic_latitude, -np.pi / 2, np.pi / 2, unit="rad")
     return dipole_equatorial_b(moment, radius) * np.cos(lat)
@@ -127,7 +127,7 @@ def dipole_total_b(geomagnetic_latitude, moment, radius):
 
     Notes
     -----
-    Thesis eq. (2), seed line 112: T = (M/R³) √(1 + 3 cos²θ_M).
+    Thesis eq. (2): T = (M/R³) √(1 + 3 cos²θ_M).
 
     Examples
     --------
@@ -156,7 +156,7 @@ def dipole_inclination(geomagnetic_latitude):
 
     Notes
     -----
-    Thesis eq. (3), seed line 116.
+    Thesis eq. (3).
 
     Deviation from source: the thesis (and Kovalenko's eq. 2.3) prints
     tan J = −2 tan Φ, which gives J < 0 in the north; with the thesis's own
@@ -233,7 +233,7 @@ def earth_dipole_moment_vector(moment, pole_latitude, pole_longitude):
 
     Notes
     -----
-    Thesis §1.1, seed lines 86–96 (pole 78.5° N, 69° W; tilt 11.5°).
+    Thesis §1.1 (pole 78.5° N, 69° W; tilt 11.5°).
     """
     m = as_positive("moment", moment, unit="A·m²")
     plat = as_in_range("pole_latitude", pole_latitude, -np.pi / 2, np.pi / 2, unit="rad")

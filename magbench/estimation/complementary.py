@@ -37,7 +37,7 @@ def complementary_filter_step(angle, gyro_rate, reference_angle, dt, alpha):
 
     Notes
     -----
-    Thesis eq. (39), seed line 587. No argument checks: the loop that calls this checks
+    Thesis eq. (39). No argument checks: the loop that calls this checks
     its inputs once (see :func:`complementary_filter`).
 
     Examples
@@ -74,7 +74,7 @@ def complementary_filter(gyro_rate, accel_angle, dt, alpha, initial_angle=None):
 
     Notes
     -----
-    Thesis eq. (39), seed line 587, in the discrete form the thesis implies
+    Thesis eq. (39), in the discrete form the thesis implies
     (its angle_gyro is the previous filtered angle advanced by the gyro). The recursion is
     linear with a constant pole A, so it runs as one IIR filter (scipy.signal.lfilter)
     instead of a Python loop. A = 0 returns the reference angle; A = 1 the gyro integral.
@@ -123,7 +123,7 @@ def complementary_time_constant(dt, alpha):
 
     Notes
     -----
-    Not in the thesis or the sources: follows from eq. (39) (the inventory's gap G19).
+    Not in the thesis or the sources: follows from eq. (39).
 
     Examples
     --------

@@ -29,9 +29,9 @@ def magnetometer_heading(b_sensor):
 
     Notes
     -----
-    Thesis §4 (seed line 599) names the HMC5883 magnetometer on the bench but gives no
-    formula; eq. (39) needs an absolute heading reference, which gravity cannot supply
-    (inventory gap G19). A sensor turned by ψ about the vertical sees the horizontal
+    Thesis §4.2 names the HMC5883 magnetometer on the bench but gives no
+    formula; eq. (39) needs an absolute heading reference, which gravity cannot supply.
+    A sensor turned by ψ about the vertical sees the horizontal
     field :math:`B_h` as :math:`(B_h\cos\psi, -B_h\sin\psi)`, the convention of the
     planar field used for eq. (36). A tilted sensor needs its tilt removed first.
 

@@ -79,7 +79,7 @@ def helmholtz_center_h(current, turns, radius, separation):
 
     Notes
     -----
-    Thesis eq. (16), seed line 263; exact for two thin loops (the on-axis field of
+    Thesis eq. (16); exact for two thin loops (the on-axis field of
     each loop, μ0 N I a²/(2(a² + z²)^{3/2}), at z = d/2, doubled):
 
     .. math:: H = \frac{N I}{a_c\left[\left(\frac{d_c}{2a_c}\right)^2 + 1\right]^{3/2}}
@@ -117,7 +117,7 @@ def helmholtz_ampere_turns(center_h, radius, separation):
 
     Notes
     -----
-    Thesis eq. (16), seed lines 263 and 270, solved for NI:
+    Thesis eq. (16), solved for NI:
 
     .. math:: NI = H a_c\left[\left(\frac{d_c}{2a_c}\right)^2 + 1\right]^{3/2}
 
@@ -204,7 +204,7 @@ def planar_pair_center_h(ampere_turns, radius, separation):
 
     Notes
     -----
-    Not in the thesis: a hypothesis for its COMSOL result (seed line 295). A planar 2-D
+    Not in the thesis: a hypothesis for its COMSOL result (thesis §2.3). A planar 2-D
     model of the meridian cross-section replaces each coil by two infinite straight
     wires at (±a, ±d/2) carrying ±NI; each contributes NI/(2πr) at the midpoint,
     r² = a² + d²/4, of which the axial part a/r adds up:

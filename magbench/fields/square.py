@@ -63,7 +63,7 @@ def square_loop_b(points, side, current, turns=1, center=(0.0, 0.0, 0.0), normal
     Notes
     -----
     Not in the thesis (its square-coil formulas (28)–(31) are for magnetorquers); square
-    Helmholtz pairs are in Kovalenko (1975) §3.4, seed line L61. Each side contributes
+    Helmholtz pairs are in Kovalenko (1975) §3.4, p. 60. Each side contributes
     (Griffiths, *Introduction to Electrodynamics*, eq. 5.37, in vector form)
 
     .. math:: \mathbf B = \frac{\mu_0 NI}{4\pi}\,
@@ -147,7 +147,7 @@ def square_pair_spacing(side):
 
     Notes
     -----
-    Not in the thesis: Kovalenko (1975) §3.4, seed line L61, gives 0.5445 l. With
+    Not in the thesis: Kovalenko (1975) §3.4, p. 60, gives 0.5445 l. With
     f(z) = 1/((h² + z²)√(2h² + z²)) (:func:`square_loop_axial_b`), the pair's
     ∂²B_z/∂z² at the centre vanishes where (ln f)'' + ((ln f)')² = 0 at z = d/2; solved
     by Brent's method: d = 0.544505 l.

@@ -61,7 +61,7 @@ def three_axis_pair_b(points, currents, radii, separations, turns, axes=np.eye(3
     Notes
     -----
     Not in the thesis (it built one pair): the three-axis simulator of its ref. [1]
-    (Pastena & Grassi 2002) and of Kovalenko (1975) §3.4, seed line L61 ("fields along
+    (Pastena & Grassi 2002) and of Kovalenko (1975) §3.4, p. 60 ("fields along
     three orthogonal axes … to compensate the Earth's field"). Sum of six
     :func:`loop_b_posed` loops at ±d_k/2 along axis k.
 
@@ -184,7 +184,7 @@ def coaxial_system_b(points, shapes, sizes, positions, ampere_turns):
     Notes
     -----
     Not in the thesis: its Fig. 3 names the candidate systems (pairs of circles or
-    squares, multiples of two rings); Kovalenko (1975) §3.4, seed lines L61–L62, gives
+    squares, multiples of two rings); Kovalenko (1975) §3.4, pp. 60–61, gives
     the Maxwell, three-coil, four-coil and Rubens systems. Sum of :func:`loop_b_posed`
     and :func:`square_loop_b` (sides along x and y).
 
@@ -257,7 +257,7 @@ def coaxial_system_sphere_nonuniformity(shapes, sizes, positions, ampere_turns, 
 
     Notes
     -----
-    Not in the thesis: Kovalenko (1975) §3.4, seed line L62, quotes the four-coil system
+    Not in the thesis: Kovalenko (1975) §3.4, p. 61, quotes the four-coil system
     as uniform to 0.5 % in a sphere of radius 2r/3. Sampled on 40 concentric spheres of
     1162 directions each (:data:`_DIRS`).
 
@@ -300,7 +300,7 @@ def coaxial_system_cylinder_nonuniformity(shapes, sizes, positions, ampere_turns
 
     Notes
     -----
-    Not in the thesis: Kovalenko (1975) §3.4, seed line L62 — Rubens' five square
+    Not in the thesis: Kovalenko (1975) §3.4, p. 61 — Rubens' five square
     sections are uniform to 1 % in a cylinder of length a/2 and radius a/4. Sampled on
     a 41 (ρ) × 25 (azimuth over a quarter turn: circles and squares centred on the axis
     have four-fold symmetry) × 81 (z) grid.
@@ -343,7 +343,7 @@ def coaxial_system_uniform_radius(shapes, sizes, positions, ampere_turns, tolera
 
     Notes
     -----
-    Not in the thesis (its requirement, seed line 242, is δ < 5 % in a 10 cm sphere):
+    Not in the thesis (its requirement, thesis §2.1, is δ < 5 % in a 10 cm sphere):
     the first radius at which the deviation on the sphere (1162 directions) reaches δ,
     by a scan of 120 radii up to the nearest wire and Brent's method. For a circular
     pair it agrees with :func:`uniform_sphere_radius` to 1e-6 radii.

@@ -89,7 +89,7 @@ def sphere_nonuniformity(radius, separation, sphere_radius):
     Notes
     -----
     Not in the thesis as a formula: the thesis's requirement δ_m < 5 % in a sphere of
-    10 cm (seed line 242) and its COMSOL "uniform lengths" (seed lines 295–300).
+    10 cm (thesis §2.1) and its COMSOL "uniform lengths" (thesis §2.3).
     Sampled at 361 polar angles on a quadrant (the pair is mirror-symmetric).
     Independent of the current and of the length scale.
 
@@ -125,7 +125,7 @@ def cylinder_nonuniformity(radius, separation, cylinder_radius, cylinder_length)
 
     Notes
     -----
-    Not in the thesis: Kovalenko (1975) §3.4, seed line L61 — a Helmholtz pair (d = a)
+    Not in the thesis: Kovalenko (1975) §3.4, p. 60 — a Helmholtz pair (d = a)
     is uniform to "no more than 0.02 %" in a cylinder of radius 0.1a and length 0.2a.
     This function gives 0.0186 % there. Sampled on a 101 × 101 grid of the meridian
     rectangle plus its boundary at 201 points per side.
@@ -169,7 +169,7 @@ def uniform_sphere_radius(radius, separation, tolerance):
 
     Notes
     -----
-    Not in the thesis (its requirement, seed line 242, is δ < 5 % in a sphere of radius
+    Not in the thesis (its requirement, thesis §2.1, is δ < 5 % in a sphere of radius
     10 cm). The radius is the first s at which the deviation on the sphere of radius s
     reaches δ (grid scan, then Brent's method to 1e-12 a), so every point of the ball
     is within δ.
@@ -319,7 +319,7 @@ def pair_distance_to_h(center_fraction, radius, separation, direction):
     Notes
     -----
     Not in the thesis: used to ask how far from the centre a probe would have to sit
-    to read the measured 262 A/m (seed line 318). The first point where
+    to read the measured 262 A/m (thesis §2.4). The first point where
     | |B|/B0 − 1 | = 1 − fraction, found as in :func:`uniform_sphere_radius`; for
     d > a the axial field first rises, so only a fall below the centre value counts.
 
@@ -374,7 +374,7 @@ def uniform_zone_length(radius, separation, tolerance, direction):
     Notes
     -----
     Not in the thesis as a definition: its "uniform zone of order 25 cm" (Fig. 6) and
-    "30 cm" (Fig. 7), seed lines 295–300, read off COMSOL curves without a criterion.
+    "30 cm" (Fig. 7), thesis §2.3, read off COMSOL curves without a criterion.
     The interval ends where the deviation first reaches δ (grid scan and Brent's
     method, as in :func:`uniform_sphere_radius`); by the pair's symmetry it is centred.
 

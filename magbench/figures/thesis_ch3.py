@@ -42,7 +42,7 @@ def compute_fig09(mtq_side, mtq_turns, wire_pitch, coils):
 
     Each coil is a square winding of side ``mtq_side`` around one body axis (x, y, then z),
     a single layer of ``mtq_turns`` turns at ``wire_pitch`` centred on the cube: the
-    thesis's assumption of a dense single-layer winding (seed line 434).
+    thesis's assumption of a dense single-layer winding (thesis §3.2).
     """
     n_coils = int(coils)
     if n_coils not in (2, 3) or n_coils != coils:

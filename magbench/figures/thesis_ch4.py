@@ -15,7 +15,7 @@ from . import FigureData, FigureParameter, FigureSpec, Series, register
 
 SOURCE = "Bui (2016), thesis §4"
 DEG = np.pi / 180.0
-#: The gain sets of thesis Figs. 15–18 (seed lines 565–579), as (kp, ki, kd).
+#: The gain sets of thesis Figs. 15–18 (thesis §4.1), as (kp, ki, kd).
 KP_SWEEP = ((0.1, 0.5, 0.5), (0.2, 0.5, 0.5), (0.3, 0.5, 0.5))
 KD_SWEEP = ((0.1, 0.5, 1.0), (0.1, 0.5, 2.0), (0.1, 0.5, 3.0))
 PRINTED_SETS = KP_SWEEP + KD_SWEEP
@@ -454,7 +454,7 @@ def reading_evidence(inertia, field, moment, initial_angle, duration=300.0):
     2 % settling time (4/|Re λ|) of the slowest mode, and the peak PID output of the
     unsaturated linear loop released at ``initial_angle`` [rad], as a fraction of the
     coils' maximum in the reading's own units (the thesis says the gains were chosen to
-    stay below it, seed line 565) and in SI (what the coils can do).
+    stay below it, thesis §4.1) and in SI (what the coils can do).
     """
     import control as ct
 

@@ -248,7 +248,7 @@ def coil_designs(moment, voltage, side, shape, max_power, max_mass, wire_diamete
         thicker wires carry somewhat more. Take the value from the wire's datasheet.
     winding_length : float, optional
         Axial length available for one layer [m]; default ``side``, the thesis's
-        assumption of a single-layer winding as long as the face (seed line 434).
+        assumption of a single-layer winding as long as the face (thesis §3.2).
     max_layers : int, optional
         Number of layers the former can hold [-].
     require_fit : bool, optional
@@ -307,7 +307,7 @@ def binding_limit(moment, voltage, side, shape, max_power, max_mass, wire_diamet
         thicker wires carry somewhat more. Take the value from the wire's datasheet.
     winding_length : float, optional
         Axial length available for one layer [m]; default ``side``, the thesis's
-        assumption of a single-layer winding as long as the face (seed line 434).
+        assumption of a single-layer winding as long as the face (thesis §3.2).
     max_layers : int, optional
         Number of layers the former can hold [-].
     require_fit : bool, optional
@@ -386,7 +386,7 @@ def design_magnetorquer(
         thicker wires carry somewhat more. Take the value from the wire's datasheet.
     winding_length : float, optional
         Axial length available for one layer [m]; default ``side``, the thesis's
-        assumption of a single-layer winding as long as the face (seed line 434).
+        assumption of a single-layer winding as long as the face (thesis §3.2).
     max_layers : int, optional
         Number of layers the former can hold [-].
     require_fit : bool, optional

@@ -48,7 +48,7 @@ def dipole_moment(current, turns, area):
 
     Notes
     -----
-    Thesis eq. (17), seed line 330 (Kovalenko 1975 eq. 8.2).
+    Thesis eq. (17) (Kovalenko 1975 eq. 8.2).
 
     Examples
     --------
@@ -80,8 +80,8 @@ def current_for_moment(moment, turns, area):
 
     Notes
     -----
-    Thesis eq. (17), seed line 330, solved for I. The thesis's "I₁ = 0.24 A" for
-    m₁ = 0.4 A·m² (seed line 516) is not reproduced: the square 0.1 m coil of N = 240
+    Thesis eq. (17), solved for I. The thesis's "I₁ = 0.24 A" for
+    m₁ = 0.4 A·m² (thesis §4.1) is not reproduced: the square 0.1 m coil of N = 240
     needs 0.167 A (0.212 A if the turn were round).
 
     Examples
@@ -114,7 +114,7 @@ def coil_current(voltage, turn_resistance, turns):
 
     Notes
     -----
-    Thesis eq. (18), seed line 334.
+    Thesis eq. (18).
 
     Examples
     --------
@@ -148,8 +148,8 @@ def turn_resistance(side, wire_area, resistivity, shape="round"):
 
     Notes
     -----
-    Thesis eq. (19), seed line 338 (round); the square form is the r inside eq. (31),
-    seed line 382.
+    Thesis eq. (19) (round); the square form is the r inside eq. (31),
+    thesis §3.1.
 
     Examples
     --------
@@ -185,7 +185,7 @@ def coil_resistance(turns, side, wire_area, resistivity, shape="round"):
 
     Notes
     -----
-    Thesis §3.3, seed line 439 ("R = N·r = 53.5 Ω" for 0.2 mm wire, N = 240); reproduced with the
+    Thesis §3.3 ("R = N·r = 53.5 Ω" for 0.2 mm wire, N = 240); reproduced with the
     square turn (42.0 Ω if the turn were round).
 
     Examples
@@ -218,9 +218,9 @@ def moment_from_voltage(voltage, side, wire_area, resistivity):
 
     Notes
     -----
-    Thesis eq. (20), seed line 342. It holds unchanged for round and square turns (the
+    Thesis eq. (20). It holds unchanged for round and square turns (the
     factor π/4 cancels between area and length), so there is no ``shape`` keyword. The
-    thesis's "0.42 A·m²" for the built coil (seed line 441: U = 12 V, 0.2 mm wire,
+    thesis's "0.42 A·m²" for the built coil (thesis §3.3: U = 12 V, 0.2 mm wire,
     l = 0.1 m) is not reproduced: eq. (20) gives 0.539 A·m².
 
     Examples
@@ -256,7 +256,7 @@ def wire_area_for_moment(moment, voltage, side, resistivity):
 
     Notes
     -----
-    Thesis eq. (21), seed line 346. The thesis prints S_r = 2.34·10⁻⁸ m² (seed line 431) for
+    Thesis eq. (21). The thesis prints S_r = 2.34·10⁻⁸ m² for
     m = 0.4 A·m², U = 12 V, l = 0.1 m; the value is 2.333·10⁻⁸ m² (rounded up by 0.3 %).
 
     Examples
@@ -288,7 +288,7 @@ def joule_power(voltage, resistance):
 
     Notes
     -----
-    Thesis eq. (TH-W), seed line 348: W = U²/(rN).
+    Thesis §3.1 (unnumbered): W = U²/(rN).
 
     Examples
     --------
@@ -323,8 +323,8 @@ def joule_power_for_moment(moment, voltage, turns, side, shape="round"):
 
     Notes
     -----
-    Thesis eq. (22), seed line 350 (round) and eq. (28), seed line 376 (square); the
-    square value is π/4 times the round one, not the reverse as seed line 384 reads.
+    Thesis eq. (22) (round) and eq. (28) (square); the
+    square value is π/4 times the round one, not the reverse as thesis §3.1 reads.
 
     Examples
     --------
@@ -354,7 +354,7 @@ def turns_from_winding_length(winding_length, wire_area):
 
     Notes
     -----
-    Thesis eq. (TH-N), seed line 352. The pitch √S_r = 0.886 d ignores the enamel; a real
+    Thesis §3.2 (the unnumbered N = L/√S_r). The pitch √S_r = 0.886 d ignores the enamel; a real
     winding of pitch d + 2t has fewer turns (see :func:`design_magnetorquer`).
 
     Examples
@@ -384,8 +384,8 @@ def winding_length(turns, wire_area):
 
     Notes
     -----
-    Thesis eq. (TH-N), seed line 352, solved for L. The thesis's "L ≈ 0.1 m" for N = 240
-    and S_r = 2.34·10⁻⁸ m² (seed line 434) is not reproduced: L = 0.037 m.
+    Thesis §3.2 (the unnumbered N = L/√S_r), solved for L. The thesis's "L ≈ 0.1 m" for N = 240
+    and S_r = 2.34·10⁻⁸ m² (thesis §3.2) is not reproduced: L = 0.037 m.
 
     Examples
     --------
@@ -422,7 +422,7 @@ def joule_power_for_winding_length(moment, voltage, winding_length, wire_area, s
 
     Notes
     -----
-    Thesis eq. (23), seed line 354: eq. (22) with N = L/√S_r.
+    Thesis eq. (23): eq. (22) with N = L/√S_r.
 
     Examples
     --------
@@ -457,7 +457,7 @@ def coil_mass(turns, side, wire_area, density, shape="round"):
 
     Notes
     -----
-    Thesis eq. (24), seed line 358 (round); the square form is the one behind eq. (29).
+    Thesis eq. (24) (round); the square form is the one behind eq. (29).
 
     Examples
     --------
@@ -495,7 +495,7 @@ def coil_mass_for_moment(moment, voltage, turns, resistivity, density, shape="ro
 
     Notes
     -----
-    Thesis eq. (25), seed line 362 (round) and eq. (29), seed line 378 (square).
+    Thesis eq. (25) (round) and eq. (29) (square).
 
     Examples
     --------
@@ -531,8 +531,8 @@ def mass_power_product(moment, side, resistivity, density):
 
     Notes
     -----
-    Thesis eq. (26), seed line 366 (round) and eq. (30), seed line 380 (square); the two
-    are identical, contrary to the "factor π/4" of seed line 384. Kovalenko's form with a
+    Thesis eq. (26) (round) and eq. (30) (square); the two
+    are identical, contrary to the "factor π/4" of thesis §3.1. Kovalenko's form with a
     fill factor is :func:`mass_power_product_kovalenko`.
 
     Examples
@@ -657,7 +657,7 @@ def supply_voltage(current, turns, side, wire_area, resistivity, shape="round"):
 
     Notes
     -----
-    Thesis eq. (27), seed line 372 (round) and eq. (31), seed line 382 (square).
+    Thesis eq. (27) (round) and eq. (31) (square).
 
     Examples
     --------
@@ -698,7 +698,7 @@ def turns_per_volt_bounds(moment, side, max_power, max_mass, resistivity, densit
 
     Notes
     -----
-    Thesis eq. (32), seed lines 420–426 (with the square formulas (28)–(29)); the thesis
+    Thesis eq. (32) (with the square formulas (28)–(29)); the thesis
     rounds 16ρρ̃m = 0.997·10⁻³ kg·V to 10⁻³ and so prints 20 ≤ N/U ≤ 100.
 
     Examples
@@ -738,7 +738,7 @@ def turns_from_resistance(resistance, side, wire_area, resistivity, shape="round
 
     Notes
     -----
-    Thesis §3.3, seed lines 439–441: the thesis explains the measured ≈ 55 Ω (53.5 Ω
+    Thesis §3.3: the thesis explains the measured ≈ 55 Ω (53.5 Ω
     computed) by extra turns wound by hand; this is the count that explanation needs.
 
     Examples
@@ -773,7 +773,7 @@ def wire_diameter_from_resistance(resistance, turns, side, resistivity, shape="r
 
     Notes
     -----
-    Thesis §3.3, seed lines 439–441, the other explanation of the measured 55 Ω: a wire
+    Thesis §3.3, the other explanation of the measured 55 Ω: a wire
     thinner than its nominal 0.2 mm, within the wire standard's diameter tolerance.
 
     Examples

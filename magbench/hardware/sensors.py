@@ -1,6 +1,6 @@
 r"""Models of the bench's inertial and magnetic sensors: what they read for a true input.
 
-The thesis's bench (seed lines 585–599) carries an InvenSense MPU-6050 (3-axis gyro and
+The thesis's bench (thesis §4.2) carries an InvenSense MPU-6050 (3-axis gyro and
 accelerometer, GY-521 board) and a Honeywell HMC5883L 3-axis magnetometer. These models
 add the error terms the datasheets specify to a true signal, so that estimators and
 closed-loop simulations can be run with realistic sensors.
@@ -182,7 +182,7 @@ def gyro_readings(true_rate, dt, *, rng, noise_density=MPU6050_GYRO_NOISE_DENSIT
 
     Notes
     -----
-    Not in the thesis: the thesis names the sensor (seed line 599) but no error model.
+    Not in the thesis: the thesis names the sensor (thesis §4.2) but no error model.
     Datasheet PS-MPU-6000A-00 rev. 3.4, Table 6.1.
 
     Examples

@@ -50,7 +50,7 @@ def turn_area(side, shape="round"):
 
     Notes
     -----
-    Thesis eq. (19), seed line 340 ("S = πl²/4"); the square area l² is implied by eqs. (28)–(31).
+    Thesis eq. (19) ("S = πl²/4"); the square area l² is implied by eqs. (28)–(31).
 
     Examples
     --------
@@ -78,7 +78,7 @@ def turn_length(side, shape="round"):
 
     Notes
     -----
-    Thesis eq. (19), seed line 338 (πl) and eq. (31), seed line 382 (4l).
+    Thesis eq. (19) (πl) and eq. (31) (4l).
 
     Examples
     --------
@@ -104,7 +104,7 @@ def wire_area(diameter):
 
     Notes
     -----
-    Thesis §3.2, seed line 431 (S_r "corresponds to d = 0.172 mm") and §3.3, seed line 439.
+    Thesis §3.2 (S_r "corresponds to d = 0.172 mm") and §3.3.
 
     Examples
     --------
@@ -130,7 +130,7 @@ def wire_diameter(area):
 
     Notes
     -----
-    Thesis §3.2, seed line 431: S_r "corresponds to d = 0.172 mm". The d = 0.172 mm follows
+    Thesis §3.2: S_r "corresponds to d = 0.172 mm". The d = 0.172 mm follows
     from the exact S_r = 2.333·10⁻⁸ m² of eq. (21); the printed S_r = 2.34·10⁻⁸ m² is rounded
     up and would give 0.173 mm.
 

@@ -32,7 +32,7 @@ def winding_resistance(radius, turns, wire_diameter, resistivity):
 
     Notes
     -----
-    Thesis eq. (TH-R), seed line 278 (unnumbered in the thesis):
+    Thesis §2.2 (unnumbered, after eq. (16)):
 
     .. math:: R = \frac{2\pi a_c}{S_0}\rho N,\qquad S_0 = \frac{\pi d_w^2}{4}.
 
@@ -73,7 +73,7 @@ def winding_voltage(radius, turns, wire_diameter, resistivity, current):
 
     Notes
     -----
-    Thesis eq. (TH-U), seed line 282 (unnumbered): U = RI = (2πa_c/S_0)ρNI. It depends
+    Thesis §2.2 (unnumbered, after eq. (16)): U = RI = (2πa_c/S_0)ρNI. It depends
     on N·I only; the printed 32 V matches NI = 258 A (and 31.5 V for N = 110, I = 2.3 A).
 
     Examples
@@ -108,7 +108,7 @@ def winding_power(radius, turns, wire_diameter, resistivity, current):
 
     Notes
     -----
-    Thesis eq. (TH-P), seed line 286 (unnumbered): P = UI = (2πa_c/S_0)ρNI·I. The thesis
+    Thesis §2.2 (unnumbered, after eq. (16)): P = UI = (2πa_c/S_0)ρNI·I. The thesis
     prints 83 W; N = 110, I = 2.3 A gives 72.4 W, and 82.8 W is N = 100, I = 2.58 A.
 
     Examples
@@ -141,7 +141,7 @@ def winding_mass(radius, turns, wire_diameter, density):
 
     Notes
     -----
-    Thesis eq. (24), seed line 358, M_K = ρ̃πlS_rN (written there for the magnetorquer,
+    Thesis eq. (24), M_K = ρ̃πlS_rN (written there for the magnetorquer,
     turn diameter l), applied here to the simulator coil with l = 2a_c.
 
     Examples

@@ -12,11 +12,11 @@ members (every state is an array of shape ``(members,)``):
 2. **Filter** (thesis eq. 39, :func:`magbench.estimation.complementary_filter_step`). The
    absolute reference is the magnetometer heading ψ_mag = atan2(−B_y', B_x'), *not* an
    accelerometer angle: gravity is parallel to the turning axis, so an accelerometer
-   cannot observe this angle (inventory gap G19, a deviation from the text). The
+   cannot observe this angle. The
    heading is unwrapped onto the branch of the current estimate, as firmware would.
 3. **PID** (thesis eq. 37, :func:`magbench.control.pid_step`) on e = ψ_des − ψ̂ with
    de/dt = −ω_gyro, saturated at the coils' full-scale moment, with anti-windup.
-4. **Allocation** (thesis §4.1, seed lines 545–557): with b the measured unit field in
+4. **Allocation** (thesis §4.1): with b the measured unit field in
    body axes, M_x = −m_z b_y and M_y = m_z b_x for a torque −|B| m_z about the vertical;
    the PID output u is the torque per unit field, m_z = −u.
 5. **Driver**: Arduino ``analogWrite`` sets an 8-bit duty (255 levels each way, the L298
@@ -37,7 +37,7 @@ sense of the gyro's vertical axis. The field B0 is the magnitude of the horizont
 field the mock-up sees; :func:`horizontal_field` combines the simulator's field with a
 horizontal background (the Earth's) at a given azimuth.
 
-The thesis's gains (K_p = 0.1, K_d = 0.5, K_i = 0.5, seed line 614) make the loop
+The thesis's gains (K_p = 0.1, K_d = 0.5, K_i = 0.5, thesis §4.4) make the loop
 unstable when read in SI (inventory A40); the bench default gains here come from
 :func:`magbench.control.pid_gains_for_triple_pole` with a bandwidth of ours.
 """
@@ -186,7 +186,7 @@ def horizontal_field(simulator_h, background_h=0.0, background_azimuth=0.0):
     Notes
     -----
     Not in the thesis: it states neither how the simulator was oriented relative to the
-    Earth's field nor whether the measured 262 A/m includes it (inventory gap G18). The
+    Earth's field nor whether the measured 262 A/m includes it. The
     angle ψ is then counted from this total horizontal field, which is also what the
     magnetometer measures, so the background only changes the loop gain.
 
@@ -223,7 +223,7 @@ def coil_full_scale_moment(voltage, resistance, turns, side):
 
     Notes
     -----
-    Thesis eq. (17)–(18) with the measured resistance of seed line 441: 0.524 A·m² for
+    Thesis eq. (17)–(18) with the measured resistance (thesis §3.3): 0.524 A·m² for
     12 V, 55 Ω, N = 240, l = 0.1 m. If the extra 1.5 Ω were extra turns (the thesis's
     explanation), eq. (20) would give 0.539 A·m² whatever N; the Monte Carlo's ±5 %
     moment spread covers the difference.
@@ -257,7 +257,7 @@ def quantise_duty(duty, levels):
 
     Notes
     -----
-    Not in the thesis: it names the L298 module (seed line 591) but not the resolution.
+    Not in the thesis: it names the L298 module (thesis §4.2) but not the resolution.
 
     Examples
     --------
@@ -306,7 +306,7 @@ def plant_step(psi, omega, moment_1, moment_2, dt, *, field, inertia, thread_sti
     Notes
     -----
     Thesis eq. (36), J ω̇ = −B0(m1 sin ψ + m2 cos ψ), plus the torsion −κ(ψ − ψ_thread)
-    that the thesis names as a cause of the bench's error (seed line 616) but does not
+    that the thesis names as a cause of the bench's error (thesis §4.4) but does not
     quantify. The local error is O((ω_n dt)⁵) with ω_n ≈ 0.2 rad/s: ~1e-14 rad per 10 ms
     step. No argument checks (inner loop).
 
@@ -522,11 +522,11 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
     Notes
     -----
     Not in the thesis: the loop of thesis §4 (eqs. 36, 37, 39 and the allocation of
-    seed lines 545–557) as laid out in the module docstring. At each sample k the
+    thesis §4.1) as laid out in the module docstring. At each sample k the
     sensors read the state at t_k, the controller sets the moments, and the plant
     advances to t_{k+1} with them held. The error band is
     max |ψ(t) − ψ_des| over the samples with t ≥ duration − window (and the final
-    state): the thesis does not say what its 10° measures (gap G23).
+    state): the thesis does not say what its 10° measures.
 
     Examples
     --------
@@ -762,8 +762,8 @@ def steady_error_band(run, quantile=None):
 
     Notes
     -----
-    Not in the thesis: the thesis's "absolute orientation error of 10°" (seed line 616)
-    has no stated metric (gap G23); this is the one used here.
+    Not in the thesis: the thesis's "absolute orientation error of 10°" (thesis §4.4)
+    has no stated metric; this is the one used here.
 
     Examples
     --------

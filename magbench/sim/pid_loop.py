@@ -85,7 +85,7 @@ def loop_torque(psi, command, loop):
 
     Notes
     -----
-    Thesis eqs. (36)–(38) and §4.1 (seed lines 508–563). The sign m_z = −u makes
+    Thesis eqs. (36)–(38) and §4.1. The sign m_z = −u makes
     e = ψ_des − ψ of eq. (37) a negative feedback, as eq. (38) intends. No checks: the
     inner kernel of the simulations.
 
@@ -100,7 +100,7 @@ def loop_torque(psi, command, loop):
     else:
         bx, by = np.ones_like(psi), -np.asarray(psi)
     mz = -np.asarray(command)
-    # M = (0, 0, m_z) × b with b_z = 0 (seed line 557): coil 1 gets −m_z b_y, coil 2 m_z b_x.
+    # M = (0, 0, m_z) × b with b_z = 0 (thesis §4.1): coil 1 gets −m_z b_y, coil 2 m_z b_x.
     return two_coil_torque(psi, -mz * by, mz * bx, loop.field)
 
 
@@ -125,11 +125,11 @@ def pid_continuous_rhs(t, state, loop):
 
     Notes
     -----
-    Thesis eqs. (36)–(38), seed lines 508–541: u = sat(K_p e + K_i ∫e + K_d ė),
+    Thesis eqs. (36)–(38): u = sat(K_p e + K_i ∫e + K_d ė),
     e = ψ_des − ψ, ė = −ω (the gyro rate: derivative on the measurement, no kick).
     Use as ``solve_ivp(pid_continuous_rhs, span, (psi0, omega0, 0.0), args=(loop,))``.
     The anti-windup scheme is ours (Åström and Hägglund, back-calculation); the thesis
-    states none (inventory gap G16).
+    states none.
 
     Examples
     --------
