@@ -133,12 +133,12 @@ def _coil_wires(name, enamel):
 
 
 def _cmd_design_coil(args):
-    from .magnetorquer import design_magnetorquer
-    from .params import chapter_parameters
+    from .data import load_parameter_set
+    from .hardware import design_magnetorquer
 
-    defaults = chapter_parameters("ch03")
-    rho = defaults["copper_resistivity"] if args.resistivity is None else args.resistivity
-    gamma = defaults["copper_density"] if args.density is None else args.density
+    thesis = load_parameter_set("thesis")       # the thesis's copper, unless given
+    rho = thesis["copper_resistivity"].value_si if args.resistivity is None else args.resistivity
+    gamma = thesis["copper_density"].value_si if args.density is None else args.density
     try:
         bare, overall, label = _coil_wires(args.wire_table, args.enamel)
         res = design_magnetorquer(

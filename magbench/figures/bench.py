@@ -12,6 +12,7 @@ import numpy as np
 
 from .. import bench, benchlog
 from ..data import load_parameter_set, measurement
+from ..chapters.ch04_mockup import CHAPTER
 from ..params import chapter_parameters
 from ..rotations import wrap_angle
 from . import FigureData, FigureParameter, FigureSpec, Series, register
@@ -35,7 +36,7 @@ _SI_UNITS = {"deg": "rad", "%": "1", "kg m^2": "kg m^2"}
 
 def _input_parameters():
     table = load_parameter_set("thesis")
-    values = chapter_parameters("ch04", overrides="")
+    values = chapter_parameters(CHAPTER.key, overrides="")
     params = {}
     for name in BENCH_INPUTS:
         p = table[name]

@@ -7,6 +7,7 @@ import numpy as np
 
 from .. import broad, estimation, sensors
 from ..constants import MU_0
+from ..chapters.ch04_mockup import CHAPTER
 from ..params import chapter_parameters
 from . import FigureData, FigureParameter, FigureSpec, Series, register
 
@@ -15,7 +16,7 @@ GRAVITY = 9.80665
 
 
 def _defaults():
-    return chapter_parameters("ch04", overrides="")
+    return chapter_parameters(CHAPTER.key, overrides="")
 
 
 # --- eq. (39): what the coefficient A does -------------------------------------------------

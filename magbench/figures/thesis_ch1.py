@@ -5,6 +5,7 @@ import numpy as np
 from .. import geomag, igrf
 from ..constants import EARTH_GM, EARTH_ROTATION_RATE
 from .._format import format_number
+from ..chapters.ch01_earth_field import CHAPTER
 from ..params import chapter_parameters
 from . import FigureData, FigureParameter, FigureSpec, Series, register
 
@@ -13,7 +14,7 @@ SOURCE = "Bui (2016), thesis §1.1–1.2"
 
 
 def _defaults():
-    return chapter_parameters("ch01", overrides="")
+    return chapter_parameters(CHAPTER.key, overrides="")
 
 
 def _dipole_parameters():

@@ -14,6 +14,7 @@ from .. import coils, igrf
 from ..chapters import ch02_field_simulator
 from ..constants import MU_0
 from ..data import load_measurements
+from ..chapters.ch02_field_simulator import CHAPTER
 from ..params import chapter_parameters
 from . import FigureData, FigureParameter, FigureSpec, Series, register
 
@@ -29,7 +30,7 @@ GAUSS_TO_A_PER_M = 1e-4 / MU_0
 
 
 def _defaults():
-    return chapter_parameters("ch02", overrides="")
+    return chapter_parameters(CHAPTER.key, overrides="")
 
 
 def _measured():

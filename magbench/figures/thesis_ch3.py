@@ -7,6 +7,7 @@ import numpy as np
 from .. import magnetorquer as mtq
 from ..constants import MU_0
 from ..data import load_wire_table
+from ..chapters.ch03_magnetorquers import CHAPTER
 from ..params import chapter_parameters
 from . import FigureData, FigureParameter, FigureSpec, Series, register
 
@@ -14,7 +15,7 @@ SOURCE = "Bui (2016), thesis §3"
 
 
 def _defaults():
-    return chapter_parameters("ch03", overrides="")
+    return chapter_parameters(CHAPTER.key, overrides="")
 
 
 def _wire_sizes():

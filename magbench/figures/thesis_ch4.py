@@ -10,6 +10,7 @@ import numpy as np
 from .. import attitude, coils, control
 from ..constants import MU_0
 from .._format import format_number
+from ..chapters.ch04_mockup import CHAPTER
 from ..params import chapter_parameters
 from . import FigureData, FigureParameter, FigureSpec, Series, register
 
@@ -23,7 +24,7 @@ STYLES = ("-", "--", ":")
 
 
 def _defaults():
-    return chapter_parameters("ch04", overrides="")
+    return chapter_parameters(CHAPTER.key, overrides="")
 
 
 def _plant_parameters():
