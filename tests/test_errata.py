@@ -59,3 +59,16 @@ def test_printed_value(check):
 def test_errata_list_matches_expectation():
     assert {e.id for e in errata()} == set(EXPECTED_ERRATA)
     assert len({c.id for c in CHECKS}) == len(CHECKS)
+
+
+def test_every_chapter_with_checks_has_its_section_on_the_errata_page():
+    """The errata page shows chapter by chapter; a chapter added to CHAPTERS must get its
+    section there, or its errata would be counted but never shown."""
+    from pathlib import Path
+
+    from magbench.chapters import CHAPTERS
+
+    page = (Path(__file__).resolve().parent.parent / "book" / "errata.md").read_text(encoding="utf-8")
+    for spec in CHAPTERS:
+        if spec.source_checks:
+            assert f'show("{spec.key}")' in page, spec.key

@@ -11,7 +11,7 @@ from . import ch01_earth_field, ch02_field_simulator, ch03_magnetorquers, ch04_m
 from ._base import OVERRIDES_ENV, Chapter, chapter_parameters, read_overrides
 
 __all__ = ["CHAPTERS", "Chapter", "OVERRIDES_ENV", "chapter", "chapter_parameters", "read_overrides",
-           "comparisons", "source_checks", "errata", "row_kind", "figure_modules"]
+           "comparisons", "source_checks", "errata", "row_kind", "figure_modules", "caption_name"]
 
 #: The chapters in book order.
 CHAPTERS = [
@@ -28,6 +28,14 @@ def chapter(key):
         if spec.key == key:
             return spec
     raise KeyError(f"unknown chapter {key!r}; known: {', '.join(c.key for c in CHAPTERS)}")
+
+
+def caption_name(key):
+    """"Chapter 2, the field simulator": the chapter's number in book order and short title."""
+    for number, spec in enumerate(CHAPTERS, 1):
+        if spec.key == key:
+            return f"Chapter {number}, {spec.short_title}"
+    return chapter(key).key      # raises KeyError listing the keys
 
 
 def _selected(key):

@@ -30,6 +30,8 @@ class Chapter:
         Short id, ``"ch01"``; the section name in parameter overrides files.
     title : str
         The chapter's title, as the book names it.
+    short_title : str
+        A few words for table captions ("the Earth's field").
     pages : tuple of str
         The book pages of the chapter (paths without ``.md``).
     source : str
@@ -50,6 +52,7 @@ class Chapter:
 
     key: str
     title: str
+    short_title: str
     pages: tuple
     source: str
     inputs: tuple

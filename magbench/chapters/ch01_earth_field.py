@@ -262,6 +262,7 @@ def kovalenko_field_checks():
 
 CHAPTER = Chapter(
     key="ch01", title="The Earth's magnetic field and the principle of magnetic control",
+    short_title="the Earth's field",
     pages=("book/ch01-earth-field",), source="thesis", inputs=INPUTS,
     figure_modules=("magbench.figures.thesis_ch1",),
     comparisons=geomagnetic_rows,

@@ -273,6 +273,7 @@ def simulator_field_checks():
 
 CHAPTER = Chapter(
     key="ch02", title="The geomagnetic-field simulator",
+    short_title="the field simulator",
     pages=("book/ch02-field-simulator",), source="thesis", inputs=INPUTS,
     figure_modules=("magbench.figures.thesis_ch2",),
     comparisons=simulator_rows,

@@ -250,6 +250,7 @@ def kovalenko_actuator_checks():
 
 CHAPTER = Chapter(
     key="ch03", title="Magnetic actuators: sizing the magnetorquers",
+    short_title="the magnetorquers",
     pages=("book/ch03-magnetorquers",), source="thesis", inputs=INPUTS,
     figure_modules=("magbench.figures.thesis_ch3",),
     comparisons=magnetorquer_rows,

@@ -109,6 +109,7 @@ def dynamics_checks(params=None):
 
 CHAPTER = Chapter(
     key="ch04", title="The mock-up on a thread: equations of motion and PID control",
+    short_title="the mock-up and the bench",
     pages=("book/ch04-mockup", "book/ch04-estimation", "book/ch04-bench"), source="thesis",
     inputs=INPUTS,
     figure_modules=("magbench.figures.thesis_ch4", "magbench.figures.estimation", "magbench.figures.bench"),
