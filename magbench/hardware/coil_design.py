@@ -19,6 +19,53 @@ __all__ = ["coil_designs", "binding_limit", "design_explanation", "design_magnet
 _MAX_ROWS = 2_000_000
 
 
+#: The parameters section shared by the three solver functions (one text, three docstrings).
+_PARAMETERS_DOC = """    Parameters
+    ----------
+    moment : float
+        Required dipole moment m [A·m²].
+    voltage : float
+        Supply voltage U [V].
+    side : float
+        Turn diameter (round) or side (square) l [m].
+    shape : {"round", "square"}
+        Turn shape [-].
+    max_power : float
+        Joule power limit per coil W_max [W].
+    max_mass : float
+        Conductor mass limit per coil M_max [kg].
+    wire_diameters : array_like, shape (k,)
+        Bare conductor diameters available [m] (a wire table).
+    resistivity : float
+        Conductor resistivity ρ [Ω·m].
+    density : float
+        Conductor density ρ̃ [kg/m³].
+    enamel_thickness : float, optional
+        Radial thickness of the enamel t [m]; the wire pitch is d + 2t. Used only for the
+        winding-fit check. The default 10 µm is an order of magnitude, not a standard
+        value: 0.100 mm grade-1 enamelled wire measures 0.108–0.117 mm overall (4–8.5 µm
+        radial; Elektrisola data quoted at enameled-wires.com, Technical-Documentation/341),
+        thicker wires carry somewhat more. Take the value from the wire's datasheet.
+    winding_length : float, optional
+        Axial length available for one layer [m]; default ``side``, the thesis's
+        assumption of a single-layer winding as long as the face (thesis §3.2).
+    max_layers : int, optional
+        Number of layers the former can hold [-].
+    require_fit : bool, optional
+        If true, designs whose winding does not fit are not feasible [-].
+    overall_diameters : array_like, shape (k,), optional
+        Overall (enamelled) diameter of each wire of ``wire_diameters`` [m], e.g. the
+        maximum overall diameter of a wire standard's table; when given it is the winding
+        pitch and ``enamel_thickness`` is not used. Each must exceed its bare diameter.
+
+"""
+
+
+def _document_parameters(func):
+    func.__doc__ = func.__doc__.replace("{parameters}", _PARAMETERS_DOC)
+    return func
+
+
 _COLUMNS = ("turns", "wire_diameter", "wire_area", "resistance", "current", "power", "mass", "moment",
             "pitch", "layer_length", "layers", "fits", "fill_factor")
 
@@ -211,6 +258,7 @@ def _solve(moment, voltage, side, shape, max_power, max_mass, wire_diameters, re
     return table, (*checked, float(turn_length(l, shape))), adequate, any_power_mass
 
 
+@_document_parameters
 def coil_designs(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
                  enamel_thickness=10e-6, *, winding_length=None, max_layers=1, require_fit=False,
                  overall_diameters=None):
@@ -220,45 +268,7 @@ def coil_designs(moment, voltage, side, shape, max_power, max_mass, wire_diamete
     its moment is at least ``moment``, W ≤ ``max_power`` and M ≤ ``max_mass`` (and, with
     ``require_fit``, when its winding fits).
 
-    Parameters
-    ----------
-    moment : float
-        Required dipole moment m [A·m²].
-    voltage : float
-        Supply voltage U [V].
-    side : float
-        Turn diameter (round) or side (square) l [m].
-    shape : {"round", "square"}
-        Turn shape [-].
-    max_power : float
-        Joule power limit per coil W_max [W].
-    max_mass : float
-        Conductor mass limit per coil M_max [kg].
-    wire_diameters : array_like, shape (k,)
-        Bare conductor diameters available [m] (a wire table).
-    resistivity : float
-        Conductor resistivity ρ [Ω·m].
-    density : float
-        Conductor density ρ̃ [kg/m³].
-    enamel_thickness : float, optional
-        Radial thickness of the enamel t [m]; the wire pitch is d + 2t. Used only for the
-        winding-fit check. The default 10 µm is an order of magnitude, not a standard
-        value: 0.100 mm grade-1 enamelled wire measures 0.108–0.117 mm overall (4–8.5 µm
-        radial; Elektrisola data quoted at enameled-wires.com, Technical-Documentation/341),
-        thicker wires carry somewhat more. Take the value from the wire's datasheet.
-    winding_length : float, optional
-        Axial length available for one layer [m]; default ``side``, the thesis's
-        assumption of a single-layer winding as long as the face (thesis §3.2).
-    max_layers : int, optional
-        Number of layers the former can hold [-].
-    require_fit : bool, optional
-        If true, designs whose winding does not fit are not feasible [-].
-    overall_diameters : array_like, shape (k,), optional
-        Overall (enamelled) diameter of each wire of ``wire_diameters`` [m], e.g. the
-        maximum overall diameter of a wire standard's table; when given it is the winding
-        pitch and ``enamel_thickness`` is not used. Each must exceed its bare diameter.
-
-    Returns
+{parameters}    Returns
     -------
     dict of str to ndarray
         One array entry per feasible design, ordered by wire diameter then turns:
@@ -270,6 +280,7 @@ def coil_designs(moment, voltage, side, shape, max_power, max_mass, wire_diamete
                   enamel_thickness, winding_length, max_layers, require_fit, overall_diameters)[0]
 
 
+@_document_parameters
 def binding_limit(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
                   enamel_thickness=10e-6, *, winding_length=None, max_layers=1, require_fit=False,
                   overall_diameters=None):
@@ -279,45 +290,7 @@ def binding_limit(moment, voltage, side, shape, max_power, max_mass, wire_diamet
     (26)/(30), M·W = 16ρρ̃m²/l², is independent of N and U, so with the thinnest adequate
     wire it must not exceed M_max·W_max.
 
-    Parameters
-    ----------
-    moment : float
-        Required dipole moment m [A·m²].
-    voltage : float
-        Supply voltage U [V].
-    side : float
-        Turn diameter (round) or side (square) l [m].
-    shape : {"round", "square"}
-        Turn shape [-].
-    max_power : float
-        Joule power limit per coil W_max [W].
-    max_mass : float
-        Conductor mass limit per coil M_max [kg].
-    wire_diameters : array_like, shape (k,)
-        Bare conductor diameters available [m] (a wire table).
-    resistivity : float
-        Conductor resistivity ρ [Ω·m].
-    density : float
-        Conductor density ρ̃ [kg/m³].
-    enamel_thickness : float, optional
-        Radial thickness of the enamel t [m]; the wire pitch is d + 2t. Used only for the
-        winding-fit check. The default 10 µm is an order of magnitude, not a standard
-        value: 0.100 mm grade-1 enamelled wire measures 0.108–0.117 mm overall (4–8.5 µm
-        radial; Elektrisola data quoted at enameled-wires.com, Technical-Documentation/341),
-        thicker wires carry somewhat more. Take the value from the wire's datasheet.
-    winding_length : float, optional
-        Axial length available for one layer [m]; default ``side``, the thesis's
-        assumption of a single-layer winding as long as the face (thesis §3.2).
-    max_layers : int, optional
-        Number of layers the former can hold [-].
-    require_fit : bool, optional
-        If true, designs whose winding does not fit are not feasible [-].
-    overall_diameters : array_like, shape (k,), optional
-        Overall (enamelled) diameter of each wire of ``wire_diameters`` [m], e.g. the
-        maximum overall diameter of a wire standard's table; when given it is the winding
-        pitch and ``enamel_thickness`` is not used. Each must exceed its bare diameter.
-
-    Returns
+{parameters}    Returns
     -------
     tuple of (str, dict) or None
         None when a design exists; else the kind (``"moment"``, ``"power and mass"``,
@@ -332,6 +305,7 @@ def binding_limit(moment, voltage, side, shape, max_power, max_mass, wire_diamet
     return _limit(checked, adequate, any_power_mass, max_layers)
 
 
+@_document_parameters
 def design_magnetorquer(
     moment,
     voltage,
@@ -358,45 +332,7 @@ def design_magnetorquer(
     when its moment is at least ``moment``, W ≤ ``max_power`` and M ≤ ``max_mass``; every
     integer N for every listed wire is tried.
 
-    Parameters
-    ----------
-    moment : float
-        Required dipole moment m [A·m²].
-    voltage : float
-        Supply voltage U [V].
-    side : float
-        Turn diameter (round) or side (square) l [m].
-    shape : {"round", "square"}
-        Turn shape [-].
-    max_power : float
-        Joule power limit per coil W_max [W].
-    max_mass : float
-        Conductor mass limit per coil M_max [kg].
-    wire_diameters : array_like, shape (k,)
-        Bare conductor diameters available [m] (a wire table).
-    resistivity : float
-        Conductor resistivity ρ [Ω·m].
-    density : float
-        Conductor density ρ̃ [kg/m³].
-    enamel_thickness : float, optional
-        Radial thickness of the enamel t [m]; the wire pitch is d + 2t. Used only for the
-        winding-fit check. The default 10 µm is an order of magnitude, not a standard
-        value: 0.100 mm grade-1 enamelled wire measures 0.108–0.117 mm overall (4–8.5 µm
-        radial; Elektrisola data quoted at enameled-wires.com, Technical-Documentation/341),
-        thicker wires carry somewhat more. Take the value from the wire's datasheet.
-    winding_length : float, optional
-        Axial length available for one layer [m]; default ``side``, the thesis's
-        assumption of a single-layer winding as long as the face (thesis §3.2).
-    max_layers : int, optional
-        Number of layers the former can hold [-].
-    require_fit : bool, optional
-        If true, designs whose winding does not fit are not feasible [-].
-    overall_diameters : array_like, shape (k,), optional
-        Overall (enamelled) diameter of each wire of ``wire_diameters`` [m], e.g. the
-        maximum overall diameter of a wire standard's table; when given it is the winding
-        pitch and ``enamel_thickness`` is not used. Each must exceed its bare diameter.
-
-    Returns
+{parameters}    Returns
     -------
     dict
         The table of :func:`coil_designs` (``"pitch"``: d + 2t or the overall diameter;
