@@ -107,8 +107,8 @@ def test_printed_cm_velocity_and_body_rates_by_finite_differences():
     d, h, t = 0.1, 1e-5, 0.8
     psi, theta, phi, x, y = angles(t)
     dpsi, dth, dphi, dx, dy = rates
-    fd = (attitude.thread_centre_of_mass(*angles(t + h)[3:], *angles(t + h)[:2], d)
-          - attitude.thread_centre_of_mass(*angles(t - h)[3:], *angles(t - h)[:2], d)) / (2 * h)
+    fd = (attitude.thread_center_of_mass(*angles(t + h)[3:], *angles(t + h)[:2], d)
+          - attitude.thread_center_of_mass(*angles(t - h)[3:], *angles(t - h)[:2], d)) / (2 * h)
     printed = [dx - d * np.cos(theta) * np.sin(psi) * dth - d * np.sin(theta) * np.cos(psi) * dpsi,
                dy + d * np.cos(theta) * np.cos(psi) * dth - d * np.sin(theta) * np.sin(psi) * dpsi,
                d * np.sin(theta) * dth]
@@ -237,7 +237,7 @@ def test_linear_step_response_matches_python_control():
     run = control.simulate_pid(loop, 0.0, 0.0, 300.0, output_interval=0.5)
     # Derivative on the measurement: r → ψ is B0 (Kp s + Ki) / (J s³ + B0 Kd s² + B0 Kp s + B0 Ki).
     sys = ct.tf(B0 * np.array([kp, ki]), control.closed_loop_polynomial(J, B0, kp, ki, kd))
-    ref = ct.forced_response(sys, run.t, 0.01 * np.ones_like(run.t)).outputs
+    ref = ct.forced_response(sys, run.time, 0.01 * np.ones_like(run.time)).outputs
     assert_allclose(run.psi, ref, atol=1e-9)       # solve_ivp rtol 1e-9 on a 0.01 rad step
 
 
@@ -301,11 +301,11 @@ def test_gain_reading_scales():
     (lambda: attitude.amplitude_for_period(1.0, J, M1, B0), "small-angle period"),
     (lambda: attitude.Mockup(0.0, B0), "inertia"),
     (lambda: attitude.Mockup(J, np.nan), "field"),
-    (lambda: attitude.thread_centre_of_mass(0, 0, 0, 0, -0.1), "cm_offset"),
+    (lambda: attitude.thread_center_of_mass(0, 0, 0, 0, -0.1), "cm_offset"),
     (lambda: control.PidLoop(J, B0, 0.1, 0.5, 0.5, allocation="approx"), "allocation"),
     (lambda: control.PidLoop(J, B0, 0.1, 0.5, 0.5, moment_limit=0.0), "moment_limit"),
     (lambda: control.PidLoop(J, -B0, 0.1, 0.5, 0.5), "field"),
-    (lambda: control.simulate_pid(control.PidLoop(J, B0, 0.1, 0.5, 0.5), 0.0, 0.0, -1.0), "t_end"),
+    (lambda: control.simulate_pid(control.PidLoop(J, B0, 0.1, 0.5, 0.5), 0.0, 0.0, -1.0), "duration"),
     (lambda: control.body_field_exact(0.1, [1.0, 0.0]), "world_field"),
     (lambda: control.gain_reading_scale("furlongs", B0, 0.4), "reading"),
     (lambda: control.integral_gain_limit(J, B0, 0.0, 0.5), "kp"),

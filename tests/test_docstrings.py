@@ -62,3 +62,39 @@ def test_physics_modules_do_not_import_plotting_or_io():
 ])
 def test_the_source_rule_takes_the_five_sources(line, cites):
     assert bool(SOURCE_LINE.search(line)) is cites
+
+
+#: The book's vocabulary (DESIGN.md, Conventions): one word per concept in public names.
+#: ``t`` stays allowed as the first argument of a ``solve_ivp`` right-hand side.
+GLOSSARY_BANNED = {"centre": "center", "circle": "round", "psi0": "initial_angle", "omega0": "initial_rate",
+                   "t_end": "duration", "omega": "rate"}
+FAMILIES = ["magbench.fields", "magbench.earth", "magbench.hardware", "magbench.dynamics", "magbench.control",
+            "magbench.estimation", "magbench.rotations", "magbench.sim.bench", "magbench.sim.pid_loop"]
+
+
+def _public_words():
+    import dataclasses
+
+    for name in FAMILIES:
+        module = importlib.import_module(name)
+        for public in module.__all__:
+            obj = getattr(module, public)
+            yield f"{name}.{public}", public
+            if dataclasses.is_dataclass(obj):
+                for f in dataclasses.fields(obj):
+                    yield f"{name}.{public}.{f.name}", f.name
+            elif callable(obj):
+                try:
+                    params = inspect.signature(obj).parameters
+                except (TypeError, ValueError):
+                    continue
+                for p in params:
+                    yield f"{name}.{public}({p})", p
+
+
+def test_public_names_use_the_glossary():
+    """Public names and parameters say center (not centre), round (not circle), time,
+    rate, initial_angle, initial_rate, duration: a test no rename can slip past."""
+    wrong = [f"{where}: use {GLOSSARY_BANNED[w]!r} for {w!r}" for where, word in _public_words()
+             for w in GLOSSARY_BANNED if w in word.split("_") or word == w]
+    assert not wrong, "\n".join(wrong)

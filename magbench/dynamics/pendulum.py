@@ -11,7 +11,7 @@ from scipy.special import ellipk
 
 from .._validate import as_finite, as_in_range, as_nonnegative, as_positive
 
-__all__ = ["two_coil_torque", "Mockup", "euler_313_matrix", "thread_centre_of_mass", "body_rates_313",
+__all__ = ["two_coil_torque", "Mockup", "euler_313_matrix", "thread_center_of_mass", "body_rates_313",
            "pendulum_rhs", "two_coil_rhs", "pendulum_energy", "natural_frequency", "small_angle_period",
            "pendulum_period", "pendulum_peak_rate", "field_for_period", "amplitude_for_period"]
 
@@ -108,7 +108,7 @@ def euler_313_matrix(psi, theta, phi):
     return rz(psi) @ rx @ rz(phi)
 
 
-def thread_centre_of_mass(x, y, psi, theta, cm_offset):
+def thread_center_of_mass(x, y, psi, theta, cm_offset):
     r"""Position of the mock-up's centre of mass C in the fixed axes.
 
     Parameters
@@ -132,7 +132,7 @@ def thread_centre_of_mass(x, y, psi, theta, cm_offset):
 
     Examples
     --------
-    >>> np.round(thread_centre_of_mass(0.0, 0.0, 0.0, 0.0, 0.1), 12) + 0.0
+    >>> np.round(thread_center_of_mass(0.0, 0.0, 0.0, 0.0, 0.1), 12) + 0.0
     array([ 0. ,  0. , -0.1])
     """
     d = as_nonnegative("cm_offset", cm_offset, unit="m")
@@ -199,7 +199,7 @@ def pendulum_rhs(t, state, params):
     Notes
     -----
     Thesis eqs. (34)–(35). Use as
-    ``solve_ivp(pendulum_rhs, (0, t_end), (psi0, 0.0), args=(Mockup(...),))``.
+    ``solve_ivp(pendulum_rhs, (0, duration), (initial_angle, 0.0), args=(Mockup(...),))``.
 
     Examples
     --------
@@ -242,15 +242,15 @@ def two_coil_rhs(t, state, params):
                      / params.inertia])
 
 
-def pendulum_energy(psi, omega, inertia, moment, field):
+def pendulum_energy(psi, rate, inertia, moment, field):
     r"""Total energy of the one-coil mock-up, conserved by eq. (35).
 
     Parameters
     ----------
     psi : array_like
         Angle from the field to the dipole [rad].
-    omega : array_like
-        Rate about the vertical [rad/s].
+    rate : array_like
+        Rate ω about the vertical [rad/s].
     inertia : array_like
         J [kg·m²].
     moment : array_like
@@ -273,7 +273,7 @@ def pendulum_energy(psi, omega, inertia, moment, field):
     >>> round(float(pendulum_energy(0.0, 0.2, 0.005, 0.4, 1e-4)), 12)   # ½Jω² − mB
     6e-05
     """
-    return 0.5 * inertia * np.asarray(omega) ** 2 - moment * field * np.cos(psi)
+    return 0.5 * inertia * np.asarray(rate) ** 2 - moment * field * np.cos(psi)
 
 
 def natural_frequency(inertia, moment, field):

@@ -44,7 +44,7 @@ def compute_geometry(psi, theta, phi, cm_offset, mass, field, moment):
 
     r = attitude.euler_313_matrix(psi, theta, phi)
     a = np.zeros(3)
-    c = attitude.thread_centre_of_mass(0.0, 0.0, psi, theta, cm_offset)
+    c = attitude.thread_center_of_mass(0.0, 0.0, psi, theta, cm_offset)
     b0 = np.array([field, 0.0, 0.0])
     m_vec = moment * r[:, 0]                       # coil 1 along x'
     torque = np.cross(m_vec, b0)
@@ -377,7 +377,7 @@ def compute_sweep(inertia, field, moment, initial_angle, duration, hypothesis_sc
                                        method="RK45" if scale < 100 else "LSODA")
             poles = control.closed_loop_poles(inertia, field, scale * kp, scale * ki, scale * kd)
             series.append(Series(f"{tag}: Kp = {kp:g}, Ki = {ki:g}, Kd = {kd:g}", {
-                "t": ("s", run.t), "psi": ("rad", run.psi), "omega": ("rad/s", run.omega),
+                "t": ("s", run.time), "psi": ("rad", run.psi), "omega": ("rad/s", run.rate),
                 "command_fraction": ("1", run.command / loop.moment_limit),
                 "max_real_pole": ("1/s", [poles[0].real])}))
     return FigureData("", "", "", {}, series, extra={"scale": hypothesis_scale})
@@ -664,7 +664,7 @@ def compute_step_response(inertia, field, moment, bandwidth, sample_interval, sm
             else:
                 r = control.simulate_pid(loop, 0.0, 0.0, duration, output_interval=0.5,
                                          sample_interval=sample_interval if label.startswith("sampled") else None)
-                t, psi, u = r.t, r.psi, r.command
+                t, psi, u = r.time, r.psi, r.command
             cols = {"t": ("s", t), "psi": ("rad", psi)}
             if loop is not None:
                 cols["command"] = ("A m^2", u)

@@ -275,7 +275,7 @@ def _angular_acceleration(psi, omega, m1, m2, field, inertia, stiffness, neutral
     return torque / inertia
 
 
-def plant_step(psi, omega, moment_1, moment_2, dt, *, field, inertia, thread_stiffness=0.0,
+def plant_step(psi, rate, moment_1, moment_2, dt, *, field, inertia, thread_stiffness=0.0,
                thread_neutral_angle=0.0):
     r"""Advance the mock-up by one sample with the coil moments held (classical RK4).
 
@@ -283,8 +283,8 @@ def plant_step(psi, omega, moment_1, moment_2, dt, *, field, inertia, thread_sti
     ----------
     psi : array_like
         Angle from the field to coil 1's axis [rad].
-    omega : array_like
-        Rate about the vertical [rad/s].
+    rate : array_like
+        Rate ω about the vertical [rad/s].
     moment_1, moment_2 : array_like
         Moments of coil 1 and coil 2, held over the step [A·m²].
     dt : float
@@ -300,7 +300,7 @@ def plant_step(psi, omega, moment_1, moment_2, dt, *, field, inertia, thread_sti
 
     Returns
     -------
-    psi, omega : ndarray
+    psi, rate : ndarray
         State after the step [rad], [rad/s].
 
     Notes
@@ -317,7 +317,7 @@ def plant_step(psi, omega, moment_1, moment_2, dt, *, field, inertia, thread_sti
     -0.00024
     """
     args = (moment_1, moment_2, field, inertia, thread_stiffness, thread_neutral_angle)
-    h = dt
+    h, omega = dt, rate
     k1p, k1w = omega, _angular_acceleration(psi, omega, *args)
     k2p = omega + 0.5 * h * k1w
     k2w = _angular_acceleration(psi + 0.5 * h * k1p, k2p, *args)

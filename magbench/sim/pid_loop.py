@@ -127,7 +127,7 @@ def pid_continuous_rhs(t, state, loop):
     -----
     Thesis eqs. (36)–(38): u = sat(K_p e + K_i ∫e + K_d ė),
     e = ψ_des − ψ, ė = −ω (the gyro rate: derivative on the measurement, no kick).
-    Use as ``solve_ivp(pid_continuous_rhs, span, (psi0, omega0, 0.0), args=(loop,))``.
+    Use as ``solve_ivp(pid_continuous_rhs, span, (initial_angle, initial_rate, 0.0), args=(loop,))``.
     The anti-windup scheme is ours (Åström and Hägglund, back-calculation); the thesis
     states none.
 
@@ -151,15 +151,15 @@ def pid_continuous_rhs(t, state, loop):
 class ClosedLoopResult:
     """A closed-loop run: arrays over time (SI)."""
 
-    t: np.ndarray          #: time [s]
+    time: np.ndarray       #: time [s]
     psi: np.ndarray        #: angle from the field [rad]
-    omega: np.ndarray      #: rate [rad/s]
+    rate: np.ndarray       #: rate [rad/s]
     integral: np.ndarray   #: error integral [rad·s]
     command: np.ndarray    #: saturated PID output u [A·m²]
     torque: np.ndarray     #: torque about the vertical [N·m]
 
 
-def simulate_pid(loop, psi0, omega0, t_end, *, sample_interval=None, output_interval=0.1,
+def simulate_pid(loop, initial_angle, initial_rate, duration, *, sample_interval=None, output_interval=0.1,
                  method="RK45"):
     r"""Run the closed loop from an initial state, continuous or sampled.
 
@@ -167,9 +167,9 @@ def simulate_pid(loop, psi0, omega0, t_end, *, sample_interval=None, output_inte
     ----------
     loop : PidLoop
         Loop parameters [SI].
-    psi0, omega0 : float
+    initial_angle, initial_rate : float
         Initial angle [rad] and rate [rad/s]; the integral starts at 0.
-    t_end : float
+    duration : float
         Duration [s], > 0.
     sample_interval : float, optional
         Controller sample interval Δt [s] (the Arduino loop): the PID runs as
@@ -201,12 +201,12 @@ def simulate_pid(loop, psi0, omega0, t_end, *, sample_interval=None, output_inte
     """
     from scipy.integrate import solve_ivp
 
-    psi0, omega0 = float(as_finite("psi0", psi0)), float(as_finite("omega0", omega0))
-    t_end = float(as_positive("t_end", t_end, unit="s"))
+    initial_angle, initial_rate = float(as_finite("initial_angle", initial_angle)), float(as_finite("initial_rate", initial_rate))
+    duration = float(as_positive("duration", duration, unit="s"))
     out = float(as_positive("output_interval", output_interval, unit="s"))
     if sample_interval is None:
-        t = np.linspace(0.0, t_end, int(round(t_end / out)) + 1)
-        sol = solve_ivp(pid_continuous_rhs, (0.0, t_end), [psi0, omega0, 0.0], args=(loop,),
+        t = np.linspace(0.0, duration, int(round(duration / out)) + 1)
+        sol = solve_ivp(pid_continuous_rhs, (0.0, duration), [initial_angle, initial_rate, 0.0], args=(loop,),
                         t_eval=t, rtol=1e-9, atol=1e-12, max_step=min(out, 1.0), method=method)
         if not sol.success:
             raise RuntimeError(f"solve_ivp failed: {sol.message}")
@@ -215,9 +215,9 @@ def simulate_pid(loop, psi0, omega0, t_end, *, sample_interval=None, output_inte
         command = np.clip(raw, -loop.moment_limit, loop.moment_limit)
     else:
         dt = float(as_positive("sample_interval", sample_interval, unit="s"))
-        n = int(round(t_end / dt))
+        n = int(round(duration / dt))
         every = max(1, int(round(out / dt)))
-        x = np.array([psi0, omega0])
+        x = np.array([initial_angle, initial_rate])
         integral_k, h = 0.0, dt / 4
         rows = []
         for k in range(n + 1):
