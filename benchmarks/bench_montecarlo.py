@@ -50,8 +50,8 @@ def _agreement(setup, p, duration):
     kwargs = dict(duration=duration, release_angle=-0.3, release_rate=0.01, moment_scale=[1.03, 0.97],
                   thread_stiffness=p["bench_thread_stiffness"])
     vec = bench.simulate_bench(setup, np.pi / 3, sensor_errors=(g, m), **kwargs)
-    _, psi, omega, est = bench.simulate_bench_reference(setup, np.pi / 3, sensor_errors=(g[:, 0], m[:, 0]),
-                                                        **kwargs)
+    ref = bench.simulate_bench_reference(setup, np.pi / 3, sensor_errors=(g[:, 0], m[:, 0]), **kwargs)
+    psi, omega = ref.psi, ref.rate
     return float(np.max(np.abs(vec.psi[:, 0] - psi))), float(np.max(np.abs(vec.rate[:, 0] - omega)))
 
 
@@ -73,10 +73,10 @@ def main(members=1000, peer_members=2, repeats=3):
     for j in range(peer_members):
         g, m = bench.draw_sensor_errors(setup, steps, 1, rng)
         bench.simulate_bench_reference(setup, np.pi / 3, duration=p["bench_duration"],
-                                       release_angle=run.inputs["release_angle"][j],
-                                       release_rate=run.inputs["release_rate"][j],
-                                       moment_scale=run.inputs["moment_scale"][j],
-                                       thread_stiffness=run.inputs["thread_stiffness"][j],
+                                       release_angle=run.params["release_angle"][j],
+                                       release_rate=run.params["release_rate"][j],
+                                       moment_scale=run.params["moment_scale"][j],
+                                       thread_stiffness=run.params["thread_stiffness"][j],
                                        sensor_errors=(g[:, 0], m[:, 0]))
     peer_per_member = (time.perf_counter() - t0) / peer_members
     peer = peer_per_member * members

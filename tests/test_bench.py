@@ -24,9 +24,10 @@ def test_vectorised_loop_matches_solve_ivp_member_by_member():
     run = bench.simulate_bench(setup, np.pi / 3, duration=20.0, release_angle=angles, release_rate=rates,
                                moment_scale=scale, thread_stiffness=kappa)
     for j in range(3):
-        t, psi, omega, est = bench.simulate_bench_reference(
+        ref = bench.simulate_bench_reference(
             setup, np.pi / 3, duration=20.0, release_angle=angles[j], release_rate=rates[j],
             moment_scale=scale[j], thread_stiffness=kappa[j])
+        t, psi, omega, est = ref.time, ref.psi, ref.rate, ref.estimate
         assert_allclose(run.time, t, rtol=0, atol=1e-12)
         # RK4's local error is ~(omega_n dt)^5 ~ 1e-14 rad per step; solve_ivp's rtol
         # 1e-10 over 2000 intervals bounds the difference at ~1e-9 rad.
@@ -41,8 +42,8 @@ def test_same_sensor_errors_give_the_same_run_in_both_implementations():
     g, m = bench.draw_sensor_errors(SETUP, steps, 1, np.random.default_rng(3))
     run = bench.simulate_bench(SETUP, 2 * np.pi / 3, duration=5.0, release_angle=0.3, sensor_errors=(g, m),
                                window=1.0)
-    _, psi, _, _ = bench.simulate_bench_reference(SETUP, 2 * np.pi / 3, duration=5.0, release_angle=0.3,
-                                                  sensor_errors=(g[:, 0], m[:, 0]))
+    psi = bench.simulate_bench_reference(SETUP, 2 * np.pi / 3, duration=5.0, release_angle=0.3,
+                                         sensor_errors=(g[:, 0], m[:, 0])).psi
     assert_allclose(run.psi[:, 0], psi, rtol=0, atol=1e-9)   # as above
 
 
@@ -63,7 +64,7 @@ def test_without_control_or_thread_the_mock_up_keeps_its_rate():
     setup = replace(SETUP, kp=0.0, ki=0.0, kd=0.0, thread_stiffness=0.0)
     run = bench.simulate_bench(setup, 1.0, duration=10.0, release_angle=0.5, release_rate=0.03,
                                rng=np.random.default_rng(1), window=1.0)
-    assert np.all(run.moments == 0.0)
+    assert np.all(run.inputs == 0.0)          # both coils' moments
     assert_allclose(run.rate[:, 0], 0.03, rtol=0, atol=1e-15)      # exactly: no force
     assert_allclose(run.psi[:, 0], 0.5 + 0.03 * run.time, rtol=0, atol=1e-13)  # summation rounding
 
@@ -106,19 +107,19 @@ def test_monte_carlo_is_reproducible_from_its_seed():
     c = bench.monte_carlo(SETUP, 1.0, seed=12, **kw)
     assert np.array_equal(a.psi, b.psi) and np.array_equal(a.error_band, b.error_band)
     assert not np.array_equal(a.psi, c.psi)
-    assert np.all(np.abs(a.inputs["moment_scale"] - 1.0) <= 0.05)
-    assert np.all(np.abs(a.inputs["release_angle"] - 1.0) <= 1.0)
+    assert np.all(np.abs(a.params["moment_scale"] - 1.0) <= 0.05)
+    assert np.all(np.abs(a.params["release_angle"] - 1.0) <= 1.0)
 
 
 def test_monte_carlo_release_centre_and_mean_rate():
     kw = dict(members=200, duration=0.1, moment_tolerance=0.05, release_angle_spread=0.5,
               release_rate_std=0.01, thread_stiffness_factor=2.0, window=0.05)
     run = bench.monte_carlo(SETUP, 2.0, seed=3, release_angle=-0.4, release_rate=0.1, **kw)
-    assert np.all(np.abs(run.inputs["release_angle"] + 0.4) <= 0.5)
-    assert abs(np.mean(run.inputs["release_rate"]) - 0.1) < 0.005
+    assert np.all(np.abs(run.params["release_angle"] + 0.4) <= 0.5)
+    assert abs(np.mean(run.params["release_rate"]) - 0.1) < 0.005
     # The default centre is the target, as before.
     default = bench.monte_carlo(SETUP, 2.0, seed=3, **kw)
-    assert np.all(np.abs(default.inputs["release_angle"] - 2.0) <= 0.5)
+    assert np.all(np.abs(default.params["release_angle"] - 2.0) <= 0.5)
 
 
 @pytest.mark.parametrize("figure_id", ["thesis-fig19", "thesis-fig20"])

@@ -103,7 +103,7 @@ def dipole_allocation(desired_moment, field_direction):
     Thesis §4.1. With a unit b perpendicular to z, the torque of M
     is :math:`(\mathbf M\times\mathbf B)_z = -|\mathbf B|\,m_z`: the demand is realised
     exactly, with a minus sign that eq. (38) compensates by flipping the sign of (37)
-    (inventory audit A38).
+    (the thesis does not say so).
 
     Examples
     --------

@@ -32,8 +32,8 @@ def closed_loop_polynomial(inertia, field, kp, ki, kd):
     Notes
     -----
     Thesis eqs. (36)–(38) linearised about ψ = ψ_des with exact allocation and no
-    saturation: the plant is a pure double integrator :math:`B_0/(J s^2)` (inventory
-    audit A40).
+    saturation: the plant is a pure double integrator :math:`B_0/(J s^2)`; the thesis
+    does not linearise its loop.
 
     Examples
     --------
@@ -66,7 +66,8 @@ def closed_loop_poles(inertia, field, kp, ki, kd):
 
     Notes
     -----
-    Thesis eqs. (36)–(38) linearised (inventory audit A40).
+    Thesis eqs. (36)–(38) linearised as in :func:`closed_loop_polynomial`; the thesis
+    does not analyse its loop's poles.
 
     Examples
     --------
@@ -100,7 +101,7 @@ def integral_gain_limit(inertia, field, kp, kd):
     Notes
     -----
     Not in the thesis: the stability condition its gains (thesis §4.1) violate in
-    SI by a factor of 25–160 (inventory audit A40).
+    SI by a factor of 25–160 (the thesis states no units for its gains).
 
     Examples
     --------

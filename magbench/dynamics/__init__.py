@@ -7,13 +7,13 @@ Re-exports the public names of its modules.
 
 from .energy_exchange import momentum_exchange_energy_ratio, thesis_energy_ratio
 from .pendulum import (Mockup, amplitude_for_period, body_rates_313, euler_313_matrix, field_for_period,
-                       natural_frequency, pendulum_energy, pendulum_peak_rate, pendulum_period, pendulum_rhs,
+                       mockup_rhs, natural_frequency, pendulum_energy, pendulum_peak_rate, pendulum_period, pendulum_rhs,
                        small_angle_period, thread_center_of_mass, two_coil_rhs, two_coil_torque)
 from .swing import oscillation_field_h
 from .torques import magnetic_torque, magnetic_torque_from_h, perpendicular_moment
 
 __all__ = ["momentum_exchange_energy_ratio", "thesis_energy_ratio", "two_coil_torque", "Mockup",
-           "euler_313_matrix", "thread_center_of_mass", "body_rates_313", "pendulum_rhs", "two_coil_rhs",
+           "euler_313_matrix", "thread_center_of_mass", "body_rates_313", "pendulum_rhs", "two_coil_rhs", "mockup_rhs",
            "pendulum_energy", "natural_frequency", "small_angle_period", "pendulum_period",
            "pendulum_peak_rate", "field_for_period", "amplitude_for_period", "magnetic_torque",
            "magnetic_torque_from_h", "perpendicular_moment", "oscillation_field_h"]

@@ -12,8 +12,8 @@ from scipy.special import ellipk
 from .._validate import as_finite, as_in_range, as_nonnegative, as_positive
 
 __all__ = ["two_coil_torque", "Mockup", "euler_313_matrix", "thread_center_of_mass", "body_rates_313",
-           "pendulum_rhs", "two_coil_rhs", "pendulum_energy", "natural_frequency", "small_angle_period",
-           "pendulum_period", "pendulum_peak_rate", "field_for_period", "amplitude_for_period"]
+           "pendulum_rhs", "two_coil_rhs", "mockup_rhs", "pendulum_energy", "natural_frequency",
+           "small_angle_period", "pendulum_period", "pendulum_peak_rate", "field_for_period", "amplitude_for_period"]
 
 
 def two_coil_torque(psi, moment_1, moment_2, field):
@@ -53,19 +53,31 @@ class Mockup:
 
     Attributes are SI: ``inertia`` J about the vertical [kg·m²] (> 0), ``field`` B0 [T]
     (≥ 0), ``moment_1`` and ``moment_2`` the dipoles of coil 1 (along x') and coil 2
-    (along y') [A·m²]. Checked once here, so the right-hand sides need no checks.
+    (along y') [A·m²], ``thread_stiffness`` the thread's torsion constant κ [N·m/rad]
+    (≥ 0, default 0 as in the thesis's equations) and ``thread_neutral_angle`` the angle
+    ψ at which the thread is untwisted [rad]. Checked once here, so the right-hand sides
+    need no checks. Every attribute may be an array of Monte Carlo members.
+
+    This is the one plant of chapter 4: the free swing (:func:`pendulum_rhs`), the coils
+    at constant moments (:func:`two_coil_rhs`), and the PID loop and the bench of
+    :mod:`magbench.sim`, which hold the coil moments over a sample
+    (:func:`mockup_rhs`), all integrate it.
     """
 
     inertia: float
     field: float
     moment_1: float = 0.0
     moment_2: float = 0.0
+    thread_stiffness: float = 0.0
+    thread_neutral_angle: float = 0.0
 
     def __post_init__(self):
         as_positive("inertia", self.inertia, unit="kg·m²")
         as_nonnegative("field", self.field, unit="T")
         as_finite("moment_1", self.moment_1)
         as_finite("moment_2", self.moment_2)
+        as_nonnegative("thread_stiffness", self.thread_stiffness, unit="N·m/rad")
+        as_finite("thread_neutral_angle", self.thread_neutral_angle)
 
 
 def euler_313_matrix(psi, theta, phi):
@@ -88,7 +100,7 @@ def euler_313_matrix(psi, theta, phi):
     -----
     Thesis §4.1, Fig. 10: the angles whose rates give the thesis's
     p, q, r. The matrix itself is not printed; it is the one that reproduces the
-    printed centre-of-mass velocity (inventory audit A36).
+    printed centre-of-mass velocity (thesis §4.1, the velocity of C before eq. (33)).
 
     Examples
     --------
@@ -189,7 +201,8 @@ def pendulum_rhs(t, state, params):
     state : array_like, shape (2, ...)
         (ψ [rad], ω = ψ̇ [rad/s]).
     params : Mockup
-        Plant [SI]: inertia J, field B0 and coil-1 moment m (``moment_2`` is ignored).
+        Plant [SI]: inertia J, field B0 and coil-1 moment m (``moment_2`` is ignored; the
+        thread's torsion is added when the plant has one).
 
     Returns
     -------
@@ -206,8 +219,47 @@ def pendulum_rhs(t, state, params):
     >>> pendulum_rhs(0.0, [0.5 * np.pi, 0.0], Mockup(0.005, 1e-4, 0.4))
     array([ 0.   , -0.008])
     """
-    psi, omega = state[0], state[1]
-    return np.array([omega, two_coil_torque(psi, params.moment_1, 0.0, params.field) / params.inertia])
+    return mockup_rhs(t, state, (params.moment_1, 0.0), params)
+
+
+def mockup_rhs(t, state, moments, plant):
+    r"""Right-hand side of eq. (36) with the coil moments as inputs, plus the thread's torsion.
+
+    Parameters
+    ----------
+    t : float
+        Time [s] (unused; solve_ivp passes it).
+    state : array_like, shape (2, ...)
+        (ψ [rad], ω [rad/s]); ψ is the angle from the field to coil 1's axis.
+    moments : tuple of array_like
+        (m₁, m₂): the moments of coil 1 and coil 2 [A·m²], held while this is integrated
+        (the controller's zero-order hold).
+    plant : Mockup
+        Plant [SI]: inertia, field and thread (its ``moment_1``, ``moment_2`` are ignored).
+
+    Returns
+    -------
+    ndarray, shape (2, ...)
+        :math:`(\omega,\ [-B_0(m_1\sin\psi + m_2\cos\psi) - \kappa(\psi - \psi_t)]/J)`
+        [rad/s, rad/s²].
+
+    Notes
+    -----
+    Thesis eq. (36), J ω̇ = −B0(m1 sin ψ + m2 cos ψ), plus the torsion −κ(ψ − ψ_t) of
+    the thread, which the thesis names as a cause of the bench's error (thesis §4.4) but
+    does not quantify. Use as ``solve_ivp(mockup_rhs, span, (angle, rate),
+    args=((m1, m2), plant))`` or with :func:`magbench.sim.rk4_step`.
+
+    Examples
+    --------
+    >>> mockup_rhs(0.0, [0.1, 0.0], (0.0, 0.0), Mockup(0.005, 1e-4, thread_stiffness=1e-4))
+    array([ 0.   , -0.002])
+    """
+    psi, rate = state[0], state[1]
+    m1, m2 = moments
+    twist = psi - plant.thread_neutral_angle
+    torque = two_coil_torque(psi, m1, m2, plant.field) - plant.thread_stiffness * twist
+    return np.array([rate, torque / plant.inertia])
 
 
 def two_coil_rhs(t, state, params):
@@ -220,26 +272,25 @@ def two_coil_rhs(t, state, params):
     state : array_like, shape (2, ...)
         (ψ [rad], ω [rad/s]); ψ is the angle from the field to coil 1's axis.
     params : Mockup
-        Plant [SI]: inertia, field and both coil moments.
+        Plant [SI]: inertia, field, both coil moments and the thread.
 
     Returns
     -------
     ndarray, shape (2, ...)
-        :math:`(\omega,\ -B_0(m_1\sin\psi + m_2\cos\psi)/J)` [rad/s, rad/s²].
+        :math:`(\omega,\ -B_0(m_1\sin\psi + m_2\cos\psi)/J)` [rad/s, rad/s²] (the
+        thread's torsion added when ``params`` has one).
 
     Notes
     -----
-    Thesis eq. (36). The equilibrium is ψ = −atan2(m₂, m₁): the net
-    dipole lines up with the field.
+    Thesis eq. (36): :func:`mockup_rhs` with the plant's own moments. The equilibrium
+    is ψ = −atan2(m₂, m₁): the net dipole lines up with the field.
 
     Examples
     --------
     >>> two_coil_rhs(0.0, [0.0, 0.0], Mockup(0.005, 1e-4, 0.0, 0.4))
     array([ 0.   , -0.008])
     """
-    psi, omega = state[0], state[1]
-    return np.array([omega, two_coil_torque(psi, params.moment_1, params.moment_2, params.field)
-                     / params.inertia])
+    return mockup_rhs(t, state, (params.moment_1, params.moment_2), params)
 
 
 def pendulum_energy(psi, rate, inertia, moment, field):

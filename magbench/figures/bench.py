@@ -90,8 +90,8 @@ def compute_trace(psi_des, release_angle, release_rate, envelope_members, **p):
     series = [
         Series("nominal run", {"time": ("s", run.time), "psi": ("deg", np.degrees(run.psi[:, 0])),
                                "psi_filtered": ("deg", np.degrees(run.estimate[:, 0])),
-                               "moment_1": ("A m^2", run.moments[:, 0, 0]),
-                               "moment_2": ("A m^2", run.moments[:, 0, 1])}),
+                               "moment_1": ("A m^2", run.moment_1[:, 0]),
+                               "moment_2": ("A m^2", run.moment_2[:, 0])}),
         Series(f"Monte Carlo, {n_env} members, 5-95 %", {
             "time": ("s", mc.time), "psi_low": ("deg", lo), "psi_high": ("deg", hi)}),
     ]
@@ -159,8 +159,8 @@ def compute_montecarlo(**p):
         series.append(Series(f"ψ_des = {np.degrees(target):.0f}°", {
             "error_band": ("deg", np.degrees(run.error_band)),
             "indicated_error_band": ("deg", np.degrees(run.indicated_error_band)),
-            "release_angle": ("deg", np.degrees(run.inputs["release_angle"])),
-            "thread_stiffness": ("N m/rad", run.inputs["thread_stiffness"])}))
+            "release_angle": ("deg", np.degrees(run.params["release_angle"])),
+            "thread_stiffness": ("N m/rad", run.params["thread_stiffness"])}))
     return FigureData("", "", "", {}, series,
                       extra={"measured_error": measurement("orientation-error").value})
 

@@ -5,7 +5,7 @@ vertical only. This module puts the physics modules together into the loop that 
 the bench's Arduino, one controller sample at a time, vectorised over Monte Carlo
 members (every state is an array of shape ``(members,)``):
 
-1. **Sensors** (:mod:`magbench.sensors`, MPU-6050 gyro and HMC5883L magnetometer). Both
+1. **Sensors** (:mod:`magbench.hardware.sensors`, MPU-6050 gyro and HMC5883L magnetometer). Both
    models are additive (reading = truth + error, the error independent of the truth),
    so their errors are drawn ahead, in blocks of samples, by calling the sensor
    functions on a zero signal; ``rng=None`` gives ideal sensors.
@@ -21,15 +21,16 @@ members (every state is an array of shape ``(members,)``):
    the PID output u is the torque per unit field, m_z = −u.
 5. **Driver**: Arduino ``analogWrite`` sets an 8-bit duty (255 levels each way, the L298
    sets the sign); the coil's mean current is duty·(U − drop)/R, with each coil's
-   measured resistance, and its moment follows from :mod:`magbench.magnetorquer`.
+   measured resistance, and its moment follows from :mod:`magbench.hardware`.
    Assumptions (ours): the PWM period (≈ 2 ms at the Arduino's 490 Hz) is far longer
    than the coil's L/R time and far shorter than the motion, so the torque is that of
    the mean current; the controller knows the nominal full-scale moment, the coils may
    differ from it (Monte Carlo moment spread).
-6. **Plant**: J ψ̈ = τ_coils + τ_thread, with τ_coils from thesis eq. (36)
-   (:func:`magbench.dynamics.two_coil_torque`) held over the sample (zero-order hold)
-   and the thread's torsion τ_thread = −κ(ψ − ψ_thread). One classical Runge–Kutta step
-   per sample; :func:`simulate_bench_reference` integrates the same loop with
+6. **Plant**: J ψ̈ = τ_coils + τ_thread, with τ_coils from thesis eq. (36) held over
+   the sample (zero-order hold) and the thread's torsion τ_thread = −κ(ψ − ψ_thread):
+   :func:`magbench.dynamics.mockup_rhs` of the setup's :attr:`BenchSetup.plant`. One
+   :func:`magbench.sim.rk4_step` per sample; :func:`simulate_bench_reference` integrates
+   the same plant after the same :func:`controller_step` with
    :func:`scipy.integrate.solve_ivp` instead, as an oracle.
 
 ψ is the angle from the horizontal field to coil 1's axis, counted positive in the
@@ -38,20 +39,24 @@ field the mock-up sees; :func:`horizontal_field` combines the simulator's field 
 horizontal background (the Earth's) at a given azimuth.
 
 The thesis's gains (K_p = 0.1, K_d = 0.5, K_i = 0.5, thesis §4.4) make the loop
-unstable when read in SI (inventory A40); the bench default gains here come from
+unstable when read in SI (the thesis states no units for them; see
+:func:`magbench.control.integral_gain_limit`); the bench default gains here come from
 :func:`magbench.control.pid_gains_for_triple_pole` with a bandwidth of ours.
 """
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .. import control, dynamics, estimation, hardware
+from .. import control, estimation, hardware
 from .._validate import as_finite, as_in_range, as_nonnegative, as_positive
 from ..constants import MU_0
+from ..dynamics.pendulum import Mockup, mockup_rhs
 from ..rotations import wrap_angle
+from .integrate import rk4_step
+from .result import SimulationResult
 
-__all__ = ["BenchSetup", "BenchRun", "controller_step", "horizontal_field", "coil_full_scale_moment",
+__all__ = ["BenchSetup", "controller_step", "horizontal_field", "coil_full_scale_moment",
            "quantise_duty", "plant_step", "simulate_bench", "simulate_bench_reference",
            "monte_carlo", "steady_error_band", "draw_sensor_errors"]
 
@@ -137,6 +142,12 @@ class BenchSetup:
         return replace(setup, **changes) if changes else setup
 
     @property
+    def plant(self):
+        """The mock-up on its thread (:class:`magbench.dynamics.Mockup`) [SI]."""
+        return Mockup(self.inertia, self.field, thread_stiffness=self.thread_stiffness,
+                      thread_neutral_angle=self.thread_neutral_angle)
+
+    @property
     def full_scale_moments(self):
         """Moments of the two coils at full duty, (m1, m2) [A·m²]."""
         return coil_full_scale_moment(self.supply_voltage - self.driver_voltage_drop,
@@ -147,22 +158,6 @@ class BenchSetup:
     def moment_limit(self):
         """Largest moment the controller commands: the weaker coil's full scale [A·m²]."""
         return float(np.min(self.full_scale_moments))
-
-
-@dataclass
-class BenchRun:
-    """What :func:`simulate_bench` returns; traces are sampled every ``record_interval``."""
-
-    time: np.ndarray            # (K,) [s]
-    psi: np.ndarray             # (K, members) true angle [rad]
-    rate: np.ndarray            # (K, members) true rate [rad/s]
-    estimate: np.ndarray        # (K, members) filtered angle [rad]
-    moments: np.ndarray         # (K, members, 2) coil moments applied from that sample on [A m^2]
-    psi_des: float              # target [rad]
-    window: float               # length of the final window of the error band [s]
-    error_band: np.ndarray      # (members,) max |psi - psi_des| over the final window [rad]
-    indicated_error_band: np.ndarray  # (members,) the same for the filtered angle [rad]
-    inputs: dict = field(default_factory=dict)   # per-member inputs (Monte Carlo)
 
 
 def horizontal_field(simulator_h, background_h=0.0, background_azimuth=0.0):
@@ -270,11 +265,6 @@ def quantise_duty(duty, levels):
     return np.rint(d * levels) / levels
 
 
-def _angular_acceleration(psi, omega, m1, m2, field, inertia, stiffness, neutral):
-    torque = dynamics.two_coil_torque(psi, m1, m2, field) - stiffness * (psi - neutral)
-    return torque / inertia
-
-
 def plant_step(psi, rate, moment_1, moment_2, dt, *, field, inertia, thread_stiffness=0.0,
                thread_neutral_angle=0.0):
     r"""Advance the mock-up by one sample with the coil moments held (classical RK4).
@@ -307,8 +297,10 @@ def plant_step(psi, rate, moment_1, moment_2, dt, *, field, inertia, thread_stif
     -----
     Thesis eq. (36), J ω̇ = −B0(m1 sin ψ + m2 cos ψ), plus the torsion −κ(ψ − ψ_thread)
     that the thesis names as a cause of the bench's error (thesis §4.4) but does not
-    quantify. The local error is O((ω_n dt)⁵) with ω_n ≈ 0.2 rad/s: ~1e-14 rad per 10 ms
-    step. No argument checks (inner loop).
+    quantify: :func:`magbench.dynamics.mockup_rhs` advanced by
+    :func:`magbench.sim.rk4_step`, the step :func:`simulate_bench` takes at every
+    sample. The local error is O((ω_n dt)⁵) with ω_n ≈ 0.2 rad/s: ~1e-14 rad per 10 ms
+    step.
 
     Examples
     --------
@@ -316,17 +308,10 @@ def plant_step(psi, rate, moment_1, moment_2, dt, *, field, inertia, thread_stif
     >>> round(float(w), 8)   # torque -B0 m2 = -1.2e-4 N m for 10 ms
     -0.00024
     """
-    args = (moment_1, moment_2, field, inertia, thread_stiffness, thread_neutral_angle)
-    h, omega = dt, rate
-    k1p, k1w = omega, _angular_acceleration(psi, omega, *args)
-    k2p = omega + 0.5 * h * k1w
-    k2w = _angular_acceleration(psi + 0.5 * h * k1p, k2p, *args)
-    k3p = omega + 0.5 * h * k2w
-    k3w = _angular_acceleration(psi + 0.5 * h * k2p, k3p, *args)
-    k4p = omega + h * k3w
-    k4w = _angular_acceleration(psi + h * k3p, k4p, *args)
-    return (psi + h / 6.0 * (k1p + 2.0 * (k2p + k3p) + k4p),
-            omega + h / 6.0 * (k1w + 2.0 * (k2w + k3w) + k4w))
+    plant = Mockup(inertia, field, thread_stiffness=thread_stiffness, thread_neutral_angle=thread_neutral_angle)
+    state = np.array(np.broadcast_arrays(psi, rate), dtype=float)
+    new = rk4_step(mockup_rhs, 0.0, state, dt, args=((moment_1, moment_2), plant))
+    return new[0], new[1]
 
 
 def draw_sensor_errors(setup, steps, members, rng):
@@ -516,8 +501,14 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
 
     Returns
     -------
-    BenchRun
-        Traces, the per-member error bands and the inputs.
+    SimulationResult
+        Traces every ``record_interval``, each of shape (K, members): states ``psi`` (the
+        true angle) [rad] and ``rate`` [rad/s], inputs ``moment_1`` and ``moment_2`` (the
+        coils' moments applied from that sample on) [A·m²], output ``estimate`` (the
+        filtered angle) [rad]; ``params``: ``psi_des``, ``window`` and the per-member
+        ``release_angle``, ``release_rate``, ``moment_scale``, ``thread_stiffness``;
+        ``summary``: per member, ``error_band`` max |ψ − ψ_des| over the final window and
+        ``indicated_error_band``, the same for the filtered angle [rad].
 
     Notes
     -----
@@ -540,20 +531,22 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
     steps, window, members, psi, omega, kappa, scale, every, g_err, m_err = _loop_inputs(
         setup, duration, window, members, release_angle, release_rate, moment_scale, thread_stiffness,
         rng, sensor_errors, record_interval)
-    dt = setup.sample_interval
-    b0, inertia, neutral = setup.field, setup.inertia, setup.thread_neutral_angle
+    dt, b0 = setup.sample_interval, setup.field
+    plant = replace(setup.plant, thread_stiffness=kappa)
     # Each member's actual full-scale moments (the controller divides by the nominal ones).
     full_actual = setup.full_scale_moments * scale                       # (members, 2)
     full_1, full_2 = np.ascontiguousarray(full_actual[:, 0]), np.ascontiguousarray(full_actual[:, 1])
 
     n_rec = steps // every + 1
-    rec = {k: np.empty((n_rec, members)) for k in ("psi", "rate", "estimate")}
-    rec_m = np.empty((n_rec, members, 2))
+    states = np.empty((2, n_rec, members))          # psi, rate
+    moments = np.empty((2, n_rec, members))         # moment_1, moment_2
+    estimates = np.empty((1, n_rec, members))
     band = np.zeros(members)
     band_est = np.zeros(members)
     first_in_window = int(np.ceil((steps * dt - window) / dt - 1e-9))
     estimate = None
     integral = np.zeros(members)
+    state = np.array([psi, omega])
     for start in range(0, steps, _BLOCK):
         count = min(_BLOCK, steps - start)
         if sensor_errors is not None:
@@ -562,6 +555,7 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
             g_blk, m_blk = draw_sensor_errors(setup, count, members, rng)
         for j in range(count):
             k = start + j
+            psi, omega = state
             gyro = omega + g_blk[j]
             bx = b0 * np.cos(psi) + m_blk[j, :, 0]
             by = -b0 * np.sin(psi) + m_blk[j, :, 1]
@@ -569,28 +563,24 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
                 setup, psi_des, gyro, bx, by, estimate, integral, full_1, full_2)
             if k % every == 0:
                 i = k // every
-                rec["psi"][i], rec["rate"][i], rec["estimate"][i] = psi, omega, estimate
-                rec_m[i, :, 0], rec_m[i, :, 1] = moment_1, moment_2
+                states[:, i], estimates[0, i], moments[:, i] = state, estimate, (moment_1, moment_2)
             if k >= first_in_window:
                 np.maximum(band, np.abs(wrap_angle(psi - psi_des)), out=band)
                 np.maximum(band_est, np.abs(wrap_angle(estimate - psi_des)), out=band_est)
-            psi, omega = plant_step(psi, omega, moment_1, moment_2, dt, field=b0,
-                                    inertia=inertia, thread_stiffness=kappa, thread_neutral_angle=neutral)
+            state = rk4_step(mockup_rhs, k * dt, state, dt, args=((moment_1, moment_2), plant))
     if steps % every == 0:
-        rec["psi"][-1], rec["rate"][-1], rec["estimate"][-1] = psi, omega, estimate
-        rec_m[-1, :, 0], rec_m[-1, :, 1] = moment_1, moment_2
+        states[:, -1], estimates[0, -1], moments[:, -1] = state, estimate, (moment_1, moment_2)
     else:
-        for key in rec:
-            rec[key] = rec[key][:-1]
-        rec_m = rec_m[:-1]
-    np.maximum(band, np.abs(wrap_angle(psi - psi_des)), out=band)
-    time = np.arange(rec["psi"].shape[0]) * every * dt
-    inputs = {"release_angle": _member_array("release_angle", release_angle, members),
+        states, estimates, moments = states[:, :-1], estimates[:, :-1], moments[:, :-1]
+    np.maximum(band, np.abs(wrap_angle(state[0] - psi_des)), out=band)
+    time = np.arange(states.shape[1]) * every * dt
+    params = {"psi_des": psi_des, "window": window,
+              "release_angle": _member_array("release_angle", release_angle, members),
               "release_rate": _member_array("release_rate", release_rate, members),
               "moment_scale": np.array(scale), "thread_stiffness": kappa}
-    return BenchRun(time=time, psi=rec["psi"], rate=rec["rate"], estimate=rec["estimate"],
-                    moments=rec_m, psi_des=psi_des, window=window, error_band=band,
-                    indicated_error_band=band_est, inputs=inputs)
+    return SimulationResult(time, states, moments, estimates, ("psi", "rate"), ("moment_1", "moment_2"),
+                            ("estimate",), params=params,
+                            summary={"error_band": band, "indicated_error_band": band_est})
 
 
 def simulate_bench_reference(setup, psi_des, *, duration, release_angle=0.0, release_rate=0.0,
@@ -619,8 +609,10 @@ def simulate_bench_reference(setup, psi_des, *, duration, release_angle=0.0, rel
 
     Returns
     -------
-    time, psi, omega, estimate : ndarray
-        At every sample and the final time [s], [rad], [rad/s], [rad].
+    SimulationResult
+        At every sample and the final time: states ``psi`` [rad] and ``rate`` [rad/s],
+        inputs ``moment_1``, ``moment_2`` [A·m²] (the last held to the end), output
+        ``estimate`` [rad], as :func:`simulate_bench` returns them for one member.
 
     Notes
     -----
@@ -634,8 +626,7 @@ def simulate_bench_reference(setup, psi_des, *, duration, release_angle=0.0, rel
     --------
     >>> from magbench.params import chapter_parameters
     >>> s = BenchSetup.from_parameters(chapter_parameters("ch04", overrides=""))
-    >>> t, p, w, e = simulate_bench_reference(s, 1.0, duration=0.05)
-    >>> t.shape
+    >>> simulate_bench_reference(s, 1.0, duration=0.05).psi.shape
     (6,)
     """
     from scipy.integrate import solve_ivp
@@ -646,14 +637,9 @@ def simulate_bench_reference(setup, psi_des, *, duration, release_angle=0.0, rel
     scale = np.broadcast_to(np.asarray(moment_scale, float), (2,))
     full_actual = setup.full_scale_moments * scale
     g_err, m_err = sensor_errors if sensor_errors is not None else (np.zeros(steps), np.zeros((steps, 2)))
-    b0, j = setup.field, setup.inertia
-
-    def rhs(t, y, m1, m2):
-        torque = -b0 * (m1 * np.sin(y[0]) + m2 * np.cos(y[0])) - kappa * (y[0] - setup.thread_neutral_angle)
-        return [y[1], torque / j]
-
+    b0, plant = setup.field, replace(setup.plant, thread_stiffness=kappa)
     state = np.array([float(release_angle), float(release_rate)])
-    out = np.empty((steps + 1, 3))
+    out = np.empty((steps + 1, 5))          # psi, rate, moment_1, moment_2, estimate
     estimate, integral = None, 0.0
     for k in range(steps):
         psi, omega = state
@@ -662,12 +648,14 @@ def simulate_bench_reference(setup, psi_des, *, duration, release_angle=0.0, rel
         by = -b0 * np.sin(psi) + m_err[k, 1]
         m1, m2, estimate, integral = controller_step(setup, psi_des, gyro, bx, by, estimate, integral,
                                                      full_actual[0], full_actual[1])
-        out[k] = psi, omega, estimate
-        sol = solve_ivp(rhs, (k * dt, (k + 1) * dt), state, args=(float(m1), float(m2)),
+        out[k] = psi, omega, m1, m2, estimate
+        sol = solve_ivp(mockup_rhs, (k * dt, (k + 1) * dt), state, args=((float(m1), float(m2)), plant),
                         rtol=rtol, atol=atol)
         state = sol.y[:, -1]
-    out[steps] = state[0], state[1], estimate
-    return np.arange(steps + 1) * dt, out[:, 0], out[:, 1], out[:, 2]
+    out[steps] = state[0], state[1], out[steps - 1, 2], out[steps - 1, 3], estimate
+    return SimulationResult(np.arange(steps + 1) * dt, out[:, :2].T, out[:, 2:4].T, out[:, 4:].T,
+                            ("psi", "rate"), ("moment_1", "moment_2"), ("estimate",),
+                            params={"psi_des": psi_des})
 
 
 def monte_carlo(setup, psi_des, *, members, seed, duration, moment_tolerance, release_angle_spread,
@@ -707,8 +695,9 @@ def monte_carlo(setup, psi_des, *, members, seed, duration, moment_tolerance, re
 
     Returns
     -------
-    BenchRun
-        All members; ``inputs`` holds the drawn values.
+    SimulationResult
+        All members, as :func:`simulate_bench` returns them; ``params`` holds the drawn
+        values.
 
     Notes
     -----
@@ -750,8 +739,8 @@ def steady_error_band(run, quantile=None):
 
     Parameters
     ----------
-    run : BenchRun
-        A simulated run [-].
+    run : SimulationResult
+        A run of :func:`simulate_bench` [-].
     quantile : float, optional
         Quantile over members in [0, 1] [-]; default: the per-member values.
 
@@ -767,8 +756,8 @@ def steady_error_band(run, quantile=None):
 
     Examples
     --------
-    >>> r = BenchRun(np.zeros(1), np.zeros((1, 2)), np.zeros((1, 2)), np.zeros((1, 2)),
-    ...              np.zeros((1, 2, 2)), 0.0, 1.0, np.array([0.1, 0.3]), np.zeros(2))
+    >>> r = SimulationResult(np.zeros(1), np.zeros((0, 1, 2)), np.zeros((0, 1, 2)), np.zeros((0, 1, 2)),
+    ...                      (), (), (), summary={"error_band": np.array([0.1, 0.3])})
     >>> round(float(steady_error_band(r, 0.5)), 6)
     0.2
     """

@@ -10,12 +10,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._validate import as_finite, as_positive
-from ..dynamics.pendulum import two_coil_torque
-
+from ..dynamics.pendulum import Mockup, mockup_rhs, two_coil_torque
 from ..control.allocation import ALLOCATIONS
 from ..control.pid import pid_step
+from .integrate import rk4_step
+from .result import SimulationResult
 
-__all__ = ["PidLoop", "loop_torque", "pid_continuous_rhs", "ClosedLoopResult", "simulate_pid"]
+__all__ = ["PidLoop", "loop_torque", "pid_continuous_rhs", "simulate_pid"]
+
+#: The old name of the simulations' one result type, still served by magbench.control.
+ClosedLoopResult = SimulationResult
 
 
 @dataclass(frozen=True)
@@ -50,6 +54,11 @@ class PidLoop:
         if self.tracking_time is not None:
             return float(self.tracking_time)
         return float(np.sqrt(self.kd / self.ki)) if self.kd > 0 and self.ki > 0 else 1.0
+
+    @property
+    def plant(self):
+        """The mock-up this loop controls (:class:`magbench.dynamics.Mockup`, no thread) [SI]."""
+        return Mockup(self.inertia, self.field)
 
     def __post_init__(self):
         as_positive("inertia", self.inertia, unit="kg·m²")
@@ -95,13 +104,18 @@ def loop_torque(psi, command, loop):
     >>> round(float(loop_torque(0.3, 0.2, loop)), 12)
     2e-05
     """
-    if loop.allocation == "exact":
+    return two_coil_torque(psi, *_allocated_moments(psi, command, loop.allocation), loop.field)
+
+
+def _allocated_moments(psi, command, allocation):
+    """Coil moments (m1, m2) [A·m²] for the PID command u [A·m²] at angle ψ [rad]."""
+    if allocation == "exact":
         bx, by = np.cos(psi), -np.sin(psi)
     else:
         bx, by = np.ones_like(psi), -np.asarray(psi)
     mz = -np.asarray(command)
     # M = (0, 0, m_z) × b with b_z = 0 (thesis §4.1): coil 1 gets −m_z b_y, coil 2 m_z b_x.
-    return two_coil_torque(psi, -mz * by, mz * bx, loop.field)
+    return -mz * by, mz * bx
 
 
 def pid_continuous_rhs(t, state, loop):
@@ -147,18 +161,6 @@ def pid_continuous_rhs(t, state, loop):
     return np.array([omega, loop_torque(psi, command, loop) / loop.inertia, rate])
 
 
-@dataclass(frozen=True)
-class ClosedLoopResult:
-    """A closed-loop run: arrays over time (SI)."""
-
-    time: np.ndarray       #: time [s]
-    psi: np.ndarray        #: angle from the field [rad]
-    rate: np.ndarray       #: rate [rad/s]
-    integral: np.ndarray   #: error integral [rad·s]
-    command: np.ndarray    #: saturated PID output u [A·m²]
-    torque: np.ndarray     #: torque about the vertical [N·m]
-
-
 def simulate_pid(loop, initial_angle, initial_rate, duration, *, sample_interval=None, output_interval=0.1,
                  method="RK45"):
     r"""Run the closed loop from an initial state, continuous or sampled.
@@ -184,13 +186,16 @@ def simulate_pid(loop, initial_angle, initial_rate, duration, *, sample_interval
 
     Returns
     -------
-    ClosedLoopResult
-        Time series [SI].
+    SimulationResult
+        Time series [SI]: states ``psi`` [rad], ``rate`` [rad/s] and ``integral``
+        [rad·s], input ``command`` (the saturated PID output u) [A·m²], output
+        ``torque`` about the vertical [N·m].
 
     Notes
     -----
-    Thesis eqs. (36)–(38) and Figs. 15–18. Not in the thesis: the sample interval and
-    anti-windup (inventory gaps G15–G17).
+    Thesis eqs. (36)–(38) and Figs. 15–18. Not in the thesis: it states neither the
+    controller's sample interval nor an anti-windup scheme. The sampled loop's plant
+    steps are :func:`magbench.sim.rk4_step`.
 
     Examples
     --------
@@ -201,13 +206,14 @@ def simulate_pid(loop, initial_angle, initial_rate, duration, *, sample_interval
     """
     from scipy.integrate import solve_ivp
 
-    initial_angle, initial_rate = float(as_finite("initial_angle", initial_angle)), float(as_finite("initial_rate", initial_rate))
+    initial_angle = float(as_finite("initial_angle", initial_angle))
+    initial_rate = float(as_finite("initial_rate", initial_rate))
     duration = float(as_positive("duration", duration, unit="s"))
     out = float(as_positive("output_interval", output_interval, unit="s"))
     if sample_interval is None:
         t = np.linspace(0.0, duration, int(round(duration / out)) + 1)
-        sol = solve_ivp(pid_continuous_rhs, (0.0, duration), [initial_angle, initial_rate, 0.0], args=(loop,),
-                        t_eval=t, rtol=1e-9, atol=1e-12, max_step=min(out, 1.0), method=method)
+        sol = solve_ivp(pid_continuous_rhs, (0.0, duration), [initial_angle, initial_rate, 0.0],
+                        args=(loop,), t_eval=t, rtol=1e-9, atol=1e-12, max_step=min(out, 1.0), method=method)
         if not sol.success:
             raise RuntimeError(f"solve_ivp failed: {sol.message}")
         psi, omega, integral = sol.y
@@ -218,7 +224,7 @@ def simulate_pid(loop, initial_angle, initial_rate, duration, *, sample_interval
         n = int(round(duration / dt))
         every = max(1, int(round(out / dt)))
         x = np.array([initial_angle, initial_rate])
-        integral_k, h = 0.0, dt / 4
+        integral_k, h, plant = 0.0, dt / 4, loop.plant
         rows = []
         for k in range(n + 1):
             u, new_integral = pid_step(loop.target - x[0], -x[1], integral_k, dt, loop.kp, loop.ki,
@@ -231,15 +237,15 @@ def simulate_pid(loop, initial_angle, initial_rate, duration, *, sample_interval
             if k == n:
                 break
 
-            def f(y, u=u):
-                return np.array([y[1], loop_torque(y[0], u, loop) / loop.inertia])
-
-            for _ in range(4):      # RK4 on the plant with the command held
-                k1 = f(x)
-                k2 = f(x + 0.5 * h * k1)
-                k3 = f(x + 0.5 * h * k2)
-                k4 = f(x + h * k3)
-                x = x + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+            for i in range(4):      # RK4 on the plant with the command held
+                x = rk4_step(_held_command_rhs, k * dt + i * h, x, h, args=(u, loop.allocation, plant))
             integral_k = float(new_integral)
         t, psi, omega, integral, command = (np.array(c) for c in zip(*rows))
-    return ClosedLoopResult(t, psi, omega, integral, command, loop_torque(psi, command, loop))
+    return SimulationResult(t, np.array([psi, omega, integral]), command[np.newaxis],
+                            loop_torque(psi, command, loop)[np.newaxis], ("psi", "rate", "integral"),
+                            ("command",), ("torque",), params={"loop": loop})
+
+
+def _held_command_rhs(t, state, command, allocation, plant):
+    """The mock-up under :func:`simulate_pid`'s sampled loop, the PID command held."""
+    return mockup_rhs(t, state, _allocated_moments(state[0], command, allocation), plant)
