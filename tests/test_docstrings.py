@@ -10,7 +10,7 @@ import sys
 import pytest
 
 PHYSICS = ["magbench.fields", "magbench.hardware", "magbench.dynamics", "magbench.earth", "magbench.rotations",
-           "magbench.sim.bench", "magbench.sim.pid_loop",
+           "magbench.sim.bench", "magbench.sim.pid_loop", "magbench.sim.integrate", "magbench.sim.result",
            "magbench.geomag", "magbench.attitude", "magbench.coils", "magbench.magnetorquer",
            "magbench.estimation", "magbench.control", "magbench.units", "magbench.sensors",
            "magbench.bench"]
@@ -69,7 +69,8 @@ def test_the_source_rule_takes_the_five_sources(line, cites):
 GLOSSARY_BANNED = {"centre": "center", "circle": "round", "psi0": "initial_angle", "omega0": "initial_rate",
                    "t_end": "duration", "omega": "rate"}
 FAMILIES = ["magbench.fields", "magbench.earth", "magbench.hardware", "magbench.dynamics", "magbench.control",
-            "magbench.estimation", "magbench.rotations", "magbench.sim.bench", "magbench.sim.pid_loop"]
+            "magbench.estimation", "magbench.rotations", "magbench.sim.bench", "magbench.sim.pid_loop",
+            "magbench.sim.integrate", "magbench.sim.result"]
 
 
 def _public_words():
