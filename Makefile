@@ -65,6 +65,9 @@ lock:
 clean:
 	rm -rf _build
 
-# Record the checksums of data/ after a deliberate, reviewed change to a data file.
+# Record the checksums of the data folders (one manifest per source folder) after a
+# deliberate, reviewed change to a data file.
 checksums:
-	cd data && find . -type f ! -name SHA256SUMS | sed 's|^\./||' | LC_ALL=C sort | xargs sha256sum > SHA256SUMS
+	for d in magbench/data/*/; do \
+	  (cd $$d && find . -type f ! -name SHA256SUMS | sed 's|^\./||' | LC_ALL=C sort | xargs -r sha256sum > SHA256SUMS); \
+	done

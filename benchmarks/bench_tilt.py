@@ -10,7 +10,7 @@ estimate (``estimation.rest_gyro_bias``, computed once outside the timing). Prin
 median wall time of each, their ratio, and the largest angle between the two results.
 
 The peer library ``ahrs`` is not a dependency of magbench, so the loop is the reference.
-Needs the BROAD recordings (see ``magbench.broad``); prints why and returns an empty
+Needs the BROAD recordings (see ``magbench.io.broad``); prints why and returns an empty
 record when they are absent.
 """
 
@@ -26,7 +26,7 @@ import time  # noqa: E402
 import numpy as np  # noqa: E402
 from scipy.signal import butter, lfilter_zi  # noqa: E402
 
-from magbench import broad, estimation  # noqa: E402
+from magbench.io import broad, estimation  # noqa: E402
 
 TAU = 3.0
 

@@ -123,7 +123,7 @@ def _coil_wires(name, enamel):
         d = [float(awg_diameter(g)) for g in _AWG_GAUGES]
         return d, None, (f"AWG {_AWG_GAUGES[0]}-{_AWG_GAUGES[-1]} (ASTM B258, by definition); "
                          f"enamel not tabulated: pitch = d + 2 x {enamel * 1e6:g} um")
-    from .data import load_wire_table
+    from .io import load_wire_table
 
     t = load_wire_table(name)
     label = "IEC 60317-0-1 grade 1 enamelled copper (R20 sizes); pitch = maximum overall diameter"
@@ -133,7 +133,7 @@ def _coil_wires(name, enamel):
 
 
 def _cmd_design_coil(args):
-    from .data import load_parameter_set
+    from .io import load_parameter_set
     from .hardware import design_magnetorquer
 
     thesis = load_parameter_set("thesis")       # the thesis's copper, unless given

@@ -1,7 +1,7 @@
 """Physical constants in SI units, each with its source.
 
 Values that a *source document* chose (the thesis's Earth dipole moment, its copper
-resistivity, ...) are not constants: they live in ``data/params`` with provenance.
+resistivity, ...) are not constants: they live in ``magbench/data/<source>/params.toml`` with provenance.
 """
 
 import scipy.constants as _sc

@@ -33,12 +33,15 @@ def provenance():
     import hashlib
 
     from . import __version__
-    from .data import DATA_DIR
+    from .io import DATA_DIR
 
     library = hashlib.sha256()
     for path in sorted(Path(__file__).resolve().parent.rglob("*.py")):
         library.update(path.read_bytes())
-    manifest = hashlib.sha256((DATA_DIR / "SHA256SUMS").read_bytes()).hexdigest()[:12]
+    manifest = hashlib.sha256()
+    for path in sorted(DATA_DIR.glob("*/SHA256SUMS")):
+        manifest.update(path.parent.name.encode() + b"\n" + path.read_bytes())
+    manifest = manifest.hexdigest()[:12]
     return (f"magbench {__version__} (library sha256 {library.hexdigest()[:12]}, "
             f"data manifest sha256 {manifest})")
 
@@ -281,16 +284,27 @@ def checks_table(checks, caption="Printed values beside the computation", *, lab
     return table(frame, caption, label=label, wide_columns=("quantity", "where"))
 
 
-def benchmark_result(name):
+def benchmark_result(name, directory=None):
     """The record of the last ``make bench`` run of ``benchmarks/bench_<name>.py``.
 
     Returns the dict written by ``benchmarks/run.py``: ``date``, ``machine`` and the
     script's own ``result``. The book quotes speed-ups from these committed records
     rather than timing code during the build, where other load would distort them.
+
+    The records belong to the repository, not to the installed package: ``directory``
+    defaults to ``benchmarks/results`` of the checkout the book is built from, found
+    from the working directory upwards.
     """
     import json
 
-    path = Path(__file__).resolve().parents[1] / "benchmarks" / "results" / f"{name}.json"
+    if directory is None:
+        here = Path.cwd().resolve()
+        candidates = [p / "benchmarks" / "results" for p in (here, *here.parents)]
+        directory = next((c for c in candidates if c.is_dir()), None)
+        if directory is None:
+            raise FileNotFoundError(f"no benchmarks/results folder in {here} or above; pass the folder of "
+                                    "the benchmark records (a magbench checkout's benchmarks/results)")
+    path = Path(directory) / f"{name}.json"
     if not path.exists():
         raise FileNotFoundError(f"no benchmark record {path}; run `make bench` first")
     return json.loads(path.read_text(encoding="utf-8"))

@@ -1,4 +1,4 @@
-"""Bench-log format and loader (magbench.benchlog), on synthetic logs in tmp_path.
+"""Bench-log format and loader (magbench.io.benchlog), on synthetic logs in tmp_path.
 
 Every log here is synthetic, written by the test into a temporary directory; nothing
 is written under data/.
@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from magbench import benchlog
-from magbench.benchlog import COLUMNS, BenchLogError
+from magbench.io import benchlog
+from magbench.io.benchlog import COLUMNS, BenchLogError
 
 HEADER = ",".join(f"{name} [{unit or 'duty'}]" for name, unit in COLUMNS)
 
@@ -62,7 +62,7 @@ def test_directory_listing_loads_every_csv(tmp_path):
 
 
 def test_the_shipped_data_folder_holds_no_log():
-    # The thesis's traces are unpublished: data/bench has its README and nothing else.
+    # The thesis's traces are unpublished: magbench/data/bench has its README and nothing else.
     assert benchlog.bench_log_paths() == []
     assert (benchlog.BENCH_DIR / "README.md").is_file()
 
@@ -127,11 +127,11 @@ def test_short_rows_missing_header_and_single_sample_are_rejected(tmp_path):
 
 def test_log_inside_data_must_be_in_the_checksum_manifest(tmp_path, monkeypatch):
     # A log dropped into data/ without `make checksums` is refused, like any data file.
-    from magbench import data
+    from magbench.io import data
 
     target = tmp_path / "data"
     (target / "bench").mkdir(parents=True)
-    (target / "SHA256SUMS").write_text("")
+    (target / "bench" / "SHA256SUMS").write_text("")
     data._manifest.cache_clear()
     monkeypatch.setattr(benchlog, "DATA_DIR", target)
     monkeypatch.setattr(data, "DATA_DIR", target)

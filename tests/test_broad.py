@@ -5,7 +5,7 @@ import pytest
 from numpy.testing import assert_allclose
 from scipy.spatial.transform import Rotation
 
-from magbench import broad
+from magbench.io import broad
 
 TRIALS = broad.available_trials()
 needs_data = pytest.mark.skipif(not TRIALS, reason=broad.MISSING_MESSAGE)

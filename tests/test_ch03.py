@@ -15,7 +15,7 @@ from numpy.testing import assert_allclose
 from magbench import magnetorquer as mt
 from magbench.cli import main
 from magbench.constants import MU_0
-from magbench.data import DataError, load_wire_table
+from magbench.io import DataError, load_wire_table
 
 RHO, GAMMA = 0.0175e-6, 8.9e3
 EXACT = dict(rtol=1e-12)

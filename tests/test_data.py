@@ -6,17 +6,22 @@ from pathlib import Path
 import pytest
 from numpy.testing import assert_allclose
 
-from magbench import data
-from magbench.data import DATA_DIR, DataError
+from magbench.io import data
+from magbench.io import DATA_DIR, DataError
 
 
 def test_every_data_file_is_listed_and_verified():
-    listed = {line.split()[1] for line in (DATA_DIR / "SHA256SUMS").read_text().splitlines() if line}
-    present = {p.relative_to(DATA_DIR).as_posix() for p in DATA_DIR.rglob("*")
-               if p.is_file() and p.name != "SHA256SUMS"}
-    assert listed == present
-    for name in listed:
-        data.verify_checksum(DATA_DIR / name)
+    # One manifest per folder (a source, the wire tables, the bench logs), none at the top.
+    folders = sorted(p for p in DATA_DIR.iterdir() if p.is_dir() and p.name != "__pycache__")
+    assert {p.name for p in folders} >= {"thesis", "kovalenko", "wires", "bench"}
+    assert not [p for p in DATA_DIR.iterdir() if p.is_file()], "files belong in a source's folder"
+    for folder in folders:
+        listed = {line.split()[1] for line in (folder / "SHA256SUMS").read_text().splitlines() if line}
+        present = {p.relative_to(folder).as_posix() for p in folder.rglob("*")
+                   if p.is_file() and p.name != "SHA256SUMS"}
+        assert listed == present, folder.name
+        for name in listed:
+            data.verify_checksum(folder / name)
 
 
 def test_thesis_measurements_have_provenance():
@@ -67,11 +72,10 @@ def test_tampered_file_is_rejected(tmp_path):
 def _rehash(target):
     import hashlib
 
-    lines = []
-    for p in sorted(target.rglob("*")):
-        if p.is_file() and p.name != "SHA256SUMS":
-            lines.append(f"{hashlib.sha256(p.read_bytes()).hexdigest()}  {p.relative_to(target).as_posix()}")
-    (target / "SHA256SUMS").write_text("\n".join(lines) + "\n")
+    for folder in (p for p in target.iterdir() if p.is_dir()):
+        lines = [f"{hashlib.sha256(p.read_bytes()).hexdigest()}  {p.relative_to(folder).as_posix()}"
+                 for p in sorted(folder.rglob("*")) if p.is_file() and p.name != "SHA256SUMS"]
+        (folder / "SHA256SUMS").write_text("\n".join(lines) + "\n")
 
 
 def test_malformed_row_names_file_and_line(tmp_path):
@@ -87,12 +91,12 @@ def test_malformed_row_names_file_and_line(tmp_path):
 
 
 @pytest.mark.parametrize("appended, match", [
-    ("\n[broken\n", r"thesis.toml: .*line"),                                   # TOML syntax
+    ("\n[broken\n", r"thesis/params.toml: .*line"),                                   # TOML syntax
     ('\n[extra]\nvalue = 1.0\nsource = "ours"\n', r"\[extra\] needs value, unit and source"),
 ])
 def test_malformed_parameter_file_names_file(tmp_path, appended, match):
     target = _copy_data(tmp_path)
-    path = target / "params" / "thesis.toml"
+    path = target / "thesis" / "params.toml"
     path.write_text(path.read_text() + appended)
     _rehash(target)
     with pytest.raises(DataError, match=match):
@@ -101,6 +105,9 @@ def test_malformed_parameter_file_names_file(tmp_path, appended, match):
 
 def test_file_outside_manifest_is_rejected(tmp_path):
     target = _copy_data(tmp_path)
-    (target / "extra.csv").write_text("x\n")
+    (target / "thesis" / "extra.csv").write_text("x\n")
     with pytest.raises(DataError, match="not listed"):
-        data.verify_checksum(target / "extra.csv", data_dir=target)
+        data.verify_checksum(target / "thesis" / "extra.csv", data_dir=target)
+    (target / "loose.csv").write_text("x\n")
+    with pytest.raises(DataError, match="must lie in a folder"):
+        data.verify_checksum(target / "loose.csv", data_dir=target)

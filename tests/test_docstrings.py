@@ -48,7 +48,7 @@ def test_parameters_documented_with_units(func):
 def test_physics_modules_do_not_import_plotting_or_io():
     code = ("import sys, magbench.geomag, magbench.attitude, magbench.coils, magbench.magnetorquer, "
             "magbench.fields, magbench.hardware, magbench.dynamics, magbench.earth; "
-            "bad = [m for m in ('matplotlib', 'pandas', 'magbench.figures', 'magbench.data') if m in sys.modules]; "
+            "bad = [m for m in ('matplotlib', 'pandas', 'magbench.figures', 'magbench.io') if m in sys.modules]; "
             "print(bad); sys.exit(bool(bad))")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert result.returncode == 0, result.stdout + result.stderr

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from magbench.data import DataError
+from magbench.io import DataError
 from magbench.params import chapter_parameters
 
 

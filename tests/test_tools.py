@@ -17,14 +17,13 @@ def _load(name):
 
 def test_fingerprint_tracks_library_data_and_overrides(tmp_path, monkeypatch):
     fp = _load("fingerprint")
-    (tmp_path / "magbench").mkdir()
-    (tmp_path / "data").mkdir()
+    (tmp_path / "magbench" / "data" / "src").mkdir(parents=True)
     (tmp_path / "magbench" / "a.py").write_text("x = 1\n")
-    (tmp_path / "data" / "d.csv").write_text("1\n")
+    (tmp_path / "magbench" / "data" / "src" / "d.csv").write_text("1\n")
     monkeypatch.setattr(fp, "ROOT", tmp_path)
     monkeypatch.delenv("MAGBENCH_PARAMS", raising=False)
     base = fp.fingerprint()
-    (tmp_path / "data" / "d.csv").write_text("2\n")
+    (tmp_path / "magbench" / "data" / "src" / "d.csv").write_text("2\n")
     after_data = fp.fingerprint()
     (tmp_path / "magbench" / "a.py").write_text("x = 2\n")
     after_code = fp.fingerprint()

@@ -15,7 +15,7 @@ import shutil
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-INPUTS = ["magbench/**/*.py", "data/**/*", "benchmarks/results/*.json", "requirements.lock", "pyproject.toml", "_config.yml"]
+INPUTS = ["magbench/**/*.py", "magbench/data/**/*", "benchmarks/results/*.json", "requirements.lock", "pyproject.toml", "_config.yml"]
 
 
 def fingerprint():

@@ -12,7 +12,7 @@ import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..data import DataError, load_parameter_set
+from ..io import DataError, load_parameter_set
 
 __all__ = ["Chapter", "OVERRIDES_ENV", "chapter_parameters", "read_overrides"]
 
@@ -35,7 +35,7 @@ class Chapter:
     pages : tuple of str
         The book pages of the chapter (paths without ``.md``).
     source : str
-        The source whose parameter set (``data/params/<source>.toml``) holds the inputs.
+        The source whose parameter set (``magbench/data/<source>/params.toml``) holds the inputs.
     inputs : tuple of str
         Names of the chapter's inputs in that parameter set.
     figure_modules : tuple of str

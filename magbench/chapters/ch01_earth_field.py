@@ -11,7 +11,7 @@ import numpy as np
 from .. import attitude, geomag, igrf
 from ..compare import make_row
 from ..constants import EARTH_POLAR_MOMENT_OF_INERTIA, EARTH_RADIUS, EARTH_ROTATION_RATE
-from ..data import load_measurements
+from ..io import load_measurements
 from ..errata import SourceCheck
 from ..units import ampere_per_meter_to_oersted, tesla_to_oersted
 from ._base import Chapter, chapter_parameters

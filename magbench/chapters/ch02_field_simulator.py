@@ -8,7 +8,7 @@ import numpy as np
 
 from .._validate import as_finite, as_positive
 from ..compare import make_row
-from ..data import load_measurements, load_parameter_set
+from ..io import load_measurements, load_parameter_set
 from ..errata import SourceCheck
 from ._base import Chapter, chapter_parameters
 
@@ -97,7 +97,7 @@ def simulator_rows(params=None):
         Chapter-2 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
     """
     from .. import coils
-    from ..data import load_measurements
+    from ..io import load_measurements
 
     p = params or chapter_parameters("ch02")
     m = load_measurements("thesis")

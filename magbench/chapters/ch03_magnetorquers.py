@@ -7,7 +7,7 @@ thesis eq. (32), the built coils beside their measurement, Kovalenko's actuator 
 import numpy as np
 
 from ..compare import make_row
-from ..data import load_measurements, load_parameter_set
+from ..io import load_measurements, load_parameter_set
 from ..errata import SourceCheck, kovalenko_page
 from ._base import Chapter, chapter_parameters
 
@@ -39,7 +39,7 @@ def magnetorquer_rows(params=None):
         Chapter-3 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
     """
     from .. import magnetorquer as mtq
-    from ..data import load_measurements, load_wire_table
+    from ..io import load_measurements, load_wire_table
 
     p = params or chapter_parameters("ch03")
     rho, u, side, n = p["copper_resistivity"], p["mtq_voltage"], p["mtq_side"], p["mtq_turns"]

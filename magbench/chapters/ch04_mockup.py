@@ -50,7 +50,7 @@ def bench_rows(params=None):
         Chapter-4 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
     """
     from .. import bench
-    from ..data import measurement
+    from ..io import measurement
 
     p = params or chapter_parameters("ch04")
     setup = bench.BenchSetup.from_parameters(p)

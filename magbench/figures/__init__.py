@@ -3,7 +3,7 @@
 A figure is a pair of functions: ``compute(**params) -> FigureData`` (numbers only,
 tested) and ``plot(data) -> matplotlib Figure`` (drawing only). Both the book and the
 ``magbench figure`` command go through :func:`render`, so they cannot disagree. Each
-figure's parameters have SI defaults taken from ``data/params``; :func:`caption_provenance`
+figure's parameters have SI defaults taken from ``magbench/data/<source>/params.toml``; :func:`caption_provenance`
 names the figure id, the function that made it and the parameters that differ from
 those defaults: the book puts it in the caption, the command line into the file's
 metadata (the image itself carries no footer).

@@ -4,14 +4,15 @@ The thesis's Figs. 19–20 are measured angle traces whose data were never publi
 ``thesis-fig19`` and ``thesis-fig20`` therefore show what the model of
 :mod:`magbench.bench` predicts for those runs (nominal run, and the spread of a small
 seeded Monte Carlo), with the thesis's 10° marked, and overlay any bench log found in
-``data/bench/`` (:mod:`magbench.benchlog`). ``ch04-montecarlo`` is the distribution of
+``magbench/data/bench/`` (:mod:`magbench.io.benchlog`). ``ch04-montecarlo`` is the distribution of
 the final error over the uncertain inputs, for both targets.
 """
 
 import numpy as np
 
-from .. import bench, benchlog
-from ..data import load_parameter_set, measurement
+from .. import bench
+from ..io import benchlog
+from ..io import load_parameter_set, measurement
 from ..chapters.ch04_mockup import CHAPTER
 from ..params import chapter_parameters
 from ..rotations import wrap_angle
@@ -50,7 +51,7 @@ def _setup(p):
 
 
 def _logs_for(psi_des, alpha):
-    """Series of the bench logs in data/bench whose target is psi_des (or unstated)."""
+    """Series of the bench logs in magbench/data/bench whose target is psi_des (or unstated)."""
     series = []
     for log in benchlog.load_bench_logs():
         target = log.psi_des
@@ -126,7 +127,7 @@ def plot_trace(data):
         cols = {k: v for k, (u, v) in s.columns.items()}
         a1.plot(cols["time"], cols["psi_filtered"], color="k", linewidth=1.0, label=s.label)
     if not e["n_logs"]:
-        a1.text(0.99, 0.03, "no bench log in data/bench/: the thesis's traces are unpublished",
+        a1.text(0.99, 0.03, "no bench log in magbench/data/bench/: the thesis's traces are unpublished",
                 transform=a1.transAxes, ha="right", va="bottom", fontsize=8, color="0.3")
     a1.set_ylabel("ψ, angle from field to coil 1 [°]", fontsize=8)
     # Above the axes: inside, the legend covered the Monte Carlo band.

@@ -5,7 +5,8 @@ from functools import lru_cache
 
 import numpy as np
 
-from .. import broad, estimation, sensors
+from .. import estimation, sensors
+from ..io import broad
 from ..constants import MU_0
 from ..chapters.ch04_mockup import CHAPTER
 from ..params import chapter_parameters

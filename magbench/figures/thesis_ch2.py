@@ -13,7 +13,7 @@ import numpy as np
 from .. import coils, igrf
 from ..chapters import ch02_field_simulator
 from ..constants import MU_0
-from ..data import load_measurements
+from ..io import load_measurements
 from ..chapters.ch02_field_simulator import CHAPTER
 from ..params import chapter_parameters
 from . import FigureData, FigureParameter, FigureSpec, Series, register

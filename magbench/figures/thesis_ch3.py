@@ -6,7 +6,7 @@ import numpy as np
 
 from .. import magnetorquer as mtq
 from ..constants import MU_0
-from ..data import load_wire_table
+from ..io import load_wire_table
 from ..chapters.ch03_magnetorquers import CHAPTER
 from ..params import chapter_parameters
 from . import FigureData, FigureParameter, FigureSpec, Series, register

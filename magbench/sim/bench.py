@@ -69,7 +69,7 @@ class BenchSetup:
     """The bench: mock-up, field, coils, driver, sensors and controller (SI values).
 
     The thesis's bench is :meth:`from_parameters` of the chapter-4 inputs; every field
-    is documented with its unit and source there and in ``data/params/thesis.toml``.
+    is documented with its unit and source there and in ``magbench/data/thesis/params.toml``.
     """
 
     inertia: float                      # J [kg m^2]

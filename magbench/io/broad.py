@@ -26,8 +26,8 @@ from pathlib import Path
 
 import numpy as np
 
-from . import estimation
-from .rotations import hamilton_product
+from .. import estimation
+from ..rotations import hamilton_product
 
 __all__ = [
     "BROAD_DIR_ENV",
@@ -61,7 +61,7 @@ def broad_directory():
     configured = os.environ.get(BROAD_DIR_ENV)
     if configured:
         return Path(configured)
-    return Path(__file__).resolve().parents[1].parent / "shared" / "external" / "broad"
+    return Path(__file__).resolve().parents[2].parent / "shared" / "external" / "broad"
 
 
 def available_trials(directory=None):
@@ -107,7 +107,7 @@ class BroadTrial:
 
 def load_trial(name, directory=None):
     """Load one trial (``name`` without ``.mat``); raises FileNotFoundError with :data:`MISSING_MESSAGE`."""
-    from scipy.io import loadmat   # only here: importing magbench.broad must stay cheap
+    from scipy.io import loadmat   # only here: importing magbench.io.broad must stay cheap
 
     folder = broad_directory() if directory is None else Path(directory)
     path = folder / f"{name}.mat"

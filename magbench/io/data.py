@@ -1,9 +1,15 @@
 """Loading the project's data files, with checksums and provenance.
 
-``data/`` holds only what a source printed or a person measured. Every file is listed
-in ``data/SHA256SUMS``; each read verifies the file's sha256 first, so a tampered or
-accidentally edited file is an error, not a silently different result. Nothing here
-writes to ``data/``.
+The data directory (``magbench/data/``, shipped as package data) holds only what a
+source printed or a person measured, one folder per source (``thesis/``,
+``kovalenko/``, ...) plus the wire tables (``wires/``) and bench logs (``bench/``).
+Every file is listed in its folder's ``SHA256SUMS``; each read verifies the file's
+sha256 first, so a tampered or accidentally edited file is an error, not a silently
+different result. Nothing here writes to the data directory. A source's folder holds
+
+* ``params.toml``: its parameter set, one table per value with provenance;
+* ``measurements.csv``: values measured by a person or read off the source's figures;
+* ``printed.csv``: printed values that the errata compare against.
 
 Two formats:
 
@@ -22,6 +28,7 @@ import math
 import tomllib
 from dataclasses import dataclass
 from functools import lru_cache
+from importlib.resources import files
 from pathlib import Path
 
 __all__ = [
@@ -39,8 +46,8 @@ __all__ = [
     "load_wire_table",
 ]
 
-#: The project's data directory (next to the package in a source checkout).
-DATA_DIR = Path(__file__).resolve().parent.parent / "data"
+#: The project's data directory: package data, so an installed package has it too.
+DATA_DIR = Path(str(files("magbench") / "data"))
 
 #: Conversion factors from the units the sources print to SI.
 _TO_SI = {
@@ -141,9 +148,9 @@ class Parameter:
         return to_si(self.value, self.unit)[0]
 
 
-@lru_cache(maxsize=1)
-def _manifest(data_dir):
-    path = Path(data_dir) / "SHA256SUMS"
+@lru_cache(maxsize=16)
+def _manifest(folder):
+    path = Path(folder) / "SHA256SUMS"
     if not path.is_file():
         raise DataError(f"checksum manifest {path} is missing")
     sums = {}
@@ -158,12 +165,15 @@ def _manifest(data_dir):
 
 
 def verify_checksum(path, data_dir=None):
-    """Read a data file's bytes after checking them against ``data/SHA256SUMS``.
+    """Read a data file's bytes after checking them against its folder's ``SHA256SUMS``.
+
+    Each first-level folder of the data directory (a source, ``wires``, ``bench``) has its
+    own manifest, so adding a source's folder touches no other file.
 
     Parameters
     ----------
     path : str or Path
-        File inside the data directory.
+        File inside a folder of the data directory.
     data_dir : str or Path, optional
         Data directory; defaults to :data:`DATA_DIR`.
 
@@ -175,12 +185,16 @@ def verify_checksum(path, data_dir=None):
     data_dir = Path(data_dir or DATA_DIR).resolve()
     path = Path(path).resolve()
     try:
-        rel = path.relative_to(data_dir).as_posix()
+        parts = path.relative_to(data_dir).parts
     except ValueError:
         raise DataError(f"{path} is not inside the data directory {data_dir}") from None
-    sums = _manifest(str(data_dir))
+    if len(parts) < 2:
+        raise DataError(f"{path} must lie in a folder of the data directory {data_dir} (one per source)")
+    folder = data_dir / parts[0]
+    rel = "/".join(parts[1:])
+    sums = _manifest(str(folder))
     if rel not in sums:
-        raise DataError(f"{path} is not listed in {data_dir / 'SHA256SUMS'}")
+        raise DataError(f"{path} is not listed in {folder / 'SHA256SUMS'}")
     if not path.is_file():
         raise DataError(f"data file {path} is missing")
     content = path.read_bytes()
@@ -212,12 +226,12 @@ _KINDS = {"measured", "printed", "simulated"}
 
 
 def load_measurements(name="thesis", data_dir=None):
-    """Load a measurement table ``data/<name>/measurements.csv``.
+    """Load a measurement table ``<name>/measurements.csv`` of the data directory.
 
     Parameters
     ----------
     name : str
-        Source key: the folder under ``data/`` (``"thesis"``).
+        Source key: its folder in the data directory (``"thesis"``).
     data_dir : str or Path, optional
         Data directory; defaults to :data:`DATA_DIR`.
 
@@ -290,12 +304,12 @@ _PARAMETER_KEYS = {"value", "unit", "source", "section", "seed_line", "note"}
 
 
 def load_parameter_set(name="thesis", data_dir=None):
-    """Load the parameter set ``data/params/<name>.toml``.
+    """Load a source's parameter set ``<name>/params.toml`` of the data directory.
 
     Parameters
     ----------
     name : str
-        Parameter-set name.
+        Source key: its folder in the data directory (``"thesis"``).
     data_dir : str or Path, optional
         Data directory; defaults to :data:`DATA_DIR`.
 
@@ -303,7 +317,7 @@ def load_parameter_set(name="thesis", data_dir=None):
     -------
     dict of str to Parameter
     """
-    path = Path(data_dir or DATA_DIR) / "params" / f"{name}.toml"
+    path = Path(data_dir or DATA_DIR) / name / "params.toml"
     content = verify_checksum(path, data_dir).decode("utf-8")
     try:
         tables = tomllib.loads(content)
@@ -329,7 +343,7 @@ def load_parameter_set(name="thesis", data_dir=None):
     return params
 
 
-#: Wire tables in ``data/wires/``: name -> file stem. ``iec60228`` is kept as an alias of the
+#: Wire tables in the data directory's ``wires/``: name -> file stem. ``iec60228`` is kept as an alias of the
 #: enamelled-wire table because the ``design-coil`` command's contract names it; IEC 60228
 #: itself specifies cable conductors by cross-section, not winding-wire diameters.
 WIRE_TABLES = {"iec60317": "iec60317_grade1", "iec60228": "iec60317_grade1"}
@@ -356,7 +370,7 @@ class WireTable:
 
 
 def load_wire_table(name="iec60317", data_dir=None):
-    """Load a wire table from ``data/wires/`` (sizes in mm in the file, metres here).
+    """Load a wire table from the data directory's ``wires/`` (sizes in mm in the file, metres here).
 
     Parameters
     ----------

@@ -2,10 +2,10 @@ r"""Bench logs: a documented CSV format for the raw records of a bench run, and 
 
 The thesis's Figs. 19–20 show angle traces of the bench, but their data were never
 published. This module defines the format a bench run should be logged in so that the
-book can set it beside the model: drop such a file into ``data/bench/`` (and run
+book can set it beside the model: drop such a file into ``magbench/data/bench/`` (and run
 ``make checksums``, as for any data file) and the chapter overlays it on the prediction.
 
-Format (``data/bench/README.md`` has the same text)
+Format (``magbench/data/bench/README.md`` has the same text)
 ---------------------------------------------------
 A UTF-8 CSV file. Lines starting with ``#`` are comments; a comment of the form
 ``# key: value`` before the header is metadata (``psi_des`` [rad], the target of the
@@ -162,7 +162,7 @@ def load_bench_log(path):
     Parameters
     ----------
     path : str or Path
-        The CSV file. A file inside ``data/`` is checked against ``data/SHA256SUMS``
+        The CSV file. A file inside the data directory is checked against its folder's ``SHA256SUMS``
         first, like every data file.
 
     Returns
@@ -209,13 +209,13 @@ def load_bench_log(path):
 
 
 def bench_log_paths(directory=None):
-    """The bench logs (``*.csv``) in ``directory`` (default ``data/bench``), sorted."""
+    """The bench logs (``*.csv``) in ``directory`` (default ``magbench/data/bench``), sorted."""
     directory = Path(directory) if directory is not None else BENCH_DIR
     return sorted(directory.glob("*.csv")) if directory.is_dir() else []
 
 
 def load_bench_logs(directory=None):
-    """Every bench log in ``directory`` (default ``data/bench``), loaded and validated."""
+    """Every bench log in ``directory`` (default ``magbench/data/bench``), loaded and validated."""
     return [load_bench_log(p) for p in bench_log_paths(directory)]
 
 
@@ -229,7 +229,7 @@ def log_filtered_angle(log, alpha):
 
     The sample interval before the first sample is taken equal to the next one.
     """
-    from .estimation import complementary_filter
+    from ..estimation import complementary_filter
 
     dt = np.diff(log.time)
     dt = np.concatenate([dt[:1], dt])
