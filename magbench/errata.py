@@ -40,6 +40,32 @@ class SourceCheck:
         """Whether the printed value lies within ``tolerance`` of the computed one."""
         return abs(self.printed - self.computed) <= self.tolerance
 
+    @classmethod
+    def from_printed(cls, row, *, id, chapter, location, computed, explanation, computation, quantity=None,
+                     unit=None, scale=1.0):
+        """A check of a printed value read from the source's data (``printed.csv``).
+
+        The printed value, its tolerance (half a unit of its last printed digit) and its
+        source come from ``row`` (a :class:`magbench.io.Measurement`), never from code.
+
+        Parameters
+        ----------
+        row : magbench.io.Measurement
+            The printed value with its provenance and ``resolution``.
+        computed : float
+            What the source's own formula and inputs give, in the display unit.
+        unit : str, optional
+            Display unit. The row's printed unit (the default) shows the value as
+            printed; any other unit shows its SI value times ``scale`` (``100`` for a
+            fraction in %).
+        """
+        if unit is None or unit == row.unit:
+            printed, tolerance = row.value_as_printed, row.resolution
+        else:
+            printed, tolerance = row.value * scale, row.resolution_si * abs(scale)
+        return cls(id=id, chapter=chapter, source=row.source, location=location,
+                   quantity=quantity or row.quantity, printed=printed, computed=float(computed),
+                   tolerance=tolerance, unit=unit or row.unit, explanation=explanation, computation=computation)
 
 
 def kovalenko_page(seed_line):

@@ -24,22 +24,51 @@ def test_every_data_file_is_listed_and_verified():
             data.verify_checksum(folder / name)
 
 
+def _significant_digits(value):
+    """'0.000156' -> '156', '2.34e-8' -> '234': the digits a source prints, in any notation."""
+    return f"{abs(value):.6e}".split("e")[0].rstrip("0").rstrip(".").replace(".", "")
+
+
+def _digits(text):
+    """A seed line without decimal separators and spaces ('0,0223' and '0.0223' alike)."""
+    return text.replace(".", "").replace(",", "").replace(" ", "")
+
+
 def test_thesis_measurements_have_provenance():
-    rows = data.load_measurements("thesis")
+    measured, printed = data.load_measurements("thesis"), data.load_printed("thesis")
     # Everything of the inventory's §4.1 (bench values and COMSOL's simulated numbers).
-    for key in ("sim-coil-resistance", "sim-center-h", "mtq-resistance", "mtq-moment",
-                "orientation-error", "comsol-max-h"):
-        assert key in rows
-    assert rows["comsol-max-h"].kind == "simulated"
-    assert rows["sim-center-h"].kind == "measured"
+    for key in ("sim-coil-resistance", "sim-center-h", "mtq-resistance", "orientation-error", "comsol-max-h"):
+        assert key in measured
+    assert "mtq-moment" in printed and printed["mtq-moment"].kind == "printed"
+    assert measured["comsol-max-h"].kind == "simulated"
+    assert measured["sim-center-h"].kind == "measured"
+    assert not set(measured) & set(printed), "an id names one value"
+    rows = {**measured, **printed}
     seed = (Path(__file__).resolve().parents[2] / "shared" / "seeds" / "thesis_bui_2016.txt")
     if seed.is_file():
         lines = seed.read_text(encoding="utf-8").splitlines()
         # The seed line of each row must contain the printed number (decimal point or comma).
         for row in rows.values():
-            text = lines[row.seed_line - 1]
-            printed = f"{row.value_low:g}"
-            assert printed in text or printed.replace(".", ",") in text, row.id
+            assert _significant_digits(row.value_low) in _digits(lines[row.seed_line - 1]), row.id
+
+
+def test_printed_values_carry_their_digits():
+    printed = data.load_printed("thesis")
+    # Half a unit of the last printed digit, unless the file states it ("≈ 200": one digit).
+    assert printed["thesis-sim-coil-resistance"].resolution == 0.05
+    assert printed["thesis-sim-ampere-turns"].resolution == 0.5
+    assert printed["thesis-eq15-field"].resolution == 50.0
+    assert_allclose(printed["thesis-mtq-wire-diameter"].resolution_si, 0.5e-6, rtol=1e-12)   # float of mm -> m
+    assert data.digit_resolution("0.79e-4") == 0.5e-6
+
+
+def test_kovalenko_printed_values_are_on_their_page():
+    seed = Path(__file__).resolve().parents[2] / "shared" / "seeds" / "kovalenko_1975_magnetic_control_systems.txt"
+    if not seed.is_file():
+        pytest.skip(f"the Kovalenko transcription is not at {seed}")
+    lines = seed.read_text(encoding="utf-8").splitlines()
+    for row in data.load_printed("kovalenko").values():
+        assert _significant_digits(row.value_low) in _digits(lines[row.seed_line - 1]), row.id
 
 
 def test_si_conversion_and_printed_form():

@@ -10,8 +10,8 @@ import numpy as np
 
 from .. import attitude, geomag, igrf
 from ..compare import make_row
-from ..constants import EARTH_POLAR_MOMENT_OF_INERTIA, EARTH_RADIUS, EARTH_ROTATION_RATE
-from ..io import load_measurements
+from ..constants import EARTH_POLAR_MOMENT_OF_INERTIA, EARTH_RADIUS, EARTH_ROTATION_RATE, MU_0
+from ..io import load_parameter_set, load_printed
 from ..errata import SourceCheck
 from ..units import ampere_per_meter_to_oersted, tesla_to_oersted
 from ._base import Chapter, chapter_parameters
@@ -114,10 +114,12 @@ def geomagnetic_rows(params=None, *, epochs=None):
     return rows
 
 
-def geomagnetic_checks(params=None):
-    """Chapter 1: thesis §1 and Kovalenko ch. 2 (the dipole values)."""
-    p = params or chapter_parameters("ch01")
-    kov = load_measurements("kovalenko")
+def geomagnetic_checks():
+    """Chapter 1: thesis §1 and Kovalenko ch. 2 (the dipole values), always on the
+    thesis's own parameter set: overrides of a whole-book build change the chapter's
+    figures and rows, never which printed numbers count as errata."""
+    p = {name: par.value_si for name, par in load_parameter_set("thesis").items()}
+    printed, kov = load_printed("thesis"), load_printed("kovalenko")
     m, r = p["earth_dipole_moment"], p["earth_radius"]
     lat, lon = p["laboratory_latitude"], p["laboratory_longitude"]
     phi = geomag.geomagnetic_latitude(lat, lon, p["geomagnetic_pole_latitude"],
@@ -134,7 +136,12 @@ def geomagnetic_checks(params=None):
         jc, wc, -wc, EARTH_POLAR_MOMENT_OF_INERTIA, EARTH_ROTATION_RATE)))
     thesis_ratio = float(attitude.thesis_energy_ratio(jc, EARTH_POLAR_MOMENT_OF_INERTIA))
 
-    moment_l, field_h = 0.4, 250.0      # thesis design values (§2.1 and §3.2)
+    moment_l, field_h = p["mtq_moment"], p["sim_design_h"]      # thesis design values (§2.1 and §3.2)
+    inclination_igrf = float(np.degrees(igrf.igrf_field(lat, lon, p["thesis_epoch"]).inclination))
+    printed_m = load_parameter_set("thesis")["earth_dipole_moment"]
+    mantissa, exponent = f"{printed_m.value:.1e}".split("e")
+    cgs_moment = f"{mantissa}·10{str(int(exponent)).translate(str.maketrans('0123456789-', '⁰¹²³⁴⁵⁶⁷⁸⁹⁻'))}"
+    b0_printed = tuple(kov[k].value_as_printed for k in ("kov-g10-1965", "kov-g11-1965", "kov-h11-1965"))
     return [
         SourceCheck(
             id="thesis-eq3-inclination-sign", chapter="ch01", source="thesis",
@@ -146,38 +153,41 @@ def geomagnetic_checks(params=None):
             explanation=("Printed tan J = −2 tan Φ (and Z = −2M cos θ_M/R³) makes the field point "
                          "upwards in the northern hemisphere, against the thesis's own axes "
                          "(z down, J > 0 in the north). The magnitudes are right; the sign is not. "
-                         "IGRF gives +73.6° at the laboratory."),
+                         f"IGRF gives {inclination_igrf:+.1f}° at the laboratory."),
             computation="magbench.geomag.dipole_inclination",
         ),
         SourceCheck(
             id="thesis-equator-field", chapter="ch01", source="thesis",
             location="§1.1, after eq. (3) (copied from Kovalenko p. 35)",
             quantity="Dipole field at the equator, M/R³",
-            printed=0.31, computed=float(tesla_to_oersted(geomag.dipole_equatorial_b(m, r))),
-            tolerance=0.005, unit="Oe",
-            explanation="M/R³ with M = 8.1·10²⁵ CGS and R = 6371 km.",
+            printed=printed["thesis-equator-field"].value_as_printed,
+            computed=float(tesla_to_oersted(geomag.dipole_equatorial_b(m, r))),
+            tolerance=printed["thesis-equator-field"].resolution, unit="Oe",
+            explanation=f"M/R³ with M = {cgs_moment} CGS and R = {r / 1e3:.0f} km.",
             computation="magbench.geomag.dipole_equatorial_b",
         ),
         SourceCheck(
             id="thesis-pole-field-rounding", chapter="ch01", source="thesis",
             location="§1.1, after eq. (3) (copied from Kovalenko p. 35)",
             quantity="Dipole field at the poles, 2M/R³",
-            printed=0.62, computed=pole_h, tolerance=0.005, unit="Oe",
-            explanation=("2M/R³ with M = 8.1·10²⁵ CGS and R = 6371 km is 0.6265 Oe, which rounds "
-                         "to 0.63; the printed 0.62 is twice the rounded equatorial 0.31."),
+            printed=printed["thesis-pole-field"].value_as_printed, computed=pole_h,
+            tolerance=printed["thesis-pole-field"].resolution, unit="Oe",
+            explanation=(f"2M/R³ with M = {cgs_moment} CGS and R = {r / 1e3:.0f} km is {pole_h:.4f} Oe, which "
+                         f"rounds to {pole_h:.2f}; the printed {printed['thesis-pole-field'].value_as_printed:g} is "
+                         f"twice the rounded equatorial {printed['thesis-equator-field'].value_as_printed:g}."),
             computation="magbench.geomag.dipole_total_b",
         ),
         SourceCheck(
             id="thesis-eq5-cgs-torque", chapter="ch01", source="thesis",
             location="§1.2, eq. (5)",
-            quantity="Torque on L = 0.4 A·m² across H = 250 A/m from M = L × H",
+            quantity=f"Torque on L = {moment_l:g} A·m² across H = {field_h:g} A/m from M = L × H",
             printed=moment_l * field_h,
             computed=float(np.linalg.norm(geomag.magnetic_torque_from_h(
                 [moment_l, 0.0, 0.0], [0.0, field_h, 0.0]))),
             tolerance=0.0, unit="N m",
             explanation=("M = L × H holds only in CGS units, where B = H in vacuum. In SI the "
                          "torque is μ0 L × H; read literally with SI inputs, eq. (5) is off by "
-                         "a factor 1/μ0 ≈ 8·10⁵."),
+                         f"a factor 1/μ0 ≈ {1e-5 / MU_0:.0f}·10⁵."),
             computation="magbench.geomag.magnetic_torque_from_h",
         ),
         SourceCheck(
@@ -196,9 +206,10 @@ def geomagnetic_checks(params=None):
             location="§2.2, p. 40",
             quantity="Mean dipole field over the Earth's surface, from the book's own Table 1",
             printed=float(ampere_per_meter_to_oersted(kov["kov-mean-field-dipole"].value)), computed=mean_dipole,
-            tolerance=0.00005, unit="Oe",
+            tolerance=kov["kov-mean-field-dipole"].resolution, unit="Oe",
             explanation=("The closed-form surface mean of the dipole field with Table 1's g10, g11, "
-                         "h11 (−30339, −2123, 5758 γ) is 0.4272 Oe; the book prints 0.4283."),
+                         f"h11 ({', '.join(f'{g:.0f}'.replace('-', '−') for g in b0_printed)} γ) is {mean_dipole:.4f} Oe; the book "
+                         f"prints {kov['kov-mean-field-dipole'].value_as_printed:g}."),
             computation="magbench.geomag.dipole_mean_surface_b",
         ),
     ]
@@ -214,7 +225,7 @@ def kovalenko_field_checks():
     from .. import igrf
     from ..constants import IGRF_REFERENCE_RADIUS
 
-    kov = load_measurements("kovalenko")
+    kov = load_printed("kovalenko")
     g, h = igrf.igrf_gauss_coefficients(1965.0, max_degree=6)
     r_e = 6371.0e3                     # the book's Earth radius (p. 35)
     checks = []
@@ -227,7 +238,8 @@ def kovalenko_field_checks():
                 id=f"kovalenko-rms-{kind}-{tag}", chapter="ch01", source="kovalenko",
                 location="Table 2, p. 40",
                 quantity=f"RMS {'total' if kind == 'field' else 'dipole'} field at {row.conditions}",
-                printed=float(ampere_per_meter_to_oersted(row.value)), computed=float(tesla_to_oersted(value)), tolerance=0.0005, unit="Oe",
+                printed=float(ampere_per_meter_to_oersted(row.value)), computed=float(tesla_to_oersted(value)),
+                tolerance=row.resolution, unit="Oe",
                 explanation=("Lowes spectrum of IGRF-14 1965.0 up to degree 6 at the book's "
                              "R = 6371 km. Where the printed value is lower (R + 1000 km, 1.5R) the "
                              "table disagrees with itself too: its n = 1 entry at R + 1000 km (793.8) "
@@ -239,14 +251,16 @@ def kovalenko_field_checks():
         SourceCheck(id="kovalenko-mean-field-n6", chapter="ch01", source="kovalenko",
                     location="§2.2, p. 40",
                     quantity="Mean total field over the Earth's surface, degrees n ≤ 6",
-                    printed=float(ampere_per_meter_to_oersted(kov["kov-mean-field-n6"].value)), computed=mean6, tolerance=0.0005,
+                    printed=float(ampere_per_meter_to_oersted(kov["kov-mean-field-n6"].value)), computed=mean6,
+                    tolerance=kov["kov-mean-field-n6"].resolution,
                     unit="Oe", explanation="Gauss–Legendre surface mean of |B| of IGRF-14 1965.0.",
                     computation="magbench.igrf.igrf_mean_surface_b"),
         SourceCheck(id="kovalenko-dipole-accuracy", chapter="ch01", source="kovalenko",
                     location="§2.2, p. 41",
                     quantity="Accuracy of the dipole approximation A₁ = T₁c/T_c",
                     printed=kov["kov-dipole-accuracy"].value * 100, computed=100 * mean1 / mean6,
-                    tolerance=0.5, unit="%", explanation="Ratio of the two surface means.",
+                    tolerance=kov["kov-dipole-accuracy"].resolution, unit="%",
+                    explanation="Ratio of the two surface means.",
                     computation="magbench.igrf.igrf_mean_surface_b"),
     ]
     b = geomag.orbital_dipole_b(np.linspace(0, 2 * np.pi, 3601), np.pi / 2, 7371e3, 8.1e22)
@@ -255,7 +269,8 @@ def kovalenko_field_checks():
         id="kovalenko-polar-orbit-b2-ratio", chapter="ch01", source="kovalenko",
         location="p. 99", quantity="Largest/smallest B² on a circular geopolar orbit",
         printed=kov["kov-polar-orbit-b2-ratio"].value, computed=float(b2.max() / b2.min()),
-        tolerance=0.5, unit="1", explanation="Eq. (2.40) with i = 90°: |B|² ∝ 1 + 3 sin²u.",
+        tolerance=kov["kov-polar-orbit-b2-ratio"].resolution, unit="1",
+        explanation="Eq. (2.40) with i = 90°: |B|² ∝ 1 + 3 sin²u.",
         computation="magbench.geomag.orbital_dipole_b"))
     return checks
 

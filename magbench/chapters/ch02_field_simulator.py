@@ -8,7 +8,7 @@ import numpy as np
 
 from .._validate import as_finite, as_positive
 from ..compare import make_row
-from ..io import load_measurements, load_parameter_set
+from ..io import load_measurements, load_parameter_set, load_printed
 from ..errata import SourceCheck
 from ._base import Chapter, chapter_parameters
 
@@ -137,34 +137,46 @@ def simulator_rows(params=None):
 
 
 def simulator_checks():
-    """Thesis §2 (the Helmholtz field simulator): printed design numbers that do not
-    follow from eq. (16) and the winding formulas. The chapter is still to come."""
+    """Thesis §2.2 (the Helmholtz field simulator): printed design numbers that do not
+    follow from eq. (16) and the winding formulas, on the thesis's own parameter set."""
     from .. import coils
 
     p = load_parameter_set("thesis")
+    printed = load_printed("thesis")
     a, ratio = p["sim_coil_radius"].value_si, p["sim_spacing_ratio"].value_si
     n, i = p["sim_turns"].value_si, p["sim_current"].value_si
     dw, rho = p["sim_wire_diameter"].value_si, p["copper_resistivity"].value_si
     h = p["sim_design_h"].value_si
+    ni = float(coils.helmholtz_ampere_turns(h, a, ratio * a))
+    ni_slip = float(thesis_printed_ampere_turns(h, a, ratio))
+    resistance = float(coils.winding_resistance(a, n, dw, rho))
+    power = float(coils.winding_power(a, n, dw, rho, i))
+    # The turns the printed resistance implies (R is proportional to N): the thesis's R and P
+    # were computed for this N, not for the 110 turns it states.
+    n_printed = round(printed["thesis-sim-coil-resistance"].value_as_printed / resistance * n)
+    r_printed_n = float(coils.winding_resistance(a, n_printed, dw, rho))
+    i_printed_n = printed["thesis-sim-ampere-turns"].value_as_printed / n_printed
     return [
-        SourceCheck(
-            id="thesis-sim-ampere-turns", chapter="ch02", source="thesis",
-            location="§2.2, eq. (16)", quantity="Ampere-turns per coil for 250 A/m (a = 0.5 m, d/a = 1.116)",
-            printed=258.0, computed=float(coils.helmholtz_ampere_turns(h, a, ratio * a)), tolerance=0.5,
-            unit="A", explanation=("Eq. (16) gives 187.7 A·turns; the printed 258 is reproduced exactly by "
-                                   "evaluating (d/2a)² as (d/a)²/2 (magbench.coils.thesis_printed_ampere_turns)."),
+        SourceCheck.from_printed(
+            printed["thesis-sim-ampere-turns"], id="thesis-sim-ampere-turns", chapter="ch02",
+            location="§2.2, eq. (16)", quantity=f"Ampere-turns per coil for {h:g} A/m (a = {a:g} m, d/a = {ratio:g})",
+            computed=ni, unit="A",
+            explanation=(f"Eq. (16) gives {ni:.1f} A·turns; the printed {ni_slip:.0f} is reproduced exactly by "
+                         "evaluating (d/2a)² as (d/a)²/2 (magbench.coils.thesis_printed_ampere_turns)."),
             computation="magbench.coils.helmholtz_ampere_turns"),
-        SourceCheck(
-            id="thesis-sim-coil-resistance", chapter="ch02", source="thesis",
-            location="§2.2", quantity="Resistance of a simulator coil, N = 110, 0.75 mm copper",
-            printed=12.4, computed=float(coils.winding_resistance(a, n, dw, rho)), tolerance=0.05,
-            unit="ohm", explanation="R = 2πaρN/S0 gives 13.69 Ω; 12.4 Ω is the value for N = 100.",
+        SourceCheck.from_printed(
+            printed["thesis-sim-coil-resistance"], id="thesis-sim-coil-resistance", chapter="ch02",
+            location="§2.2", quantity=f"Resistance of a simulator coil, N = {n:.0f}, {dw * 1e3:g} mm copper",
+            computed=resistance, unit="ohm",
+            explanation=(f"R = 2πaρN/S0 gives {resistance:.2f} Ω; {r_printed_n:.1f} Ω is the value for "
+                         f"N = {n_printed:.0f}."),
             computation="magbench.coils.winding_resistance"),
-        SourceCheck(
-            id="thesis-sim-coil-power", chapter="ch02", source="thesis",
-            location="§2.2", quantity="Power of a simulator coil, N = 110, I = 2.3 A",
-            printed=83.0, computed=float(coils.winding_power(a, n, dw, rho, i)), tolerance=0.5,
-            unit="W", explanation="P = UI gives 72.4 W; 83 W fits N = 100 and I = 2.58 A (NI = 258).",
+        SourceCheck.from_printed(
+            printed["thesis-sim-coil-power"], id="thesis-sim-coil-power", chapter="ch02",
+            location="§2.2", quantity=f"Power of a simulator coil, N = {n:.0f}, I = {i:g} A",
+            computed=power, unit="W",
+            explanation=(f"P = UI gives {power:.1f} W; {r_printed_n * i_printed_n ** 2:.0f} W fits N = "
+                         f"{n_printed:.0f} and I = {i_printed_n:.2f} A (NI = {n_printed * i_printed_n:.0f})."),
             computation="magbench.coils.winding_power"),
     ]
 
@@ -176,9 +188,11 @@ def simulator_field_checks():
 
     p = load_parameter_set("thesis")
     m = load_measurements("thesis")
+    printed, kov = load_printed("thesis"), load_printed("kovalenko")
     v = {k: p[k].value_si for k in ("mockup_inertia", "mockup_magnet_moment", "oscillation_period",
                                     "oscillation_amplitude", "sim_built_radius", "sim_built_spacing",
-                                    "sim_turns", "sim_current", "sim_wire_diameter", "copper_resistivity")}
+                                    "sim_turns", "sim_current", "sim_wire_diameter", "copper_resistivity",
+                                    "sim_design_h")}
     h_printed_eq = float(coils.oscillation_field_h(v["mockup_inertia"], v["mockup_magnet_moment"],
                                                    v["oscillation_period"]))
     h_with_a = float(coils.oscillation_field_h(v["mockup_inertia"], v["mockup_magnet_moment"],
@@ -186,87 +200,98 @@ def simulator_field_checks():
     a, d, n, i = v["sim_built_radius"], v["sim_built_spacing"], v["sim_turns"], v["sim_current"]
     h_built = float(coils.helmholtz_center_h(i, n, a, d))
     measured = m["sim-center-h"].value
-    r_max, i_max = m["sim-coil-resistance-max"].value, m["sim-current-max"].value
+    r_max, i_max = printed["sim-coil-resistance-max"].value, printed["sim-current-max"].value
+    voltage = float(coils.winding_voltage(a, n, v["sim_wire_diameter"], v["copper_resistivity"], i))
+    resistance = float(coils.winding_resistance(a, n, v["sim_wire_diameter"], v["copper_resistivity"]))
+    ni_printed = printed["thesis-sim-ampere-turns"].value_as_printed
+    n_printed_r = round(printed["thesis-sim-coil-resistance"].value_as_printed / resistance * n)
     circle2, helm = ["circle"] * 2, ([1.0, 1.0], [-0.5, 0.5], [1.0, 1.0])
     four = (["circle"] * 4, [1.0] * 4, [-1.0, -0.25, 0.25, 1.0], [7.0, 3.0, 3.0, 7.0])
     four_dev = coils.coaxial_system_sphere_nonuniformity(*four, 2.0 / 3.0)
+    half_radius_dev = coils.coaxial_system_sphere_nonuniformity(*four, 0.5)
+    helmholtz_radius = (2.0 / 3.0) / coils.uniform_sphere_radius(1.0, 1.0, four_dev)
     rubens = (["square"] * 5, [1.0] * 5, [-0.5, -0.25, 0.0, 0.25, 0.5], [19.0, 4.0, 10.0, 4.0, 19.0])
+    rubens_dev = 100 * coils.coaxial_system_cylinder_nonuniformity(*rubens, 0.25, 0.5)
+    design_h = v["sim_design_h"]
+    deviation_printed = printed["sim-center-h-deviation"]
     return [
-        SourceCheck(
-            id="thesis-eq15-required-field", chapter="ch02", source="thesis",
+        SourceCheck.from_printed(
+            printed["thesis-eq15-field"], id="thesis-eq15-required-field", chapter="ch02",
             location="§2.1, eq. (15)", quantity="Field for a 60 s swing, eq. (15) as printed",
-            printed=200.0, computed=h_printed_eq, tolerance=50.0, unit="A/m",
-            explanation=("4π²J/(μ0 m T²) with J = 0.005 kg·m², m = 0.6 A·m², T = 60 s is 72.7 A/m. The "
-                         "printed ≈ 200 A/m needs the amplitude factor A = π that line 236 defines and "
-                         "eq. (15) drops (228.5 A/m), a factor with no place in a small-oscillation period."),
+            computed=h_printed_eq, unit="A/m",
+            explanation=(f"4π²J/(μ0 m T²) with J = {v['mockup_inertia']:g} kg·m², m = {v['mockup_magnet_moment']:g} "
+                         f"A·m², T = {v['oscillation_period']:g} s is {h_printed_eq:.1f} A/m. The printed ≈ 200 A/m "
+                         f"needs the amplitude factor A = π that the thesis defines beside eq. (15) and eq. (15) drops "
+                         f"({h_with_a:.1f} A/m), a factor with no place in a small-oscillation period."),
             computation="magbench.coils.oscillation_field_h"),
-        SourceCheck(
-            id="thesis-eq15-with-amplitude", chapter="ch02", source="thesis",
+        SourceCheck.from_printed(
+            printed["thesis-eq15-field"], id="thesis-eq15-with-amplitude", chapter="ch02",
             location="§2.1, eq. (15) with A = π", quantity="Field for a 60 s swing, with the factor A = π",
-            printed=200.0, computed=h_with_a, tolerance=50.0, unit="A/m",
-            explanation="4π²JA/(μ0 m T²) = 228.5 A/m, which '≈ 200' rounds down (one printed digit).",
+            computed=h_with_a, unit="A/m",
+            explanation=f"4π²JA/(μ0 m T²) = {h_with_a:.1f} A/m, which '≈ 200' rounds down (one printed digit).",
             computation="magbench.coils.oscillation_field_h"),
-        SourceCheck(
-            id="thesis-sim-coil-voltage", chapter="ch02", source="thesis",
-            location="§2.2", quantity="Supply voltage of a simulator coil, N = 110, I = 2.3 A",
-            printed=32.0, computed=float(coils.winding_voltage(a, n, v["sim_wire_diameter"],
-                                                               v["copper_resistivity"], i)),
-            tolerance=0.5, unit="V",
-            explanation=("U = RI = 31.48 V, just outside the printed digit; U depends on NI only and "
-                         "NI = 258 (the slipped eq. 16) gives 32.1 V, like R and P computed for N = 100."),
+        SourceCheck.from_printed(
+            printed["thesis-sim-coil-voltage"], id="thesis-sim-coil-voltage", chapter="ch02",
+            location="§2.2", quantity=f"Supply voltage of a simulator coil, N = {n:.0f}, I = {i:g} A",
+            computed=voltage, unit="V",
+            explanation=(f"U = RI = {voltage:.2f} V, just outside the printed digit; U depends on NI only and "
+                         f"NI = {ni_printed:.0f} (the slipped eq. 16) gives {voltage * ni_printed / (n * i):.1f} V, "
+                         f"like R and P computed for N = {n_printed_r:.0f}."),
             computation="magbench.coils.winding_voltage"),
-        SourceCheck(
-            id="thesis-sim-power-at-limit", chapter="ch02", source="thesis",
-            location="§2.4", quantity="Power of one coil at 2.6 A and 13 Ω",
-            printed=m["sim-coil-power-max"].value, computed=i_max**2 * r_max, tolerance=0.05, unit="W",
-            explanation="I²R = 2.6² × 13 = 87.88 W (with the measured 13 Ω; 13.69 Ω would give 92.5 W).",
+        SourceCheck.from_printed(
+            printed["sim-coil-power-max"], id="thesis-sim-power-at-limit", chapter="ch02",
+            location="§2.4", quantity=f"Power of one coil at {i_max:g} A and {r_max:g} Ω",
+            computed=i_max**2 * r_max, unit="W",
+            explanation=(f"I²R = {i_max:g}² × {r_max:g} = {i_max**2 * r_max:.2f} W (with the measured {r_max:g} Ω; "
+                         f"{resistance:.2f} Ω would give {i_max**2 * resistance:.1f} W)."),
             computation="I**2 * R"),
-        SourceCheck(
-            id="thesis-sim-center-deviation", chapter="ch02", source="thesis",
-            location="§2.4", quantity="Deviation of the measured 262 A/m from the calculated field",
-            printed=m["sim-center-h-deviation"].value * 100, computed=100 * (measured - h_built) / h_built,
-            tolerance=0.05, unit="%",
-            explanation=("(262 − 250)/250 = 4.8 % compares with the design target, not with what the coils "
-                         "as built should give: eq. (16) with 110 turns, 2.3 A, a = 0.5 m, d = 0.51 m gives "
-                         "357.7 A/m, 27 % above the measurement. The agreement rests on the NI slip."),
+        SourceCheck.from_printed(
+            deviation_printed, id="thesis-sim-center-deviation", chapter="ch02",
+            location="§2.4", quantity=f"Deviation of the measured {measured:g} A/m from the calculated field",
+            computed=100 * (measured - h_built) / h_built, unit="%",
+            explanation=(f"({measured:g} − {design_h:g})/{design_h:g} = {100 * (measured - design_h) / design_h:.1f} % "
+                         "compares with the design target, not with what the coils as built should give: eq. (16) "
+                         f"with {n:.0f} turns, {i:g} A, a = {a:g} m, d = {d:g} m gives {h_built:.1f} A/m, "
+                         f"and the measurement lies {100 * (1 - measured / h_built):.0f} % below it. The agreement rests on "
+                         "the NI slip."),
             computation="magbench.coils.helmholtz_center_h"),
-        SourceCheck(
-            id="kovalenko-helmholtz-cylinder", chapter="ch02", source="kovalenko",
+        SourceCheck.from_printed(
+            kov["kov-helmholtz-cylinder-deviation"], id="kovalenko-helmholtz-cylinder", chapter="ch02",
             location="§3.4, p. 60",
             quantity="Helmholtz pair: largest deviation in a cylinder of radius 0.1r, length 0.2r",
-            printed=0.02, computed=100 * coils.coaxial_system_cylinder_nonuniformity(circle2, *helm, 0.1, 0.2),
-            tolerance=0.005, unit="%", explanation="Exact loop fields on a grid of the solid cylinder.",
+            computed=100 * coils.coaxial_system_cylinder_nonuniformity(circle2, *helm, 0.1, 0.2), unit="%",
+            explanation="Exact loop fields on a grid of the solid cylinder.",
             computation="magbench.coils.coaxial_system_cylinder_nonuniformity"),
-        SourceCheck(
-            id="kovalenko-square-pair-spacing", chapter="ch02", source="kovalenko",
+        SourceCheck.from_printed(
+            kov["kov-square-pair-spacing"], id="kovalenko-square-pair-spacing", chapter="ch02",
             location="§3.4, p. 60", quantity="Square Helmholtz pair: spacing / side",
-            printed=0.5445, computed=float(coils.square_pair_spacing(1.0)), tolerance=0.00005, unit="1",
+            computed=float(coils.square_pair_spacing(1.0)), unit="1",
             explanation="Zero curvature of the axial field at the centre.",
             computation="magbench.coils.square_pair_spacing"),
-        SourceCheck(
-            id="kovalenko-rubens-cylinder", chapter="ch02", source="kovalenko",
+        SourceCheck.from_printed(
+            kov["kov-rubens-cylinder-deviation"], id="kovalenko-rubens-cylinder", chapter="ch02",
             location="§3.4, pp. 61–62",
             quantity="Rubens coils: largest deviation in a cylinder of length a/2, radius a/4",
-            printed=1.0, computed=100 * coils.coaxial_system_cylinder_nonuniformity(*rubens, 0.25, 0.5),
-            tolerance=0.5, unit="%",
-            explanation="Five squares at 0, ±a/4, ±a/2 with ampere-turns 10 : 4 : 19; 1.15 % rounds to 1 %.",
+            computed=rubens_dev, unit="%",
+            explanation=(f"Five squares at 0, ±a/4, ±a/2 with ampere-turns 10 : 4 : 19; {rubens_dev:.2f} % rounds "
+                         "to 1 %."),
             computation="magbench.coils.coaxial_system_cylinder_nonuniformity"),
-        SourceCheck(
-            id="kovalenko-four-coil-sphere", chapter="ch02", source="kovalenko",
+        SourceCheck.from_printed(
+            kov["kov-four-coil-sphere-deviation"], id="kovalenko-four-coil-sphere", chapter="ch02",
             location="§3.4, p. 61",
             quantity="Four-coil system: largest deviation in a sphere of radius 2r/3",
-            printed=0.5, computed=100 * four_dev, tolerance=0.05, unit="%",
-            explanation=("Equal radii r, inner coils at ±0.25r, outer at ±r, ampere-turns 7 : 3 give 1.46 % "
-                         "in a sphere of radius 2r/3; 0.5 % holds only to a radius of about r/2."),
+            computed=100 * four_dev, unit="%",
+            explanation=(f"Equal radii r, inner coils at ±0.25r, outer at ±r, ampere-turns 7 : 3 give "
+                         f"{100 * four_dev:.2f} % in a sphere of radius 2r/3; within the printed digit of 0.5 % "
+                         f"only to a radius of about r/2 ({100 * half_radius_dev:.2f} % there)."),
             computation="magbench.coils.coaxial_system_sphere_nonuniformity"),
-        SourceCheck(
-            id="kovalenko-four-coil-helmholtz-size", chapter="ch02", source="kovalenko",
+        SourceCheck.from_printed(
+            kov["kov-four-coil-helmholtz-size"], id="kovalenko-four-coil-helmholtz-size", chapter="ch02",
             location="§3.4, p. 61",
             quantity="Helmholtz radius / four-coil radius for the same uniformity in the same sphere",
-            printed=2.0, computed=(2.0 / 3.0) / coils.uniform_sphere_radius(1.0, 1.0, four_dev),
-            tolerance=0.5, unit="1",
+            computed=helmholtz_radius, unit="1",
             explanation=("A Helmholtz pair reaches the four-coil system's computed deviation in the sphere "
-                         "of radius 2r/3 only with radius 1.9r: 'twice the size' holds."),
+                         f"of radius 2r/3 only with radius {helmholtz_radius:.1f}r: 'twice the size' holds."),
             computation="magbench.coils.uniform_sphere_radius"),
     ]
 

@@ -7,7 +7,7 @@ thesis eq. (32), the built coils beside their measurement, Kovalenko's actuator 
 import numpy as np
 
 from ..compare import make_row
-from ..io import load_measurements, load_parameter_set
+from ..io import load_measurements, load_parameter_set, load_printed
 from ..errata import SourceCheck, kovalenko_page
 from ._base import Chapter, chapter_parameters
 
@@ -39,11 +39,11 @@ def magnetorquer_rows(params=None):
         Chapter-3 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
     """
     from .. import magnetorquer as mtq
-    from ..io import load_measurements, load_wire_table
+    from ..io import load_wire_table
 
     p = params or chapter_parameters("ch03")
     rho, u, side, n = p["copper_resistivity"], p["mtq_voltage"], p["mtq_side"], p["mtq_turns"]
-    built = load_measurements("thesis")
+    built, printed = load_measurements("thesis"), load_printed("thesis")
     d = built["mtq-wire-diameter"].value
     table = load_wire_table("iec60317")
     d_tol = table.tolerance[int(np.argmin(np.abs(np.array(table.nominal_diameter) - d)))]
@@ -61,21 +61,23 @@ def magnetorquer_rows(params=None):
                  f"{src} §3.3 (measured, ≈ 55 Ω)", r_meas, r_model, r_spread + 0.5,
                  unit="ohm", note=f"model spread over d ± {d_tol * 1e6:.0f} µm: ±{r_spread:.2f} Ω"),
         make_row("mtq-resistance-computed", "Resistance the thesis computed for the built coil",
-                 f"{src} §3.3 (printed)", built["mtq-resistance-computed"].value, r_model,
-                 0.05, unit="ohm"),
+                 f"{src} §3.3 (printed)", printed["mtq-resistance-computed"].value, r_model,
+                 printed["mtq-resistance-computed"].resolution, unit="ohm"),
         make_row("mtq-moment", "Dipole moment of the built coil at 12 V (eq. 20)",
-                 f"{src} §3.3 (printed)", built["mtq-moment"].value,
-                 mtq.moment_from_voltage(u, side, mtq.wire_area(d), rho), 0.005, unit="A m^2",
+                 f"{src} §3.3 (printed)", printed["mtq-moment"].value,
+                 mtq.moment_from_voltage(u, side, mtq.wire_area(d), rho), printed["mtq-moment"].resolution,
+                 unit="A m^2",
                  note=f"with the measured resistance: {u / r_meas * n * float(square):.3f} A·m²"),
         make_row("mtq-power", "Joule power of the built coil at 12 V (measured resistance)",
                  "thesis §3.2 (the design's 2 W)", p["mtq_max_power"],
                  mtq.joule_power(u, r_meas), 0.5, unit="W"),
         make_row("mtq-current-for-moment", "Coil current for 0.4 A·m² (square, N = 240)",
-                 "thesis §4.1 (printed)", 0.24,
-                 mtq.current_for_moment(p["mtq_moment"], n, square), 0.005, unit="A"),
+                 "thesis §4.1 (printed)", printed["thesis-mtq-current-024"].value,
+                 mtq.current_for_moment(p["mtq_moment"], n, square),
+                 printed["thesis-mtq-current-024"].resolution, unit="A"),
         make_row("mtq-winding-length", "Single-layer winding length N·√S_r at N = 240",
-                 "thesis §3.2 (printed, ≈ 0.1 m)", 0.1,
-                 mtq.winding_length(n, s_design), 0.05, unit="m"),
+                 "thesis §3.2 (printed, ≈ 0.1 m)", printed["thesis-mtq-winding-length"].value,
+                 mtq.winding_length(n, s_design), printed["thesis-mtq-winding-length"].resolution, unit="m"),
     ]
 
 
@@ -87,47 +89,59 @@ def magnetorquer_checks():
     p = load_parameter_set("thesis")
     rho, u, side = p["copper_resistivity"].value_si, p["mtq_voltage"].value_si, p["mtq_side"].value_si
     m_req, n = p["mtq_moment"].value_si, p["mtq_turns"].value_si
-    built = load_measurements("thesis")
+    built, printed = load_measurements("thesis"), load_printed("thesis")
     s_built = mtq.wire_area(built["mtq-wire-diameter"].value)
     s_design = mtq.wire_area_for_moment(m_req, u, side, rho)
+    m_built = float(mtq.moment_from_voltage(u, side, s_built, rho))
+    r_square = float(mtq.coil_resistance(n, side, s_built, rho, "square"))
+    m_mixed = u / r_square * n * float(mtq.turn_area(side, "round"))      # square-turn R, round-turn area
+    i_for_m = float(mtq.current_for_moment(m_req, n, mtq.turn_area(side, "square")))
+    length = float(mtq.winding_length(n, s_design))
+    d_design, d_printed_area = float(mtq.wire_diameter(s_design)), float(mtq.wire_diameter(printed["thesis-mtq-wire-area"].value))
+    kov_torque = float(mtq.magnet_torque_per_mass(1.4, 0.5e-4, 7.5e3))
     return [
         SourceCheck(
             id="thesis-mtq-built-moment", chapter="ch03", source="thesis",
             location="§3.3", quantity="Dipole moment of the built coil at 12 V (eq. 20)",
-            printed=built["mtq-moment"].value, computed=float(mtq.moment_from_voltage(u, side, s_built, rho)),
-            tolerance=0.005, unit="A m^2",
-            explanation=("Eq. (20) with the 0.2 mm wire gives 0.539 A·m² for round and square turns "
-                         "alike; 0.42 follows from mixing the square-turn resistance (53.5 Ω) with the "
-                         "round-turn area πl²/4."),
+            printed=printed["mtq-moment"].value, computed=m_built,
+            tolerance=printed["mtq-moment"].resolution, unit="A m^2",
+            explanation=(f"Eq. (20) with the {built['mtq-wire-diameter'].value * 1e3:g} mm wire gives {m_built:.3f} A·m² "
+                         f"for round and square turns alike; {m_mixed:.2f} follows from mixing the square-turn "
+                         f"resistance ({r_square:.1f} Ω) with the round-turn area πl²/4."),
             computation="magbench.magnetorquer.moment_from_voltage"),
         SourceCheck(
             id="thesis-mtq-current-for-moment", chapter="ch03", source="thesis",
             location="§4.1", quantity="Coil current for 0.4 A·m² (m = I S N, square, N = 240)",
-            printed=0.24, computed=float(mtq.current_for_moment(m_req, n, mtq.turn_area(side, "square"))),
-            tolerance=0.005, unit="A",
-            explanation="I = m/(N l²) = 0.167 A; line 524 then says 0.25 A, which fits neither.",
+            printed=printed["thesis-mtq-current-024"].value, computed=i_for_m,
+            tolerance=printed["thesis-mtq-current-024"].resolution, unit="A",
+            explanation=(f"I = m/(N l²) = {i_for_m:.3f} A; §4.1 then says "
+                         f"{printed['thesis-mtq-current-025'].value:g} A, which fits neither."),
             computation="magbench.magnetorquer.current_for_moment"),
         SourceCheck(
             id="thesis-mtq-winding-length", chapter="ch03", source="thesis",
             location="§3.2", quantity="Single-layer winding length N·√S_r at N = 240",
-            printed=0.1, computed=float(mtq.winding_length(n, s_design)), tolerance=0.05, unit="m",
-            explanation="N = L/√S_r (the thesis's own relation) gives L = 0.037 m, not ≈ 0.1 m.",
+            printed=printed["thesis-mtq-winding-length"].value, computed=length,
+            tolerance=printed["thesis-mtq-winding-length"].resolution, unit="m",
+            explanation=(f"N = L/√S_r (the thesis's own relation) gives L = {length:.3f} m, not "
+                         f"≈ {printed['thesis-mtq-winding-length'].value:g} m."),
             computation="magbench.magnetorquer.winding_length"),
         SourceCheck(
             id="thesis-mtq-wire-area", chapter="ch03", source="thesis",
             location="§3.2", quantity="Conductor cross-section S_r = 4ρm/(Ul) (eq. 21)",
-            printed=2.34e-8, computed=float(s_design), tolerance=0.005e-8, unit="m^2",
-            explanation=("Eq. (21) gives 2.333·10⁻⁸ m², printed rounded up; the printed wire diameter "
-                         "0.172 mm follows from 2.333 (2.34 would give 0.173 mm)."),
+            printed=printed["thesis-mtq-wire-area"].value, computed=float(s_design),
+            tolerance=printed["thesis-mtq-wire-area"].resolution, unit="m^2",
+            explanation=(f"Eq. (21) gives {s_design * 1e8:.3f}·10⁻⁸ m², printed rounded up; the printed wire "
+                         f"diameter {printed['thesis-mtq-wire-diameter'].value_as_printed:g} mm follows from "
+                         f"{s_design * 1e8:.3f} ({d_design * 1e3:.3f} mm; 2.34 would give {d_printed_area * 1e3:.3f} mm)."),
             computation="magbench.magnetorquer.wire_area_for_moment"),
         SourceCheck(
             id="kovalenko-e02-torque-per-mass", chapter="ch03", source="kovalenko",
             location="eq. (1.7), p. 30",
             quantity="Torque per kilogram of permanent magnet (B_r = 1.4 T, B = 0.5·10⁻⁴ T, γ = 7500 kg/m³)",
-            printed=load_measurements("kovalenko")["kov-magnet-torque-per-mass"].value,
-            computed=float(mtq.magnet_torque_per_mass(1.4, 0.5e-4, 7.5e3)),
-            tolerance=0.005e-2, unit="N m/kg",
-            explanation="B_r B/(μ0 γ) = 0.743·10⁻² N·m/kg, printed rounded up; 135 kg per N·m does reproduce.",
+            printed=load_printed("kovalenko")["kov-magnet-torque-per-mass"].value, computed=kov_torque,
+            tolerance=load_printed("kovalenko")["kov-magnet-torque-per-mass"].resolution, unit="N m/kg",
+            explanation=(f"B_r B/(μ0 γ) = {kov_torque * 1e2:.3f}·10⁻² N·m/kg, printed rounded up; "
+                         f"{load_printed('kovalenko')['kov-magnet-mass-per-torque'].value:g} kg per N·m does reproduce."),
             computation="magbench.magnetorquer.magnet_torque_per_mass"),
     ]
 
@@ -145,106 +159,126 @@ def magnetorquer_design_checks():
     rho, gamma = p["copper_resistivity"].value_si, p["copper_density"].value_si
     u, side, m_req = p["mtq_voltage"].value_si, p["mtq_side"].value_si, p["mtq_moment"].value_si
     w_max, m_max, n = p["mtq_max_power"].value_si, p["mtq_max_mass"].value_si, p["mtq_turns"].value_si
-    built = load_measurements("thesis")
+    built, printed = load_measurements("thesis"), load_printed("thesis")
     s_built = mtq.wire_area(built["mtq-wire-diameter"].value)
     s_design = mtq.wire_area_for_moment(m_req, u, side, rho)
     lo, hi = mtq.turns_per_volt_bounds(m_req, side, w_max, m_max, rho, gamma, "square")
     r_built = float(mtq.coil_resistance(n, side, s_built, rho, "square"))
+    r_round = float(mtq.coil_resistance(n, side, s_built, rho, "round"))
     r_meas = built["mtq-resistance"].value
-    sq = "square turn of side l = 0.1 m (eqs. 28–31)"
+    mass_coefficient = float(mtq.coil_mass_for_moment(m_req, 1.0, 1.0, rho, gamma, "square"))
+    power_coefficient = float(mtq.joule_power_for_moment(m_req, 1.0, 1.0, side, "square"))
+    mass_round = float(mtq.coil_mass_for_moment(m_req, u, n, rho, gamma, "round"))
+    p_built = float(mtq.joule_power(u, r_built))
+    # The fewest turns that keep the built wire within the power limit: W = U²/R, R ∝ N.
+    n_for_limit = int(np.ceil(n * (u**2 / w_max) / r_built))
+    sq = f"square turn of side l = {side:g} m (eqs. 28–31)"
 
-    def check(id, location, quantity, printed, computed, tolerance, unit, explanation, computation):
-        return SourceCheck(id=id, chapter="ch03", source="thesis", location=location,
-                           quantity=quantity, printed=printed, computed=float(computed),
-                           tolerance=tolerance, unit=unit, explanation=explanation,
-                           computation=f"magbench.magnetorquer.{computation}")
+    def check(id, row, location, computed, unit, explanation, computation, *, quantity=None, scale=1.0):
+        return SourceCheck.from_printed(printed[row], id=id, chapter="ch03", location=location,
+                                        quantity=quantity, computed=computed, unit=unit, scale=scale,
+                                        explanation=explanation,
+                                        computation=f"magbench.magnetorquer.{computation}")
 
     return [
-        check("thesis-mtq-rho-rho", "§3.2, eq. (32)", "Product ρρ̃ of copper", 0.156e-3,
-              rho * gamma, 0.0005e-3, "ohm kg/m^2", "0.0175·10⁻⁶ × 8.9·10³.", "mass_power_product"),
-        check("thesis-mtq-eq32-mass", "§3.2, eq. (32)", "Mass coefficient 16ρρ̃m in M = c·N/U",
-              1e-3, mtq.coil_mass_for_moment(m_req, 1.0, 1.0, rho, gamma, "square"), 0.5e-3, "kg V",
-              f"0.997·10⁻³ with the {sq}.", "coil_mass_for_moment"),
-        check("thesis-mtq-eq32-power", "§3.2, eq. (32)", "Power coefficient m/l² in W = c·U/N",
-              40.0, mtq.joule_power_for_moment(m_req, 1.0, 1.0, side, "square"), 0.5, "W/V",
-              f"m/l² = 40 with the {sq}.", "joule_power_for_moment"),
-        check("thesis-mtq-turns-min", "§3.2", "Fewest turns for W ≤ 2 W at 12 V",
-              240.0, lo * u, 6.0, "1", "12 V × the printed N/U ≥ 20; tolerance 12 × half a unit of 20.",
-              "turns_per_volt_bounds"),
-        check("thesis-mtq-turns-max", "§3.2", "Most turns for M ≤ 0.1 kg at 12 V",
-              1200.0, hi * u, 6.0, "1", "1203.8: the thesis rounded 16ρρ̃m = 0.997·10⁻³ to 10⁻³.",
-              "turns_per_volt_bounds"),
-        check("thesis-mtq-design-mass", "§3.2", "Conductor mass at N = 240", 0.02,
-              mtq.coil_mass_for_moment(m_req, u, n, rho, gamma, "square"), 0.005, "kg",
-              f"Eq. (29), {sq}; a round turn would give 0.0157 kg.", "coil_mass_for_moment"),
-        check("thesis-mtq-design-power", "§3.2", "Joule power at N = 240", 2.0,
-              mtq.joule_power_for_moment(m_req, u, n, side, "square"), 0.5, "W", "Eq. (28).",
-              "joule_power_for_moment"),
-        check("thesis-mtq-wire-diameter", "§3.2", "Wire diameter for S_r of eq. (21)",
-              0.172e-3, mtq.wire_diameter(s_design), 0.0005e-3, "m", "√(4S_r/π) with S_r = 2.333·10⁻⁸ m².",
-              "wire_diameter"),
-        check("thesis-mtq-resistance", "§3.3", "Resistance of the built coil (0.2 mm, N = 240)",
-              built["mtq-resistance-computed"].value, r_built, 0.05, "ohm",
-              f"N·ρ·4l/S_r with the {sq}; 42.0 Ω if the turn were round.", "coil_resistance"),
-        check("thesis-mtq-resistance-excess", "§3.3",
-              "Excess of the measured ≈ 55 Ω over the computed resistance", 3.0,
-              100.0 * (r_meas - r_built) / r_built, 0.5, "%", "(55 − 53.48)/53.48.", "coil_resistance"),
-        check("thesis-mtq-built-power", "§3.2–3.3",
-              "Joule power of the built coil at 12 V, against the design's 2 W", 2.0,
-              mtq.joule_power(u, r_built), 0.5, "W",
-              ("The 0.2 mm wire (thicker than the 0.172 mm design) at N = 240 draws 12²/53.5 = 2.69 W, "
-               "above the W ≤ 2 W limit the thesis set itself; N ≥ 324 turns would keep it."),
-              "joule_power"),
-        check("thesis-mtq-current-025", "§4.1", "Coil current for 0.4 A·m² (second value)",
-              0.25, mtq.current_for_moment(m_req, n, mtq.turn_area(side, "square")), 0.005, "A",
-              "I = m/(N l²) = 0.167 A; line 516 says 0.24 A for the same moment.", "current_for_moment"),
+        check("thesis-mtq-rho-rho", "thesis-mtq-rho-rho", "§3.2, eq. (32)", rho * gamma, "ohm kg/m^2",
+              f"{rho * 1e6:g}·10⁻⁶ × {gamma / 1e3:g}·10³.", "mass_power_product",
+              quantity="Product ρρ̃ of copper"),
+        check("thesis-mtq-eq32-mass", "thesis-mtq-eq32-mass", "§3.2, eq. (32)", mass_coefficient, "kg V",
+              f"{mass_coefficient * 1e3:.3f}·10⁻³ with the {sq}.", "coil_mass_for_moment",
+              quantity="Mass coefficient 16ρρ̃m in M = c·N/U"),
+        check("thesis-mtq-eq32-power", "thesis-mtq-eq32-power", "§3.2, eq. (32)", power_coefficient, "W/V",
+              f"m/l² = {power_coefficient:g} with the {sq}.", "joule_power_for_moment",
+              quantity="Power coefficient m/l² in W = c·U/N"),
+        check("thesis-mtq-turns-min", "thesis-mtq-turns-min", "§3.2", lo * u, "1",
+              f"{u:g} V × the printed N/U ≥ {lo:.0f}; tolerance {u:g} × half a unit of {lo:.0f}.",
+              "turns_per_volt_bounds", quantity=f"Fewest turns for W ≤ {w_max:g} W at {u:g} V"),
+        check("thesis-mtq-turns-max", "thesis-mtq-turns-max", "§3.2", hi * u, "1",
+              f"{hi * u:.1f}: the thesis rounded 16ρρ̃m = {mass_coefficient * 1e3:.3f}·10⁻³ to 10⁻³.",
+              "turns_per_volt_bounds", quantity=f"Most turns for M ≤ {m_max:g} kg at {u:g} V"),
+        check("thesis-mtq-design-mass", "thesis-mtq-design-mass", "§3.2",
+              mtq.coil_mass_for_moment(m_req, u, n, rho, gamma, "square"), "kg",
+              f"Eq. (29), {sq}; a round turn would give {mass_round:.4f} kg.", "coil_mass_for_moment",
+              quantity=f"Conductor mass at N = {n:.0f}"),
+        check("thesis-mtq-design-power", "thesis-mtq-design-power", "§3.2",
+              mtq.joule_power_for_moment(m_req, u, n, side, "square"), "W", "Eq. (28).",
+              "joule_power_for_moment", quantity=f"Joule power at N = {n:.0f}"),
+        check("thesis-mtq-wire-diameter", "thesis-mtq-wire-diameter", "§3.2", mtq.wire_diameter(s_design), "m",
+              f"√(4S_r/π) with S_r = {s_design * 1e8:.3f}·10⁻⁸ m².", "wire_diameter"),
+        check("thesis-mtq-resistance", "mtq-resistance-computed", "§3.3", r_built, "ohm",
+              f"N·ρ·4l/S_r with the {sq}; {r_round:.1f} Ω if the turn were round.", "coil_resistance",
+              quantity=f"Resistance of the built coil ({built['mtq-wire-diameter'].value * 1e3:g} mm, N = {n:.0f})"),
+        check("thesis-mtq-resistance-excess", "thesis-mtq-resistance-excess", "§3.3",
+              100.0 * (r_meas - r_built) / r_built, "%", f"({r_meas:g} − {r_built:.2f})/{r_built:.2f}.",
+              "coil_resistance",
+              quantity=f"Excess of the measured ≈ {r_meas:g} Ω over the computed resistance"),
+        check("thesis-mtq-built-power", "thesis-mtq-design-power", "§3.2–3.3", p_built, "W",
+              (f"The {built['mtq-wire-diameter'].value * 1e3:g} mm wire (thicker than the {d_mm(s_design)} mm "
+               f"design) at N = {n:.0f} draws {u:g}²/{r_built:.1f} = {p_built:.2f} W, above the W ≤ {w_max:g} W "
+               f"limit the thesis set itself; N ≥ {n_for_limit} turns would keep it."),
+              "joule_power",
+              quantity=f"Joule power of the built coil at {u:g} V, against the design's {w_max:g} W"),
+        check("thesis-mtq-current-025", "thesis-mtq-current-025", "§4.1",
+              mtq.current_for_moment(m_req, n, mtq.turn_area(side, "square")), "A",
+              (f"I = m/(N l²) = {float(mtq.current_for_moment(m_req, n, mtq.turn_area(side, 'square'))):.3f} A; "
+               f"§4.1 says {printed['thesis-mtq-current-024'].value:g} A a few lines earlier for the same moment."),
+              "current_for_moment", quantity=f"Coil current for {m_req:g} A·m² (second value)"),
     ]
+
+
+def d_mm(area):
+    """Wire diameter [mm, 3 decimals] of a conductor cross-section [m²], for explanations."""
+    from .. import magnetorquer as mtq
+
+    return f"{float(mtq.wire_diameter(area)) * 1e3:.3f}"
 
 
 def kovalenko_actuator_checks():
     """Kovalenko's (1975) worked examples on magnets and cored rods (his §1.3, ch. 9, 10, 12)."""
     from .. import magnetorquer as mtq
 
-    kov = load_measurements("kovalenko")
+    kov = load_printed("kovalenko")
     p = load_parameter_set("thesis")
     j_al, p0 = p["alnico_max_magnetization"].value_si, p["alnico_elongation"].value_si
     length1, diameter1, _ = mtq.permanent_magnet_min_mass(1.0, j_al, p0, 1.0)
-    table5_p = 75.63
+    table5_p = kov["kov-table5-p75"].value
     calc = 4 * np.pi * float(mtq.rod_demagnetizing_factor(table5_p))
+    measured40, computed40 = kov["kov-table5-measured-p40"].value, kov["kov-table5-computed-p40"].value
+    mass_per_torque = float(mtq.magnet_mass_for_torque(1.0, 1.4, 0.5e-4, 7.5e3))
+    transit = float(mtq.rod_demagnetizing_factor(248.0))
 
-    def check(id, row, quantity, computed, tolerance, unit, explanation, computation, scale=1.0):
+    def check(id, row, quantity, computed, unit, explanation, computation, scale=1.0):
         r = kov[row]
-        return SourceCheck(id=id, chapter="ch03", source="kovalenko",
-                           location=f"§{r.section}, p. {kovalenko_page(r.seed_line)}", quantity=quantity,
-                           printed=r.value * scale, computed=float(computed), tolerance=tolerance,
-                           unit=unit, explanation=explanation,
-                           computation=f"magbench.magnetorquer.{computation}")
+        return SourceCheck.from_printed(r, id=id, chapter="ch03", location=f"§{r.section}, p. {kovalenko_page(r.seed_line)}",
+                                        quantity=quantity, computed=computed, unit=unit, scale=scale,
+                                        explanation=explanation, computation=f"magbench.magnetorquer.{computation}")
 
     return [
         check("kovalenko-e02-mass-per-torque", "kov-magnet-mass-per-torque",
               "Magnet mass per N·m of torque (B_r = 1.4 T, B = 0.5·10⁻⁴ T, γ = 7500 kg/m³)",
-              mtq.magnet_mass_for_torque(1.0, 1.4, 0.5e-4, 7.5e3), 0.5, "kg/(N m)",
-              "μ0 γ/(B_r B) = 134.6 kg per N·m.", "magnet_mass_for_torque"),
+              mass_per_torque, "kg/(N m)", f"μ0 γ/(B_r B) = {mass_per_torque:.1f} kg per N·m.",
+              "magnet_mass_for_torque"),
         check("kovalenko-e36-length-coefficient", "kov-pm-length-coefficient",
-              "Least-mass magnet: l = c·∛L, coefficient c (ЮН13ДК25БА, p₀ = 7)", length1, 0.0005,
-              "m/(A m^2)^(1/3)", "(4p₀²/(π J_c max))^(1/3) = 0.04203 with J_c max = 8.4·10⁵ A/m.",
+              f"Least-mass magnet: l = c·∛L, coefficient c (ЮН13ДК25БА, p₀ = {p0:g})", length1,
+              "m/(A m^2)^(1/3)",
+              f"(4p₀²/(π J_c max))^(1/3) = {length1:.5f} with J_c max = {j_al / 1e5:.1f}·10⁵ A/m.",
               "permanent_magnet_min_mass"),
         check("kovalenko-e36-diameter-ratio", "kov-pm-diameter-ratio",
-              "Least-mass magnet: d/l = 1/p₀", diameter1 / length1, 0.0005, "1", "1/7 = 0.1429.",
+              "Least-mass magnet: d/l = 1/p₀", diameter1 / length1, "1", f"1/{p0:g} = {1 / p0:.4f}.",
               "permanent_magnet_min_mass"),
         check("kovalenko-table5-power-law", "kov-table5-calc-p75",
-              "Table 5, 4πN_ц by (9.25) at p = 75.63 (the row that deviates most)", calc, 0.000005, "1",
-              ("4π·0.93·p^−1.7 = 0.00748. The whole 'computed' column deviates from the formula by "
+              f"Table 5, 4πN_ц by (9.25) at p = {table5_p:g} (the row that deviates most)", calc, "1",
+              (f"4π·0.93·p^−1.7 = {calc:.5f}. The whole 'computed' column deviates from the formula by "
                "0.2–1.4 % (slide-rule arithmetic, presumably); (9.25) still fits the measured column "
                "within 5 %."), "rod_demagnetizing_factor"),
         check("kovalenko-table5-nu-p40", "kov-table5-nu-p40",
-              "Table 5, deviation ν at p = 40", 100 * (0.0218 - 0.0223) / 0.0223, 0.005, "%",
-              "(0.0218 − 0.0223)/0.0223 = −2.24 %: a misplaced decimal point.", "rod_demagnetizing_factor",
-              scale=100.0),
+              "Table 5, deviation ν at p = 40", 100 * (computed40 - measured40) / measured40, "%",
+              (f"({computed40:g} − {measured40:g})/{measured40:g} = "
+               f"{100 * (computed40 - measured40) / measured40:.2f} %: a misplaced decimal point.")
+              .replace("-", "−"), "rod_demagnetizing_factor"),
         check("kovalenko-e45-transit-rod", "kov-transit-rod-demag",
               "Central demagnetising factor of the Transit rods, p = 248 (9.25)",
-              mtq.rod_demagnetizing_factor(248.0), 0.005e-4, "1", "0.93·248^−1.7 = 0.791·10⁻⁴.",
-              "rod_demagnetizing_factor"),
+              transit, "1", f"0.93·248^−1.7 = {transit * 1e4:.3f}·10⁻⁴.", "rod_demagnetizing_factor"),
     ]
 
 

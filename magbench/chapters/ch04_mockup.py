@@ -9,6 +9,7 @@ import numpy as np
 from .. import attitude
 from ..compare import make_row
 from ..errata import SourceCheck
+from ..io import load_parameter_set
 from ._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "bench_rows", "dynamics_checks"]
@@ -69,40 +70,46 @@ def bench_rows(params=None):
     return rows
 
 
-def dynamics_checks(params=None):
-    """Thesis §4 (equations of motion and the PID): the sizing amplitude and the gains."""
+def dynamics_checks():
+    """Thesis §4 (equations of motion and the PID): the sizing amplitude and the gains,
+    on the thesis's own parameter set (never on a whole-book build's overrides)."""
     from .. import control
     from ..constants import MU_0
 
-    p = params or chapter_parameters("ch04")
+    p = {name: par.value_si for name, par in load_parameter_set("thesis").items()}
     j, m = p["mockup_inertia"], p["mtq_moment"]
     b0 = MU_0 * p["sim_design_h"]
     amplitude = attitude.amplitude_for_period(p["oscillation_period"], j, m, b0)
     sets = [(0.1, 0.5, 0.5), (0.2, 0.5, 0.5), (0.3, 0.5, 0.5), (0.1, 0.5, 1.0), (0.1, 0.5, 2.0),
             (0.1, 0.5, 3.0)]
     stable = sum(bool(np.all(control.closed_loop_poles(j, b0, *g).real < 0)) for g in sets)
+    # Routh–Hurwitz for J s³ + B0 Kd s² + B0 Kp s + B0 Ki: stable iff Ki < B0 Kp Kd / J.
+    excess = [ki / (b0 * kp * kd / j) for kp, ki, kd in sets]
     return [
         SourceCheck(
             id="thesis-eq14-design-amplitude", chapter="ch04", source="thesis",
             location="§2.1 and §3.2 (eqs. 14–15 with A = π)",
-            quantity="Amplitude at which the built design (m = 0.4 A·m², H = 250 A/m) swings with the design period 60 s",
+            quantity=(f"Amplitude at which the built design (m = {m:g} A·m², H = {p['sim_design_h']:g} A/m) swings "
+                      f"with the design period {p['oscillation_period']:g} s"),
             printed=float(np.degrees(p["oscillation_amplitude"])), computed=float(np.degrees(amplitude)),
             tolerance=0.5, unit="deg",
             explanation=("The thesis sizes field and coils with the small-angle eq. (14) at an amplitude "
                          "of π, where the exact period (an elliptic integral) is infinite: released upside "
-                         "down the pendulum never leaves. The design swings with a 60 s period only up to "
-                         "134°; at 180° no finite field gives 60 s."),
+                         f"down the pendulum never leaves. The design swings with a {p['oscillation_period']:g} s "
+                         f"period only up to {np.degrees(amplitude):.0f}°; at 180° no finite field gives "
+                         f"{p['oscillation_period']:g} s."),
             computation="magbench.attitude.amplitude_for_period"),
         SourceCheck(
             id="thesis-pid-gains-stable-si", chapter="ch04", source="thesis",
             location="§4.1 (Figs. 15–18)",
             quantity="Printed PID gain sets that give a stable loop with the gains read in SI",
             printed=float(len(sets)), computed=float(stable), tolerance=0.0, unit="1",
-            explanation=("Figs. 15–18 are presented as damped responses for six gain sets, but in SI "
-                         "(m in A·m², ψ in rad, B0 = μ0·250 A/m, J = 0.005 kg·m²) each violates the "
-                         "Routh–Hurwitz condition K_i < B0 K_p K_d / J by a factor 26–160: every loop is "
-                         "unstable. Only readings that multiply the gains by more than 160 (field in "
-                         "gauss or A/m, a torque-valued output) give damped curves."),
+            explanation=(f"Figs. 15–18 are presented as damped responses for {len(sets)} gain sets, but in SI "
+                         f"(m in A·m², ψ in rad, B0 = μ0·{p['sim_design_h']:g} A/m, J = {j:g} kg·m²) each "
+                         "violates the Routh–Hurwitz condition K_i < B0 K_p K_d / J by a factor "
+                         f"{min(excess):.0f}–{max(excess):.0f}: every loop is unstable. Only readings that "
+                         f"multiply the gains by more than {max(excess):.0f} (field in gauss or A/m, a "
+                         "torque-valued output) give damped curves."),
             computation="magbench.control.closed_loop_poles"),
     ]
 

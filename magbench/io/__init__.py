@@ -5,8 +5,8 @@ Everything the library reads from a file comes through here, so the physics fami
 never touch a file (the import-layer contract in ``pyproject.toml`` forbids it).
 """
 
-from .data import (DATA_DIR, WIRE_TABLES, DataError, Measurement, Parameter, WireTable, load_measurements,
-                   load_parameter_set, load_wire_table, measurement, to_si, verify_checksum)
+from .data import (DATA_DIR, WIRE_TABLES, DataError, Measurement, Parameter, WireTable, digit_resolution, load_measurements,
+                   load_parameter_set, load_printed, load_wire_table, measurement, to_si, verify_checksum)
 
-__all__ = ["DATA_DIR", "WIRE_TABLES", "DataError", "Measurement", "Parameter", "WireTable", "load_measurements",
-           "load_parameter_set", "load_wire_table", "measurement", "to_si", "verify_checksum"]
+__all__ = ["DATA_DIR", "WIRE_TABLES", "DataError", "Measurement", "Parameter", "WireTable", "digit_resolution", "load_measurements",
+           "load_parameter_set", "load_printed", "load_wire_table", "measurement", "to_si", "verify_checksum"]

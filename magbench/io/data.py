@@ -39,6 +39,8 @@ __all__ = [
     "to_si",
     "verify_checksum",
     "load_measurements",
+    "load_printed",
+    "digit_resolution",
     "measurement",
     "load_parameter_set",
     "WireTable",
@@ -53,7 +55,7 @@ DATA_DIR = Path(str(files("magbench") / "data"))
 _TO_SI = {
     "1": 1.0, "A": 1.0, "V": 1.0, "W": 1.0, "s": 1.0, "m": 1.0, "ohm": 1.0, "A/m": 1.0,
     "T": 1.0, "kg": 1.0, "kg m^2": 1.0, "kg/m^3": 1.0, "ohm m": 1.0, "A m^2": 1.0,
-    "rad": 1.0, "rad/s": 1.0, "year": 1.0, "N m/rad": 1.0,
+    "rad": 1.0, "rad/s": 1.0, "year": 1.0, "N m/rad": 1.0, "m^2": 1.0, "W/V": 1.0, "kg V": 1.0,
     "ohm kg/m^2": 1.0, "A/m^2": 1.0, "N m": 1.0, "N m/kg": 1.0, "kg/(N m)": 1.0,
     "mm": 1e-3, "km": 1e3, "cm": 1e-2,
     "deg": math.pi / 180.0,
@@ -100,6 +102,7 @@ class Measurement:
     seed_line: int
     method: str
     conditions: str
+    resolution: float | None = None
 
     @property
     def printed(self):
@@ -128,6 +131,16 @@ class Measurement:
     def si_unit(self):
         """The SI unit of :attr:`value`."""
         return to_si(1.0, self.unit)[1]
+
+    @property
+    def value_as_printed(self):
+        """The printed value in its printed unit (:attr:`unit`); the midpoint of a range."""
+        return 0.5 * (self.value_low + self.value_high)
+
+    @property
+    def resolution_si(self):
+        """:attr:`resolution` (half a unit of the last printed digit) in SI, or ``None``."""
+        return None if self.resolution is None else to_si(self.resolution, self.unit)[0]
 
 
 @dataclass(frozen=True)
@@ -222,7 +235,48 @@ def _number(text, path, lineno, column, *, optional=False):
 
 _MEASUREMENT_COLUMNS = ["id", "quantity", "value_low", "value_high", "unit", "uncertainty",
                         "kind", "section", "seed_line", "method", "conditions"]
+_PRINTED_COLUMNS = [*_MEASUREMENT_COLUMNS, "resolution"]
 _KINDS = {"measured", "printed", "simulated"}
+
+
+def digit_resolution(text):
+    """Half a unit of the last digit of a printed number: ``"12.4"`` -> 0.05, ``"2.34e-8"`` -> 5e-11.
+
+    The tolerance a printed value carries when the source states none: any value that
+    rounds to the printed digits is the printed value.
+
+    Examples
+    --------
+    >>> digit_resolution("258"), digit_resolution("0.5445"), digit_resolution("2.34e-8")
+    (0.5, 5e-05, 5e-11)
+    """
+    mantissa, _, exponent = text.strip().lower().partition("e")
+    decimals = len(mantissa.partition(".")[2])
+    return 0.5 * 10.0 ** (int(exponent or 0) - decimals)
+
+
+def load_printed(name="thesis", data_dir=None):
+    """Load a source's printed values ``<name>/printed.csv`` of the data directory.
+
+    The numbers the source prints as its own computations or design values, which the
+    errata set beside what the source's formulas and inputs give. Each row carries its
+    ``resolution``, half a unit of the last printed digit (stated in the file where the
+    digits alone would mislead, such as "≈ 200").
+
+    Parameters
+    ----------
+    name : str
+        Source key: its folder in the data directory (``"thesis"``).
+    data_dir : str or Path, optional
+        Data directory; defaults to :data:`DATA_DIR`.
+
+    Returns
+    -------
+    dict of str to Measurement
+        Rows (``kind == "printed"``) keyed by their id, in file order.
+    """
+    path = Path(data_dir or DATA_DIR) / name / "printed.csv"
+    return _load_rows(path, name, data_dir, _PRINTED_COLUMNS, {"printed"})
 
 
 def load_measurements(name="thesis", data_dir=None):
@@ -241,16 +295,27 @@ def load_measurements(name="thesis", data_dir=None):
         Rows keyed by their id, in file order.
     """
     path = Path(data_dir or DATA_DIR) / name / "measurements.csv"
+    return _load_rows(path, name, data_dir, _MEASUREMENT_COLUMNS, _KINDS)
+
+
+def _load_rows(path, name, data_dir, columns, kinds):
     lines = verify_checksum(path, data_dir).decode("utf-8").splitlines()
     rows = {}
-    for lineno, rec in _csv_records(lines, _MEASUREMENT_COLUMNS, path):
+    for lineno, rec in _csv_records(lines, columns, path):
         low = _number(rec["value_low"], path, lineno, "value_low")
         high = _number(rec["value_high"], path, lineno, "value_high")
         if high < low:
             raise DataError(f"{path}:{lineno}: value_high ({high}) is below value_low ({low})")
         unc = _number(rec["uncertainty"], path, lineno, "uncertainty", optional=True)
-        if rec["kind"] not in _KINDS:
-            raise DataError(f"{path}:{lineno}: kind must be one of {sorted(_KINDS)}, got {rec['kind']!r}")
+        if rec["kind"] not in kinds:
+            raise DataError(f"{path}:{lineno}: kind must be one of {sorted(kinds)}, got {rec['kind']!r}")
+        resolution = None
+        if "resolution" in rec:
+            resolution = _number(rec["resolution"], path, lineno, "resolution", optional=True)
+            if resolution is None:
+                resolution = digit_resolution(rec["value_low"])
+            elif resolution <= 0:
+                raise DataError(f"{path}:{lineno}: resolution must be > 0, got {resolution}")
         if rec["unit"] not in _TO_SI:
             raise DataError(f"{path}:{lineno}: unknown unit {rec['unit']!r}")
         if rec["id"] in rows:
@@ -259,7 +324,7 @@ def load_measurements(name="thesis", data_dir=None):
             id=rec["id"], quantity=rec["quantity"], value_low=low, value_high=high,
             unit=rec["unit"], uncertainty=unc, kind=rec["kind"], source=name,
             section=rec["section"], seed_line=int(_number(rec["seed_line"], path, lineno, "seed_line")),
-            method=rec["method"], conditions=rec["conditions"],
+            method=rec["method"], conditions=rec["conditions"], resolution=resolution,
         )
     return rows
 
