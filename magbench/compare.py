@@ -1,25 +1,58 @@
-"""Model beside measurement: one row per measured (or independently known) quantity.
+"""Model beside measurement, and printed values beside their computation: one type.
 
-A row holds the measured value with its source and uncertainty, the model's value,
-their difference and the tolerance within which they count as agreeing. The verdict
-is computed, never typed, and a disagreement is a finding, not an error.
+A :class:`Comparison` holds the value compared with (a measurement, an independent
+reference, the source's own simulation, or a number the source printed) with its
+provenance and uncertainty, the value the model or the source's own formula gives,
+their difference and the tolerance within which they count as agreeing. The verdict is
+computed, never typed, and a disagreement is a finding, not an error.
 
 Tolerances are never chosen to make a row agree: they come from the measurement's
 stated uncertainty, or, where the model rests on rounded printed inputs, from the
-spread of the model over those inputs' last printed digit.
+spread of the model over those inputs' last printed digit, or, for a printed value,
+from its own last printed digit.
 
-Each chapter contributes its rows (``magbench.chapters``: a chapter's ``comparisons``
-and the kind of each row); :func:`magbench.chapters.comparisons` walks them in book order.
+Two constructors: :func:`make_row` (model vs measurement, from SI values) and
+:func:`magbench.errata.source_check` / :func:`magbench.errata.printed_check` (a printed
+number beside the source's own formula). Each chapter contributes its rows and checks
+(``magbench.chapters``); :func:`magbench.chapters.comparisons` and
+:func:`magbench.chapters.source_checks` walk them in book order.
 """
 
-from dataclasses import asdict, dataclass
+from dataclasses import dataclass
 
-__all__ = ["CompareRow", "ROW_KINDS", "make_row"]
+__all__ = ["Comparison", "CompareRow", "ROW_KINDS", "make_row"]
 
 
 @dataclass(frozen=True)
-class CompareRow:
-    """One model-vs-measurement comparison (SI values; ``unit`` names the display unit)."""
+class Comparison:
+    """One value beside the model's (or the source's formula's) value.
+
+    Values are in the display unit ``unit``; ``scale`` is the SI value of one display
+    unit (``1e-6`` for µT, ``π/180`` for degrees), so ``measured * scale`` is SI.
+
+    Attributes
+    ----------
+    id, quantity : str
+        Stable id and what is compared.
+    source : str
+        Where the compared value comes from (a citation for rows, the source's key for
+        printed-value checks).
+    measured : float
+        The value compared with: measured, reference, simulated or printed [unit].
+    uncertainty : float or None
+        Its stated uncertainty [unit].
+    model : float
+        What the model (or the source's own formula and inputs) gives [unit].
+    difference : float
+        ``model − measured`` [unit], computed in SI.
+    tolerance : float
+        Largest ``|difference|`` that counts as agreement [unit].
+    verdict : str
+        ``"agrees"`` or ``"disagrees"``, computed.
+    chapter, location, note, computation : str
+        The chapter's key; the place in the source; the explanation; the library function
+        that computes ``model``.
+    """
 
     id: str
     quantity: str
@@ -32,12 +65,59 @@ class CompareRow:
     tolerance: float
     verdict: str
     note: str = ""
+    chapter: str = ""
+    location: str = ""
+    computation: str = ""
+    scale: float = 1.0
+
+    @property
+    def agrees(self):
+        """Whether the two values agree within ``tolerance``."""
+        return self.verdict == "agrees"
+
+    @property
+    def printed(self):
+        """The printed value of a printed-value check (the same as :attr:`measured`)."""
+        return self.measured
+
+    @property
+    def computed(self):
+        """What the source's formula gives (the same as :attr:`model`)."""
+        return self.model
+
+    @property
+    def explanation(self):
+        """The reader-facing explanation (the same as :attr:`note`)."""
+        return self.note
+
+    @property
+    def relative_difference(self):
+        """(measured − model) / |model| [-]: how far a printed value is off."""
+        return (self.measured - self.model) / abs(self.model)
+
+    @property
+    def measured_si(self):
+        """:attr:`measured` in SI."""
+        return self.measured * self.scale
+
+    @property
+    def model_si(self):
+        """:attr:`model` in SI."""
+        return self.model * self.scale
 
     def as_dict(self):
-        """The row as a JSON-ready dict with the public keys."""
-        d = asdict(self)
-        d.pop("note")
-        return d
+        """The row as a JSON-ready dict with the public keys of ``magbench compare --json``."""
+        return {key: getattr(self, key) for key in ("id", "quantity", "source", "measured", "uncertainty", "unit",
+                                                     "model", "difference", "tolerance", "verdict")}
+
+
+#: The former name of :class:`Comparison` for model-vs-measurement rows.
+CompareRow = Comparison
+
+
+def verdict(difference, tolerance):
+    """``"agrees"`` when |difference| ≤ tolerance, else ``"disagrees"``."""
+    return "agrees" if abs(float(difference)) <= float(tolerance) else "disagrees"
 
 
 def make_row(id, quantity, source, measured, model, tolerance, *, unit, uncertainty=None,
@@ -47,12 +127,11 @@ def make_row(id, quantity, source, measured, model, tolerance, *, unit, uncertai
     The verdict is ``"agrees"`` when |model − measured| ≤ tolerance, else ``"disagrees"``.
     """
     diff = float(model) - float(measured)
-    verdict = "agrees" if abs(diff) <= float(tolerance) else "disagrees"
-    return CompareRow(
+    return Comparison(
         id=id, quantity=quantity, source=source, measured=float(measured) / scale,
         uncertainty=None if uncertainty is None else float(uncertainty) / scale, unit=unit,
         model=float(model) / scale, difference=diff / scale, tolerance=float(tolerance) / scale,
-        verdict=verdict, note=note,
+        verdict=verdict(diff, tolerance), note=note, scale=float(scale),
     )
 
 

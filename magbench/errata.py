@@ -1,71 +1,63 @@
 """Printed numbers of the sources beside what their own formulas and inputs give.
 
-Each :class:`SourceCheck` keeps the value as printed, computes the value that the
-source's own formula and inputs (or correct physics) give, and carries the tolerance
-implied by the printed digits. Each chapter contributes its checks
-(``magbench.chapters``); those that disagree are the errata, which the book's errata
-page renders through :func:`magbench.chapters.errata`. ``tests/test_errata.py`` lists, independently of
-this module, which checks are expected to disagree: those become strict xfail tests
-asserting the printed value, the rest ordinary reference-value tests.
+A printed-value check is a :class:`magbench.compare.Comparison` whose ``measured``
+column is the value as printed (read from the source's ``printed.csv`` where the
+source prints it as a number) and whose ``model`` column is what the source's own
+formula and inputs (or correct physics) give; its tolerance is implied by the printed
+digits. Each chapter contributes its checks (``magbench.chapters``); those that
+disagree are the errata, which the book's errata page renders through
+:func:`magbench.chapters.errata`. The chapter tests list, independently of this module,
+which checks are expected to disagree: those become strict xfail tests asserting the
+printed value, the rest ordinary reference-value tests.
 """
 
-from dataclasses import dataclass
+from .compare import Comparison, verdict
 
-__all__ = ["SourceCheck", "kovalenko_page"]
+__all__ = ["source_check", "printed_check", "kovalenko_page"]
+
+#: The SI value of one display unit, for the units printed values are shown in.
+_UNIT_SCALE = {"deg": 0.017453292519943295, "%": 0.01, "Oe": 79.57747154594767, "mm": 1e-3}
 
 
-@dataclass(frozen=True)
-class SourceCheck:
-    """A printed value beside the value computed from the source's own inputs."""
+def source_check(*, id, chapter, source, location, quantity, printed, computed, tolerance, unit,
+                 explanation, computation):
+    """A printed value beside the value computed from the source's own inputs.
 
-    id: str
-    chapter: str
-    source: str
-    location: str
-    quantity: str
-    printed: float
-    computed: float
-    tolerance: float
-    unit: str
-    explanation: str
-    computation: str
+    ``printed``, ``computed`` and ``tolerance`` are in the display unit ``unit``; the
+    check agrees when |printed − computed| ≤ tolerance.
+    """
+    printed, computed = float(printed), float(computed)
+    return Comparison(id=id, quantity=quantity, source=source, measured=printed, uncertainty=None,
+                      unit=unit, model=computed, difference=computed - printed, tolerance=float(tolerance),
+                      verdict=verdict(printed - computed, tolerance), note=explanation, chapter=chapter,
+                      location=location, computation=computation, scale=_UNIT_SCALE.get(unit, 1.0))
 
-    @property
-    def relative_difference(self):
-        """(printed − computed) / |computed| [-]."""
-        return (self.printed - self.computed) / abs(self.computed)
 
-    @property
-    def agrees(self):
-        """Whether the printed value lies within ``tolerance`` of the computed one."""
-        return abs(self.printed - self.computed) <= self.tolerance
+def printed_check(row, *, id, chapter, location, computed, explanation, computation, quantity=None,
+                  unit=None, scale=1.0):
+    """A check of a printed value read from the source's data (``printed.csv``).
 
-    @classmethod
-    def from_printed(cls, row, *, id, chapter, location, computed, explanation, computation, quantity=None,
-                     unit=None, scale=1.0):
-        """A check of a printed value read from the source's data (``printed.csv``).
+    The printed value, its tolerance (half a unit of its last printed digit) and its
+    source come from ``row`` (a :class:`magbench.io.Measurement`), never from code.
 
-        The printed value, its tolerance (half a unit of its last printed digit) and its
-        source come from ``row`` (a :class:`magbench.io.Measurement`), never from code.
-
-        Parameters
-        ----------
-        row : magbench.io.Measurement
-            The printed value with its provenance and ``resolution``.
-        computed : float
-            What the source's own formula and inputs give, in the display unit.
-        unit : str, optional
-            Display unit. The row's printed unit (the default) shows the value as
-            printed; any other unit shows its SI value times ``scale`` (``100`` for a
-            fraction in %).
-        """
-        if unit is None or unit == row.unit:
-            printed, tolerance = row.value_as_printed, row.resolution
-        else:
-            printed, tolerance = row.value * scale, row.resolution_si * abs(scale)
-        return cls(id=id, chapter=chapter, source=row.source, location=location,
-                   quantity=quantity or row.quantity, printed=printed, computed=float(computed),
-                   tolerance=tolerance, unit=unit or row.unit, explanation=explanation, computation=computation)
+    Parameters
+    ----------
+    row : magbench.io.Measurement
+        The printed value with its provenance and ``resolution``.
+    computed : float
+        What the source's own formula and inputs give, in the display unit.
+    unit : str, optional
+        Display unit. The row's printed unit (the default) shows the value as printed;
+        any other unit shows its SI value times ``scale`` (``100`` for a fraction in %).
+    """
+    if unit is None or unit == row.unit:
+        printed, tolerance = row.value_as_printed, row.resolution
+    else:
+        printed, tolerance = row.value * scale, row.resolution_si * abs(scale)
+    return source_check(id=id, chapter=chapter, source=row.source, location=location,
+                        quantity=quantity or row.quantity, printed=printed, computed=computed,
+                        tolerance=tolerance, unit=unit or row.unit, explanation=explanation,
+                        computation=computation)
 
 
 def kovalenko_page(seed_line):

@@ -239,7 +239,7 @@ def table(frame, caption, *, label=None, wide_columns=(), widths=None):
 
 
 def compare_table(rows, caption="Model beside measurement", *, label=None, against="measured"):
-    """A captioned table of :class:`magbench.compare.CompareRow` objects.
+    """A captioned table of model-vs-measurement :class:`magbench.compare.Comparison` rows.
 
     Columns: quantity (with the row's source), the value compared with (headed
     ``against``: "measured", "IGRF-14", "printed", … with its uncertainty), model,
@@ -270,7 +270,7 @@ def compare_table(rows, caption="Model beside measurement", *, label=None, again
 
 
 def checks_table(checks, caption="Printed values beside the computation", *, label=None):
-    """A captioned table of :class:`magbench.errata.SourceCheck` objects.
+    """A captioned table of printed-value checks (:class:`magbench.compare.Comparison`).
 
     Printed values keep the source's printed digits (:func:`printed_text`).
     """

@@ -42,3 +42,19 @@ def test_no_row_depends_on_the_build_date(monkeypatch):
 
     monkeypatch.setattr(dt, "datetime", Later)
     assert [r.id for r in chapters.comparisons()] == ids
+
+
+def test_rows_and_checks_are_one_type():
+    """A model-vs-measurement row and a printed-value check are both Comparisons, with
+    the same verdict rule and their SI values one multiplication away."""
+    from magbench.errata import source_check
+
+    row = compare.make_row("x", "q", "s", 2.0e-6, 2.3e-6, 0.25e-6, unit="uT", scale=1e-6)
+    check = source_check(id="y", chapter="ch01", source="thesis", location="§1", quantity="q", printed=10.0,
+                         computed=10.4, tolerance=0.5, unit="deg", explanation="e", computation="c")
+    assert type(row) is type(check) is compare.Comparison
+    assert check.agrees and check.printed == check.measured == 10.0 and check.computed == check.model == 10.4
+    assert row.measured_si == pytest.approx(2.0e-6, rel=1e-15)         # µT back to T
+    assert check.model_si == pytest.approx(np.radians(10.4), rel=1e-15)  # degrees to rad
+    assert check.relative_difference == pytest.approx(-0.4 / 10.4)
+    assert set(check.as_dict()) == set(row.as_dict())

@@ -41,12 +41,12 @@ class Chapter:
     figure_modules : tuple of str
         Modules that register the chapter's figures when imported.
     comparisons : callable or None
-        ``(params=None) -> list[CompareRow]``: the chapter's model-vs-measurement rows.
+        ``(params=None) -> list[Comparison]``: the chapter's model-vs-measurement rows.
     row_kinds : tuple of (str, str)
         Row id (or id prefix ending in ``-``) and the kind of value it compares with, a key
         of :data:`magbench.compare.ROW_KINDS`.
     source_checks : tuple of callables
-        Each ``() -> list[SourceCheck]``: printed numbers beside their computation, always
+        Each ``() -> list[Comparison]``: printed numbers beside their computation, always
         on the source's own inputs (never on overridden parameters).
     """
 

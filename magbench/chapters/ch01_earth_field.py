@@ -12,7 +12,7 @@ from .. import attitude, geomag, igrf
 from ..compare import make_row
 from ..constants import EARTH_POLAR_MOMENT_OF_INERTIA, EARTH_RADIUS, EARTH_ROTATION_RATE, MU_0
 from ..io import load_parameter_set, load_printed
-from ..errata import SourceCheck
+from ..errata import source_check
 from ..units import ampere_per_meter_to_oersted, tesla_to_oersted
 from ._base import Chapter, chapter_parameters
 
@@ -143,7 +143,7 @@ def geomagnetic_checks():
     cgs_moment = f"{mantissa}·10{str(int(exponent)).translate(str.maketrans('0123456789-', '⁰¹²³⁴⁵⁶⁷⁸⁹⁻'))}"
     b0_printed = tuple(kov[k].value_as_printed for k in ("kov-g10-1965", "kov-g11-1965", "kov-h11-1965"))
     return [
-        SourceCheck(
+        source_check(
             id="thesis-eq3-inclination-sign", chapter="ch01", source="thesis",
             location="§1.1, eqs. (1), (3) (from Kovalenko eq. 2.3)",
             quantity="Inclination J at the laboratory (St Petersburg) from eq. (3)",
@@ -156,7 +156,7 @@ def geomagnetic_checks():
                          f"IGRF gives {inclination_igrf:+.1f}° at the laboratory."),
             computation="magbench.geomag.dipole_inclination",
         ),
-        SourceCheck(
+        source_check(
             id="thesis-equator-field", chapter="ch01", source="thesis",
             location="§1.1, after eq. (3) (copied from Kovalenko p. 35)",
             quantity="Dipole field at the equator, M/R³",
@@ -166,7 +166,7 @@ def geomagnetic_checks():
             explanation=f"M/R³ with M = {cgs_moment} CGS and R = {r / 1e3:.0f} km.",
             computation="magbench.geomag.dipole_equatorial_b",
         ),
-        SourceCheck(
+        source_check(
             id="thesis-pole-field-rounding", chapter="ch01", source="thesis",
             location="§1.1, after eq. (3) (copied from Kovalenko p. 35)",
             quantity="Dipole field at the poles, 2M/R³",
@@ -177,7 +177,7 @@ def geomagnetic_checks():
                          f"twice the rounded equatorial {printed['thesis-equator-field'].value_as_printed:g}."),
             computation="magbench.geomag.dipole_total_b",
         ),
-        SourceCheck(
+        source_check(
             id="thesis-eq5-cgs-torque", chapter="ch01", source="thesis",
             location="§1.2, eq. (5)",
             quantity=f"Torque on L = {moment_l:g} A·m² across H = {field_h:g} A/m from M = L × H",
@@ -190,7 +190,7 @@ def geomagnetic_checks():
                          f"a factor 1/μ0 ≈ {1e-5 / MU_0:.0f}·10⁵."),
             computation="magbench.geomag.magnetic_torque_from_h",
         ),
-        SourceCheck(
+        source_check(
             id="thesis-eq12a-energy-ratio", chapter="ch01", source="thesis",
             location="§1.3",
             quantity="Energy handed to the Earth per unit lost by a despinning mock-up, ΔT_E/ΔT_c",
@@ -201,7 +201,7 @@ def geomagnetic_checks():
                          "still ≪ 1, so the conclusion (the Earth takes momentum, not energy) holds."),
             computation="magbench.attitude.momentum_exchange_energy_ratio",
         ),
-        SourceCheck(
+        source_check(
             id="kovalenko-mean-dipole-field", chapter="ch01", source="kovalenko",
             location="§2.2, p. 40",
             quantity="Mean dipole field over the Earth's surface, from the book's own Table 1",
@@ -234,7 +234,7 @@ def kovalenko_field_checks():
         spectrum = geomag.lowes_spectrum(g, h, IGRF_REFERENCE_RADIUS / radius)
         for kind, value in (("field", np.sqrt(spectrum.sum())), ("dipole", np.sqrt(spectrum[0]))):
             row = kov[f"kov-rms-{kind}-{tag}"]
-            checks.append(SourceCheck(
+            checks.append(source_check(
                 id=f"kovalenko-rms-{kind}-{tag}", chapter="ch01", source="kovalenko",
                 location="Table 2, p. 40",
                 quantity=f"RMS {'total' if kind == 'field' else 'dipole'} field at {row.conditions}",
@@ -248,14 +248,14 @@ def kovalenko_field_checks():
     mean6 = float(tesla_to_oersted(igrf.igrf_mean_surface_b(1965.0, max_degree=6)))
     mean1 = float(tesla_to_oersted(igrf.igrf_mean_surface_b(1965.0, max_degree=1)))
     checks += [
-        SourceCheck(id="kovalenko-mean-field-n6", chapter="ch01", source="kovalenko",
+        source_check(id="kovalenko-mean-field-n6", chapter="ch01", source="kovalenko",
                     location="§2.2, p. 40",
                     quantity="Mean total field over the Earth's surface, degrees n ≤ 6",
                     printed=float(ampere_per_meter_to_oersted(kov["kov-mean-field-n6"].value)), computed=mean6,
                     tolerance=kov["kov-mean-field-n6"].resolution,
                     unit="Oe", explanation="Gauss–Legendre surface mean of |B| of IGRF-14 1965.0.",
                     computation="magbench.igrf.igrf_mean_surface_b"),
-        SourceCheck(id="kovalenko-dipole-accuracy", chapter="ch01", source="kovalenko",
+        source_check(id="kovalenko-dipole-accuracy", chapter="ch01", source="kovalenko",
                     location="§2.2, p. 41",
                     quantity="Accuracy of the dipole approximation A₁ = T₁c/T_c",
                     printed=kov["kov-dipole-accuracy"].value * 100, computed=100 * mean1 / mean6,
@@ -265,7 +265,7 @@ def kovalenko_field_checks():
     ]
     b = geomag.orbital_dipole_b(np.linspace(0, 2 * np.pi, 3601), np.pi / 2, 7371e3, 8.1e22)
     b2 = np.sum(b**2, axis=-1)
-    checks.append(SourceCheck(
+    checks.append(source_check(
         id="kovalenko-polar-orbit-b2-ratio", chapter="ch01", source="kovalenko",
         location="p. 99", quantity="Largest/smallest B² on a circular geopolar orbit",
         printed=kov["kov-polar-orbit-b2-ratio"].value, computed=float(b2.max() / b2.min()),

@@ -9,7 +9,7 @@ import numpy as np
 from .._validate import as_finite, as_positive
 from ..compare import make_row
 from ..io import load_measurements, load_parameter_set, load_printed
-from ..errata import SourceCheck
+from ..errata import printed_check
 from ._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "ZONE_TOLERANCE", "simulator_rows", "simulator_center_h_tolerance",
@@ -157,21 +157,21 @@ def simulator_checks():
     r_printed_n = float(coils.winding_resistance(a, n_printed, dw, rho))
     i_printed_n = printed["thesis-sim-ampere-turns"].value_as_printed / n_printed
     return [
-        SourceCheck.from_printed(
+        printed_check(
             printed["thesis-sim-ampere-turns"], id="thesis-sim-ampere-turns", chapter="ch02",
             location="§2.2, eq. (16)", quantity=f"Ampere-turns per coil for {h:g} A/m (a = {a:g} m, d/a = {ratio:g})",
             computed=ni, unit="A",
             explanation=(f"Eq. (16) gives {ni:.1f} A·turns; the printed {ni_slip:.0f} is reproduced exactly by "
                          "evaluating (d/2a)² as (d/a)²/2 (magbench.coils.thesis_printed_ampere_turns)."),
             computation="magbench.coils.helmholtz_ampere_turns"),
-        SourceCheck.from_printed(
+        printed_check(
             printed["thesis-sim-coil-resistance"], id="thesis-sim-coil-resistance", chapter="ch02",
             location="§2.2", quantity=f"Resistance of a simulator coil, N = {n:.0f}, {dw * 1e3:g} mm copper",
             computed=resistance, unit="ohm",
             explanation=(f"R = 2πaρN/S0 gives {resistance:.2f} Ω; {r_printed_n:.1f} Ω is the value for "
                          f"N = {n_printed:.0f}."),
             computation="magbench.coils.winding_resistance"),
-        SourceCheck.from_printed(
+        printed_check(
             printed["thesis-sim-coil-power"], id="thesis-sim-coil-power", chapter="ch02",
             location="§2.2", quantity=f"Power of a simulator coil, N = {n:.0f}, I = {i:g} A",
             computed=power, unit="W",
@@ -215,7 +215,7 @@ def simulator_field_checks():
     design_h = v["sim_design_h"]
     deviation_printed = printed["sim-center-h-deviation"]
     return [
-        SourceCheck.from_printed(
+        printed_check(
             printed["thesis-eq15-field"], id="thesis-eq15-required-field", chapter="ch02",
             location="§2.1, eq. (15)", quantity="Field for a 60 s swing, eq. (15) as printed",
             computed=h_printed_eq, unit="A/m",
@@ -224,13 +224,13 @@ def simulator_field_checks():
                          f"needs the amplitude factor A = π that the thesis defines beside eq. (15) and eq. (15) drops "
                          f"({h_with_a:.1f} A/m), a factor with no place in a small-oscillation period."),
             computation="magbench.coils.oscillation_field_h"),
-        SourceCheck.from_printed(
+        printed_check(
             printed["thesis-eq15-field"], id="thesis-eq15-with-amplitude", chapter="ch02",
             location="§2.1, eq. (15) with A = π", quantity="Field for a 60 s swing, with the factor A = π",
             computed=h_with_a, unit="A/m",
             explanation=f"4π²JA/(μ0 m T²) = {h_with_a:.1f} A/m, which '≈ 200' rounds down (one printed digit).",
             computation="magbench.coils.oscillation_field_h"),
-        SourceCheck.from_printed(
+        printed_check(
             printed["thesis-sim-coil-voltage"], id="thesis-sim-coil-voltage", chapter="ch02",
             location="§2.2", quantity=f"Supply voltage of a simulator coil, N = {n:.0f}, I = {i:g} A",
             computed=voltage, unit="V",
@@ -238,14 +238,14 @@ def simulator_field_checks():
                          f"NI = {ni_printed:.0f} (the slipped eq. 16) gives {voltage * ni_printed / (n * i):.1f} V, "
                          f"like R and P computed for N = {n_printed_r:.0f}."),
             computation="magbench.coils.winding_voltage"),
-        SourceCheck.from_printed(
+        printed_check(
             printed["sim-coil-power-max"], id="thesis-sim-power-at-limit", chapter="ch02",
             location="§2.4", quantity=f"Power of one coil at {i_max:g} A and {r_max:g} Ω",
             computed=i_max**2 * r_max, unit="W",
             explanation=(f"I²R = {i_max:g}² × {r_max:g} = {i_max**2 * r_max:.2f} W (with the measured {r_max:g} Ω; "
                          f"{resistance:.2f} Ω would give {i_max**2 * resistance:.1f} W)."),
             computation="I**2 * R"),
-        SourceCheck.from_printed(
+        printed_check(
             deviation_printed, id="thesis-sim-center-deviation", chapter="ch02",
             location="§2.4", quantity=f"Deviation of the measured {measured:g} A/m from the calculated field",
             computed=100 * (measured - h_built) / h_built, unit="%",
@@ -255,20 +255,20 @@ def simulator_field_checks():
                          f"and the measurement lies {100 * (1 - measured / h_built):.0f} % below it. The agreement rests on "
                          "the NI slip."),
             computation="magbench.coils.helmholtz_center_h"),
-        SourceCheck.from_printed(
+        printed_check(
             kov["kov-helmholtz-cylinder-deviation"], id="kovalenko-helmholtz-cylinder", chapter="ch02",
             location="§3.4, p. 60",
             quantity="Helmholtz pair: largest deviation in a cylinder of radius 0.1r, length 0.2r",
             computed=100 * coils.coaxial_system_cylinder_nonuniformity(circle2, *helm, 0.1, 0.2), unit="%",
             explanation="Exact loop fields on a grid of the solid cylinder.",
             computation="magbench.coils.coaxial_system_cylinder_nonuniformity"),
-        SourceCheck.from_printed(
+        printed_check(
             kov["kov-square-pair-spacing"], id="kovalenko-square-pair-spacing", chapter="ch02",
             location="§3.4, p. 60", quantity="Square Helmholtz pair: spacing / side",
             computed=float(coils.square_pair_spacing(1.0)), unit="1",
             explanation="Zero curvature of the axial field at the centre.",
             computation="magbench.coils.square_pair_spacing"),
-        SourceCheck.from_printed(
+        printed_check(
             kov["kov-rubens-cylinder-deviation"], id="kovalenko-rubens-cylinder", chapter="ch02",
             location="§3.4, pp. 61–62",
             quantity="Rubens coils: largest deviation in a cylinder of length a/2, radius a/4",
@@ -276,7 +276,7 @@ def simulator_field_checks():
             explanation=(f"Five squares at 0, ±a/4, ±a/2 with ampere-turns 10 : 4 : 19; {rubens_dev:.2f} % rounds "
                          "to 1 %."),
             computation="magbench.coils.coaxial_system_cylinder_nonuniformity"),
-        SourceCheck.from_printed(
+        printed_check(
             kov["kov-four-coil-sphere-deviation"], id="kovalenko-four-coil-sphere", chapter="ch02",
             location="§3.4, p. 61",
             quantity="Four-coil system: largest deviation in a sphere of radius 2r/3",
@@ -285,7 +285,7 @@ def simulator_field_checks():
                          f"{100 * four_dev:.2f} % in a sphere of radius 2r/3; within the printed digit of 0.5 % "
                          f"only to a radius of about r/2 ({100 * half_radius_dev:.2f} % there)."),
             computation="magbench.coils.coaxial_system_sphere_nonuniformity"),
-        SourceCheck.from_printed(
+        printed_check(
             kov["kov-four-coil-helmholtz-size"], id="kovalenko-four-coil-helmholtz-size", chapter="ch02",
             location="§3.4, p. 61",
             quantity="Helmholtz radius / four-coil radius for the same uniformity in the same sphere",

@@ -8,7 +8,7 @@ import numpy as np
 
 from ..compare import make_row
 from ..io import load_measurements, load_parameter_set, load_printed
-from ..errata import SourceCheck, kovalenko_page
+from ..errata import kovalenko_page, printed_check, source_check
 from ._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "magnetorquer_rows", "magnetorquer_checks", "magnetorquer_design_checks",
@@ -100,7 +100,7 @@ def magnetorquer_checks():
     d_design, d_printed_area = float(mtq.wire_diameter(s_design)), float(mtq.wire_diameter(printed["thesis-mtq-wire-area"].value))
     kov_torque = float(mtq.magnet_torque_per_mass(1.4, 0.5e-4, 7.5e3))
     return [
-        SourceCheck(
+        source_check(
             id="thesis-mtq-built-moment", chapter="ch03", source="thesis",
             location="§3.3", quantity="Dipole moment of the built coil at 12 V (eq. 20)",
             printed=printed["mtq-moment"].value, computed=m_built,
@@ -109,7 +109,7 @@ def magnetorquer_checks():
                          f"for round and square turns alike; {m_mixed:.2f} follows from mixing the square-turn "
                          f"resistance ({r_square:.1f} Ω) with the round-turn area πl²/4."),
             computation="magbench.magnetorquer.moment_from_voltage"),
-        SourceCheck(
+        source_check(
             id="thesis-mtq-current-for-moment", chapter="ch03", source="thesis",
             location="§4.1", quantity="Coil current for 0.4 A·m² (m = I S N, square, N = 240)",
             printed=printed["thesis-mtq-current-024"].value, computed=i_for_m,
@@ -117,7 +117,7 @@ def magnetorquer_checks():
             explanation=(f"I = m/(N l²) = {i_for_m:.3f} A; §4.1 then says "
                          f"{printed['thesis-mtq-current-025'].value:g} A, which fits neither."),
             computation="magbench.magnetorquer.current_for_moment"),
-        SourceCheck(
+        source_check(
             id="thesis-mtq-winding-length", chapter="ch03", source="thesis",
             location="§3.2", quantity="Single-layer winding length N·√S_r at N = 240",
             printed=printed["thesis-mtq-winding-length"].value, computed=length,
@@ -125,7 +125,7 @@ def magnetorquer_checks():
             explanation=(f"N = L/√S_r (the thesis's own relation) gives L = {length:.3f} m, not "
                          f"≈ {printed['thesis-mtq-winding-length'].value:g} m."),
             computation="magbench.magnetorquer.winding_length"),
-        SourceCheck(
+        source_check(
             id="thesis-mtq-wire-area", chapter="ch03", source="thesis",
             location="§3.2", quantity="Conductor cross-section S_r = 4ρm/(Ul) (eq. 21)",
             printed=printed["thesis-mtq-wire-area"].value, computed=float(s_design),
@@ -134,7 +134,7 @@ def magnetorquer_checks():
                          f"diameter {printed['thesis-mtq-wire-diameter'].value_as_printed:g} mm follows from "
                          f"{s_design * 1e8:.3f} ({d_design * 1e3:.3f} mm; 2.34 would give {d_printed_area * 1e3:.3f} mm)."),
             computation="magbench.magnetorquer.wire_area_for_moment"),
-        SourceCheck(
+        source_check(
             id="kovalenko-e02-torque-per-mass", chapter="ch03", source="kovalenko",
             location="eq. (1.7), p. 30",
             quantity="Torque per kilogram of permanent magnet (B_r = 1.4 T, B = 0.5·10⁻⁴ T, γ = 7500 kg/m³)",
@@ -175,7 +175,7 @@ def magnetorquer_design_checks():
     sq = f"square turn of side l = {side:g} m (eqs. 28–31)"
 
     def check(id, row, location, computed, unit, explanation, computation, *, quantity=None, scale=1.0):
-        return SourceCheck.from_printed(printed[row], id=id, chapter="ch03", location=location,
+        return printed_check(printed[row], id=id, chapter="ch03", location=location,
                                         quantity=quantity, computed=computed, unit=unit, scale=scale,
                                         explanation=explanation,
                                         computation=f"magbench.magnetorquer.{computation}")
@@ -249,7 +249,7 @@ def kovalenko_actuator_checks():
 
     def check(id, row, quantity, computed, unit, explanation, computation, scale=1.0):
         r = kov[row]
-        return SourceCheck.from_printed(r, id=id, chapter="ch03", location=f"§{r.section}, p. {kovalenko_page(r.seed_line)}",
+        return printed_check(r, id=id, chapter="ch03", location=f"§{r.section}, p. {kovalenko_page(r.seed_line)}",
                                         quantity=quantity, computed=computed, unit=unit, scale=scale,
                                         explanation=explanation, computation=f"magbench.magnetorquer.{computation}")
 

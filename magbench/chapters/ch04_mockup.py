@@ -8,7 +8,7 @@ import numpy as np
 
 from .. import attitude
 from ..compare import make_row
-from ..errata import SourceCheck
+from ..errata import source_check
 from ..io import load_parameter_set
 from ._base import Chapter, chapter_parameters
 
@@ -86,7 +86,7 @@ def dynamics_checks():
     # Routh–Hurwitz for J s³ + B0 Kd s² + B0 Kp s + B0 Ki: stable iff Ki < B0 Kp Kd / J.
     excess = [ki / (b0 * kp * kd / j) for kp, ki, kd in sets]
     return [
-        SourceCheck(
+        source_check(
             id="thesis-eq14-design-amplitude", chapter="ch04", source="thesis",
             location="§2.1 and §3.2 (eqs. 14–15 with A = π)",
             quantity=(f"Amplitude at which the built design (m = {m:g} A·m², H = {p['sim_design_h']:g} A/m) swings "
@@ -99,7 +99,7 @@ def dynamics_checks():
                          f"period only up to {np.degrees(amplitude):.0f}°; at 180° no finite field gives "
                          f"{p['oscillation_period']:g} s."),
             computation="magbench.attitude.amplitude_for_period"),
-        SourceCheck(
+        source_check(
             id="thesis-pid-gains-stable-si", chapter="ch04", source="thesis",
             location="§4.1 (Figs. 15–18)",
             quantity="Printed PID gain sets that give a stable loop with the gains read in SI",
