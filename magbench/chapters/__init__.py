@@ -11,7 +11,7 @@ from . import ch01_earth_field, ch02_field_simulator, ch03_magnetorquers, ch04_m
 from ._base import OVERRIDES_ENV, Chapter, chapter_parameters, read_overrides
 
 __all__ = ["CHAPTERS", "Chapter", "OVERRIDES_ENV", "chapter", "chapter_parameters", "read_overrides",
-           "comparisons", "source_checks", "errata", "row_kind", "figure_modules", "caption_name"]
+           "comparisons", "source_checks", "errata", "row_kind", "figure_modules", "caption_name", "source_name"]
 
 #: The chapters in book order.
 CHAPTERS = [
@@ -36,6 +36,16 @@ def caption_name(key):
         if spec.key == key:
             return f"Chapter {number}, {spec.short_title}"
     return chapter(key).key      # raises KeyError listing the keys
+
+
+def source_name(source):
+    """How the book cites a source by its data key ("thesis", "Kovalenko (1975)"), as the
+    chapters that check it declare it; an undeclared key is returned unchanged."""
+    for spec in CHAPTERS:
+        for key, name in spec.source_names:
+            if key == source:
+                return name
+    return source
 
 
 def _selected(key):

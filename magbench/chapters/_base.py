@@ -48,6 +48,16 @@ class Chapter:
     source_checks : tuple of callables
         Each ``() -> list[Comparison]``: printed numbers beside their computation, always
         on the source's own inputs (never on overridden parameters).
+    cites : str
+        What of its sources the chapter reproduces, as a reader looks it up ("thesis §1,
+        eqs. (1)–(12), Figs. 1–2"); the landing page's table of chapters shows it.
+    finds : str
+        What the chapter finds out, in one sentence for that table.
+    source_names : tuple of (str, str)
+        The data key of each source the chapter checks and how the book cites it
+        (``("kovalenko", "Kovalenko (1975)")``).
+
+    The chapter's first page carries the label ``(key)=``, so ``{ref}`key``` links it.
     """
 
     key: str
@@ -60,6 +70,9 @@ class Chapter:
     comparisons: object = None
     row_kinds: tuple = ()
     source_checks: tuple = field(default_factory=tuple)
+    cites: str = ""
+    finds: str = ""
+    source_names: tuple = ()
 
 
 def _chapters():

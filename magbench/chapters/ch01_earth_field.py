@@ -284,4 +284,7 @@ CHAPTER = Chapter(
     row_kinds=(("dipole-", "reference"), ("pole-", "reference"), ("lab-", "reference"),
                ("equatorial-dipole-field", "reference")),
     source_checks=(geomagnetic_checks, kovalenko_field_checks),
+    cites="thesis §1, eqs. (1)–(12), Figs. 1–2; Kovalenko ch. 1–2",
+    finds=("how far the thesis's dipole is from the real field at the laboratory in 2016; which of Kovalenko's field numbers reproduce"),
+    source_names=(("thesis", "thesis"), ("kovalenko", "Kovalenko (1975)")),
 )

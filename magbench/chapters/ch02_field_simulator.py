@@ -305,4 +305,7 @@ CHAPTER = Chapter(
     row_kinds=(("comsol-", "simulation"), ("sim-center-h", "measurement"),
                ("sim-coil-resistance", "measurement")),
     source_checks=(simulator_checks, simulator_field_checks),
+    cites="thesis §2, eqs. (13)–(16), Figs. 3, 5–8; Kovalenko §3.4",
+    finds=("what the coil pair should make, what was built and measured, and which explanations of the gap the data can exclude"),
+    source_names=(("thesis", "thesis"), ("kovalenko", "Kovalenko (1975)")),
 )

@@ -292,4 +292,7 @@ CHAPTER = Chapter(
                ("mtq-moment", "printed"), ("mtq-power", "printed"),
                ("mtq-current-for-moment", "printed"), ("mtq-winding-length", "printed")),
     source_checks=(magnetorquer_checks, magnetorquer_design_checks, kovalenko_actuator_checks),
+    cites="thesis §3, eqs. (17)–(32), Fig. 9; Kovalenko ch. 8–11",
+    finds=("which magnetorquer designs real wire allows, and whether the built coils meet the thesis's own limits"),
+    source_names=(("thesis", "thesis"), ("kovalenko", "Kovalenko (1975)")),
 )

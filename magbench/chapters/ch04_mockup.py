@@ -123,4 +123,7 @@ CHAPTER = Chapter(
     comparisons=bench_rows,
     row_kinds=(("bench-error-", "measurement"),),
     source_checks=(dynamics_checks,),
+    cites="thesis §4, eqs. (33)–(39), Figs. 10–20",
+    finds=("whether the printed PID gains stabilise the mock-up, how the filter behaves on real IMU data, and what the bench's measured orientation error can and cannot come from"),
+    source_names=(("thesis", "thesis"),),
 )

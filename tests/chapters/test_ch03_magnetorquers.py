@@ -12,6 +12,8 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
+from magbench.chapters import errata
+
 from magbench import magnetorquer as mt
 from magbench.cli import main
 from magbench.constants import MU_0
@@ -295,3 +297,32 @@ def test_actuator_figure_agrees_with_the_library():
     # the permanent magnet: m = γ L μ0/B_r
     assert_allclose(cols["mass"][2], 7.5e3 * 0.4 * MU_0 / 1.4, **EXACT)
     assert np.all(cols["power"][2:] == 0) and np.all(cols["controllable"][2:] == 0)
+
+
+# ------------------------------------------------------------ printed values (errata)
+
+CHAPTER_KEY = "ch03"
+
+#: The printed values of this chapter's sources that do not reproduce, written here
+#: independently of the library: a change that makes one suddenly reproduce (or another
+#: stop reproducing) fails. Each is a strict xfail asserting the printed value.
+EXPECTED_ERRATA = {
+    "thesis-mtq-built-moment": "eq. (20) gives 0.539 A·m², printed 0.42",
+    "thesis-mtq-current-for-moment": "m = ISN gives 0.167 A, printed 0.24",
+    "thesis-mtq-winding-length": "N·√S_r = 0.037 m, printed ≈ 0.1 m",
+    "thesis-mtq-wire-area": "eq. (21) gives 2.333e-8 m², printed 2.34e-8",
+    "kovalenko-e02-torque-per-mass": "B_r B/(μ0 γ) = 0.743e-2, printed 0.75e-2",
+    "thesis-mtq-built-power": "12²/53.5 = 2.69 W, above the 2 W the design promised",
+    "thesis-mtq-current-025": "m = ISN gives 0.167 A, printed 0.25 (line 524)",
+    "kovalenko-table5-power-law": "4π·0.93·75.63^-1.7 = 0.00748, printed 0.00738",
+    "kovalenko-table5-nu-p40": "Table 5's own columns give ν = -2.24 %, printed -0.22",
+}
+
+
+def test_printed_value(printed_check):
+    # Tolerance: half a unit of the source's last printed digit (printed_check.tolerance).
+    assert_allclose(printed_check.printed, printed_check.computed, rtol=0, atol=printed_check.tolerance)
+
+
+def test_errata_match_expectation():
+    assert {e.id for e in errata(CHAPTER_KEY)} == set(EXPECTED_ERRATA)

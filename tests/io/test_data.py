@@ -44,7 +44,7 @@ def test_thesis_measurements_have_provenance():
     assert measured["sim-center-h"].kind == "measured"
     assert not set(measured) & set(printed), "an id names one value"
     rows = {**measured, **printed}
-    seed = (Path(__file__).resolve().parents[2] / "shared" / "seeds" / "thesis_bui_2016.txt")
+    seed = (Path(__file__).resolve().parents[3] / "shared" / "seeds" / "thesis_bui_2016.txt")
     if seed.is_file():
         lines = seed.read_text(encoding="utf-8").splitlines()
         # The seed line of each row must contain the printed number (decimal point or comma).
@@ -63,7 +63,7 @@ def test_printed_values_carry_their_digits():
 
 
 def test_kovalenko_printed_values_are_on_their_page():
-    seed = Path(__file__).resolve().parents[2] / "shared" / "seeds" / "kovalenko_1975_magnetic_control_systems.txt"
+    seed = Path(__file__).resolve().parents[3] / "shared" / "seeds" / "kovalenko_1975_magnetic_control_systems.txt"
     if not seed.is_file():
         pytest.skip(f"the Kovalenko transcription is not at {seed}")
     lines = seed.read_text(encoding="utf-8").splitlines()

@@ -11,6 +11,8 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
+from magbench.chapters import errata
+
 from magbench import chapters, coils, figures
 from magbench.chapters import ch02_field_simulator
 from magbench.cli import main
@@ -347,3 +349,30 @@ def test_cli_sets_turns(tmp_path):
     h0 = d["series"][2]["columns"]["H_centre"]["values"][0]
     assert_allclose(h0, _eq16(100 * I, A, D_BUILT), rtol=1e-14)
     plt.close("all")
+
+
+# ------------------------------------------------------------ printed values (errata)
+
+CHAPTER_KEY = "ch02"
+
+#: The printed values of this chapter's sources that do not reproduce, written here
+#: independently of the library: a change that makes one suddenly reproduce (or another
+#: stop reproducing) fails. Each is a strict xfail asserting the printed value.
+EXPECTED_ERRATA = {
+    "thesis-sim-ampere-turns": "eq. (16) gives 187.7 A-turns, printed 258",
+    "thesis-sim-coil-resistance": "N = 110 gives 13.69 ohm, printed 12.4 (N = 100)",
+    "thesis-sim-coil-power": "N = 110, 2.3 A gives 72.4 W, printed 83",
+    "thesis-eq15-required-field": "eq. (15) as printed gives 72.7 A/m, printed ≈ 200",
+    "thesis-sim-coil-voltage": "RI = 31.48 V for N = 110, printed 32 (NI = 258)",
+    "thesis-sim-center-deviation": "262 vs the as-built 357.7 A/m is −27 %, printed 4.8 %",
+    "kovalenko-four-coil-sphere": "1.46 % in the sphere of radius 2r/3, printed 0.5 %",
+}
+
+
+def test_printed_value(printed_check):
+    # Tolerance: half a unit of the source's last printed digit (printed_check.tolerance).
+    assert_allclose(printed_check.printed, printed_check.computed, rtol=0, atol=printed_check.tolerance)
+
+
+def test_errata_match_expectation():
+    assert {e.id for e in errata(CHAPTER_KEY)} == set(EXPECTED_ERRATA)

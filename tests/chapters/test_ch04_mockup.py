@@ -8,6 +8,8 @@ integral, Routh–Hurwitz), numerical integration with scipy's solve_ivp, python
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose
+
+from magbench.chapters import errata
 from scipy.integrate import solve_ivp
 
 from magbench import attitude, control
@@ -345,3 +347,25 @@ def test_reading_evidence_decides_stability():
     zeta_limit = [kp / (2 * np.sqrt(kd * ki)) for kp, ki, kd in thesis_ch4.PRINTED_SETS]
     assert_allclose(rows["field-in-A/m"]["zeta_max"], max(zeta_limit), rtol=1e-3)
     assert_allclose(rows["field-in-A/m"]["zeta_min"], min(zeta_limit), rtol=1e-3)
+
+
+# ------------------------------------------------------------ printed values (errata)
+
+CHAPTER_KEY = "ch04"
+
+#: The printed values of this chapter's sources that do not reproduce, written here
+#: independently of the library: a change that makes one suddenly reproduce (or another
+#: stop reproducing) fails. Each is a strict xfail asserting the printed value.
+EXPECTED_ERRATA = {
+    "thesis-eq14-design-amplitude": "60 s at m = 0.4, H = 250 only up to ~134°; infinite period at π",
+    "thesis-pid-gains-stable-si": "all six printed gain sets are unstable in SI (Routh–Hurwitz)",
+}
+
+
+def test_printed_value(printed_check):
+    # Tolerance: half a unit of the source's last printed digit (printed_check.tolerance).
+    assert_allclose(printed_check.printed, printed_check.computed, rtol=0, atol=printed_check.tolerance)
+
+
+def test_errata_match_expectation():
+    assert {e.id for e in errata(CHAPTER_KEY)} == set(EXPECTED_ERRATA)

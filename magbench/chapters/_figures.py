@@ -1,0 +1,85 @@
+"""The figure types and the registry a chapter's figure module registers into.
+
+They live in the chapter layer so that a chapter (package) can keep its figures beside
+its inputs and rows; :mod:`magbench.figures` renders them, lists them and serves the
+command line.
+"""
+
+from dataclasses import dataclass, field
+
+__all__ = ["FigureParameter", "Series", "FigureData", "FigureSpec", "REGISTRY", "register"]
+
+
+@dataclass(frozen=True)
+class FigureParameter:
+    """One input of a figure: SI default, unit and meaning."""
+
+    default: float
+    unit: str
+    description: str
+
+
+@dataclass
+class Series:
+    """One labelled set of columns: ``{name: (unit, values)}``."""
+
+    label: str
+    columns: dict
+
+
+@dataclass
+class FigureData:
+    """The numbers behind a figure, and the parameters actually used (SI)."""
+
+    id: str
+    title: str
+    source: str
+    parameters: dict
+    series: list = field(default_factory=list)
+    extra: dict = field(default_factory=dict)   # drawing hints that are not data
+
+    def to_json_dict(self):
+        """The ``--data`` JSON shape: id, title, source, parameters, series."""
+        import numpy as np
+
+        def values(v):
+            return [float(x) for x in np.ravel(np.asarray(v, dtype=float))]
+
+        return {
+            "id": self.id, "title": self.title, "source": self.source,
+            "parameters": {k: float(v) for k, v in self.parameters.items()},
+            "series": [{"label": s.label,
+                        "columns": {name: {"unit": unit, "values": values(vals)}
+                                    for name, (unit, vals) in s.columns.items()}}
+                       for s in self.series],
+        }
+
+
+@dataclass(frozen=True)
+class FigureSpec:
+    """A registered figure."""
+
+    id: str
+    title: str
+    source: str
+    compute: object
+    plot: object
+    parameters: dict     # name -> FigureParameter
+
+    @property
+    def function_name(self):
+        """Dotted name of the compute function (provenance)."""
+        return f"{self.compute.__module__}.{self.compute.__qualname__}"
+
+
+#: Figure id -> FigureSpec, filled on first use by the figure modules each chapter names
+#: (:func:`magbench.chapters.figure_modules`).
+REGISTRY = {}
+
+
+def register(spec):
+    """Add a :class:`FigureSpec` to the registry (ids must be unique)."""
+    if spec.id in REGISTRY:
+        raise ValueError(f"figure id {spec.id!r} is registered twice")
+    REGISTRY[spec.id] = spec
+    return spec
