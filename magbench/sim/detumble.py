@@ -185,7 +185,11 @@ def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dip
     if q0.ndim > 2 or w0.ndim > 2:
         raise ValueError(f"attitude and rate must be (M, 4) or (4,) and (M, 3) or (3,), got {q0.shape} and {w0.shape}")
     phase = np.asarray(orbit.argument_of_latitude0)
-    members = np.broadcast_shapes(q0.shape[:-1], w0.shape[:-1], phase.shape, np.shape(gain))
+    try:
+        members = np.broadcast_shapes(q0.shape[:-1], w0.shape[:-1], phase.shape, np.shape(gain))
+    except ValueError:
+        raise ValueError(f"attitude {q0.shape}, rate {w0.shape}, orbit.argument_of_latitude0 {phase.shape} and gain "
+                         f"{np.shape(gain)} must agree on the number of members M (or have none)") from None
     members = members[0] if members else 1
     q0 = np.array(np.broadcast_to(q0.reshape(-1, 4), (members, 4)))
     q0 /= np.linalg.norm(q0, axis=-1, keepdims=True)
@@ -206,10 +210,10 @@ def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dip
     speed = float(np.max(np.linalg.norm(w0, axis=-1)))
     h = (_default_step(mode, delta, t_off, every, speed) if step is None
          else as_positive_scalar("step", step, unit="s"))
-    stride = _multiple("record_interval", every, h)
     per_sample = _multiple("control_interval", delta, h) if mode == "sampled" else 0
     n_off = _multiple("off_time", t_off, h) if mode == "duty" else 0
     n_on = _multiple("on_time", t_on, h) if mode == "duty" else 0
+    stride = _multiple("record_interval", every, h)
     n_records = int(np.ceil(span / every - 1e-9)) + 1
     n_steps = (n_records - 1) * stride
 
@@ -372,6 +376,9 @@ def detumble_monte_carlo(inertia, orbit, *, members, seed, duration, rate_range,
     attitude = Rotation.random(m, rng=rng).as_quat(scalar_first=True)
     axis = rng.normal(size=(m, 3))
     rate = axis / np.linalg.norm(axis, axis=-1, keepdims=True) * rng.uniform(low, high, size=(m, 1))
+    if np.ndim(orbit.argument_of_latitude0) != 0:
+        raise ValueError("orbit.argument_of_latitude0 must be a scalar here (each member's phase is drawn), "
+                         f"got shape {np.shape(orbit.argument_of_latitude0)}")
     phase = orbit.argument_of_latitude0 + rng.uniform(0.0, 2.0 * np.pi, size=m)
     run = simulate_detumble(inertia, replace(orbit, argument_of_latitude0=phase), attitude, rate, duration,
                             **options)
