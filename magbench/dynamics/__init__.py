@@ -19,6 +19,6 @@ __all__ = ["momentum_exchange_energy_ratio", "thesis_energy_ratio", "two_coil_to
            "euler_313_matrix", "thread_center_of_mass", "body_rates_313", "pendulum_rhs", "two_coil_rhs", "mockup_rhs",
            "pendulum_energy", "natural_frequency", "small_angle_period", "pendulum_period",
            "pendulum_peak_rate", "field_for_period", "amplitude_for_period", "magnetic_torque",
-           "magnetic_torque_from_h", "perpendicular_moment", "oscillation_field_h", "rotate_to_body", "rotate_to_inertial", "quaternion_rate",
-           "euler_rates", "gravity_gradient_torque", "aerodynamic_attitude_matrix", "aerodynamic_angles",
-           "aerodynamic_body_rates"]
+           "magnetic_torque_from_h", "perpendicular_moment", "oscillation_field_h",
+           "rotate_to_body", "rotate_to_inertial", "quaternion_rate", "euler_rates", "gravity_gradient_torque",
+           "aerodynamic_attitude_matrix", "aerodynamic_angles", "aerodynamic_body_rates"]

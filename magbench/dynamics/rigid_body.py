@@ -18,6 +18,18 @@ from ..rotations import hamilton_product
 __all__ = ["rotate_to_body", "rotate_to_inertial", "quaternion_rate", "euler_rates", "gravity_gradient_torque"]
 
 
+def _cross(a, b):
+    """a × b on a trailing axis of 3, broadcasting; no checks.
+
+    The same numbers as :func:`numpy.cross`, written out because ``np.cross`` spends ~15 µs
+    per call moving axes, two thirds of a detumbling step's time (the simulation calls it
+    ten times per Runge–Kutta stage).
+    """
+    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
+
+
 def _as_quaternions(name, value):
     q = as_finite(name, value)
     if q.ndim == 0 or q.shape[-1] != 4:
@@ -32,8 +44,8 @@ def _rotate(q, v, sign):
     """v rotated by the unit quaternion q (sign +1) or by its conjugate (sign −1); no checks."""
     q = q / np.linalg.norm(q, axis=-1, keepdims=True)
     w, u = q[..., :1], sign * q[..., 1:]
-    t = 2.0 * np.cross(u, v)
-    return v + w * t + np.cross(u, t)
+    t = 2.0 * _cross(u, v)
+    return v + w * t + _cross(u, t)
 
 
 def rotate_to_body(quaternion, vectors):
@@ -140,7 +152,7 @@ def _apply_inertia(j, v):
 
 
 def _euler_rates(omega, torque, j):
-    rhs = torque - np.cross(omega, _apply_inertia(j, omega))
+    rhs = torque - _cross(omega, _apply_inertia(j, omega))
     if j.shape == (3, 3):
         return np.linalg.solve(j, rhs[..., None])[..., 0] if rhs.ndim > 1 else np.linalg.solve(j, rhs)
     return rhs / j
@@ -182,7 +194,7 @@ def euler_rates(omega, torque, inertia):
 
 def _gravity_gradient_torque(radial, j, mean_motion):
     rhat = radial / np.linalg.norm(radial, axis=-1, keepdims=True)
-    return 3.0 * np.asarray(mean_motion)[..., None] ** 2 * np.cross(rhat, _apply_inertia(j, rhat))
+    return 3.0 * np.asarray(mean_motion)[..., None] ** 2 * _cross(rhat, _apply_inertia(j, rhat))
 
 
 def gravity_gradient_torque(radial_body, inertia, mean_motion):

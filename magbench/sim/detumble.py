@@ -17,8 +17,8 @@ from scipy.spatial.transform import Rotation
 from .._validate import (as_choice, as_finite, as_nonnegative, as_positive, as_positive_or_infinite,
                          as_positive_scalar, as_vectors)
 from ..control.bdot import _bdot, _bdot_projected
-from ..dynamics.rigid_body import (_as_quaternions, _euler_rates, _gravity_gradient_torque, _inertia_matrix,
-                                   _quaternion_rate, _rotate)
+from ..dynamics.rigid_body import (_as_quaternions, _cross, _euler_rates, _gravity_gradient_torque,
+                                   _inertia_matrix, _quaternion_rate, _rotate)
 from ..earth.circular_orbit import CircularOrbit
 from .integrate import rk4_step
 from .result import SimulationResult
@@ -228,13 +228,13 @@ def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dip
         b_n, b_rate_n, radial = fields(time)
         b_body = _rotate(q, b_n, -1.0)
         if command is None:          # the on-board models: exact Ḃ in body axes
-            m = dipole_law(b_body, _rotate(q, b_rate_n, -1.0) - np.cross(w, b_body))
+            m = dipole_law(b_body, _rotate(q, b_rate_n, -1.0) - _cross(w, b_body))
         elif callable(command):      # duty "propagate": the field propagated with ω⊥
             b_est, b_rate_est = command(time)
             m = dipole_law(b_est, b_rate_est)
         else:                        # held dipole (zero when off)
             m = command
-        torque = np.cross(m, b_body)
+        torque = _cross(m, b_body)
         if gravity_gradient:
             torque = torque + _gravity_gradient_torque(_rotate(q, radial, -1.0), j, n)
         return np.concatenate([_quaternion_rate(q, w), _euler_rates(w, torque, j)], axis=-1)
@@ -245,7 +245,7 @@ def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dip
     def propagated(b_end, w_perp, t_end):
         def command(time):
             b = Rotation.from_rotvec(-w_perp * (time - t_end)).apply(b_end)
-            return b, -np.cross(w_perp, b)
+            return b, -_cross(w_perp, b)
         return command
 
     state = np.concatenate([q0, w0], axis=-1)
@@ -272,7 +272,7 @@ def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dip
                 elif estimator == "hold":
                     command = dipole_law(b_end, b_rate)
                 else:
-                    w_perp = -np.cross(b_end, b_rate) / np.sum(b_end * b_end, axis=-1, keepdims=True)
+                    w_perp = -_cross(b_end, b_rate) / np.sum(b_end * b_end, axis=-1, keepdims=True)
                     command = propagated(b_end, w_perp, time)
         state = rk4_step(rhs, time, state, h, (command,))
         state[:, :4] /= np.linalg.norm(state[:, :4], axis=-1, keepdims=True)

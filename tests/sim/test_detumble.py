@@ -156,9 +156,11 @@ def test_detumble_time_cases(rate, dwell, expected):
     ({"law": "pd"}, "law must be one of"), ({"mode": "discrete"}, "mode must be one of"),
     ({"estimator": "kalman"}, "estimator must be one of"), ({"gain": -1.0}, "gain must be > 0"),
     ({"max_dipole": 0.0}, "max_dipole must be > 0"), ({"mode": "duty", "step": 0.3}, "off_time must be a whole"),
-    ({"mode": "sampled", "record_interval": 0.75}, "record_interval must be a whole"), ({"duration": np.nan}, "duration"),
+    ({"mode": "sampled", "record_interval": 0.75}, "record_interval must be a whole"),
+    ({"duration": np.nan}, "duration"),
     ({"rate": [0.1, 0.2]}, "rate must have shape"), ({"attitude": [1.0, 0.0, 0.0]}, "attitude must have shape"),
-    ({"orbit": "LEO"}, "orbit must be"), ({"attitude": Q8[:3]}, "must agree on the number of members"), ({"inertia": [1.0, 0.0, 1.0]}, "inertia must be > 0"),
+    ({"orbit": "LEO"}, "orbit must be"), ({"attitude": Q8[:3]}, "must agree on the number of members"),
+    ({"inertia": [1.0, 0.0, 1.0]}, "inertia must be > 0"),
 ])
 def test_bad_input(change, match):
     args = dict(inertia=J_3U, orbit=SAMSAT, attitude=Q8, rate=np.radians([0.1, 10.0, 10.0]), duration=10.0,
