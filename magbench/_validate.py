@@ -71,3 +71,22 @@ def as_vectors(name, value):
             f"{name} must have shape (..., 3) (vectors on the trailing axis), got shape {arr.shape}"
         )
     return arr
+
+
+def as_positive_or_infinite(name, value, *, unit=""):
+    """Return ``value`` as a float array, raising unless every element is > 0 (``inf`` allowed, NaN not)."""
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"{name} must be numeric, got {value!r}") from exc
+    if np.any(np.isnan(arr)) or np.any(arr <= 0):
+        bad = arr[np.isnan(arr) | (arr <= 0)].ravel()[0]
+        raise ValueError(f"{name} must be > 0 (inf for no limit){(' ' + unit) if unit else ''}, got {bad!r}")
+    return arr
+
+
+def as_choice(name, value, choices):
+    """Return ``value`` unchanged, raising unless it is one of ``choices``."""
+    if not isinstance(value, str) or value not in choices:
+        raise ValueError(f"{name} must be one of {', '.join(map(repr, choices))}, got {value!r}")
+    return value

@@ -1,14 +1,17 @@
 """Equations of motion and what follows from them: the mock-up on a thread (thesis §4.1),
 the swing of a suspended magnet (thesis §2.1), torques on a dipole (thesis §1.2), and the
-exchange of momentum and energy with the Earth (thesis §1.3). Pure functions, SI.
+exchange of momentum and energy with the Earth (thesis §1.3), and the rigid spacecraft on
+orbit with SamSat-218D's attitude angles (chapter 5). Pure functions, SI.
 
 Re-exports the public names of its modules.
 """
 
+from .aerodynamic_angles import aerodynamic_angles, aerodynamic_attitude_matrix, aerodynamic_body_rates
 from .energy_exchange import momentum_exchange_energy_ratio, thesis_energy_ratio
 from .pendulum import (Mockup, amplitude_for_period, body_rates_313, euler_313_matrix, field_for_period,
                        mockup_rhs, natural_frequency, pendulum_energy, pendulum_peak_rate, pendulum_period, pendulum_rhs,
                        small_angle_period, thread_center_of_mass, two_coil_rhs, two_coil_torque)
+from .rigid_body import euler_rates, gravity_gradient_torque, quaternion_rate, rotate_to_body, rotate_to_inertial
 from .swing import oscillation_field_h
 from .torques import magnetic_torque, magnetic_torque_from_h, perpendicular_moment
 
@@ -16,4 +19,6 @@ __all__ = ["momentum_exchange_energy_ratio", "thesis_energy_ratio", "two_coil_to
            "euler_313_matrix", "thread_center_of_mass", "body_rates_313", "pendulum_rhs", "two_coil_rhs", "mockup_rhs",
            "pendulum_energy", "natural_frequency", "small_angle_period", "pendulum_period",
            "pendulum_peak_rate", "field_for_period", "amplitude_for_period", "magnetic_torque",
-           "magnetic_torque_from_h", "perpendicular_moment", "oscillation_field_h"]
+           "magnetic_torque_from_h", "perpendicular_moment", "oscillation_field_h",
+           "rotate_to_body", "rotate_to_inertial", "quaternion_rate", "euler_rates", "gravity_gradient_torque",
+           "aerodynamic_attitude_matrix", "aerodynamic_angles", "aerodynamic_body_rates"]

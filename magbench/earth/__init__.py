@@ -1,9 +1,10 @@
 """The Earth's field: the centred dipole and geomagnetic coordinates, the field along an
-orbit, and the IGRF-14 model (through ppigrf). Pure functions of numpy arrays, SI.
+orbit (and a circular orbit with the dipole field along it), and the IGRF-14 model (through ppigrf). Pure functions of numpy arrays, SI.
 
 Re-exports the public names of its modules.
 """
 
+from .circular_orbit import CircularOrbit
 from .coordinates import geomagnetic_latitude, geomagnetic_longitude
 from .dipole import (dipole_b, dipole_equatorial_b, dipole_from_gauss_coefficients, dipole_horizontal_b,
                      dipole_inclination, dipole_mean_surface_b, dipole_rms_surface_b, dipole_total_b,
@@ -17,4 +18,4 @@ __all__ = ["geomagnetic_latitude", "geomagnetic_longitude", "dipole_equatorial_b
            "earth_dipole_moment_vector", "dipole_from_gauss_coefficients", "dipole_mean_surface_b",
            "dipole_rms_surface_b", "lowes_spectrum", "orbital_dipole_b", "IgrfDipole", "IgrfField",
            "decimal_year_to_datetime", "igrf_dipole", "igrf_field", "igrf_mean_surface_b",
-           "igrf_gauss_coefficients"]
+           "igrf_gauss_coefficients", "CircularOrbit"]

@@ -1,0 +1,387 @@
+r"""B-dot detumbling of a rigid spacecraft on a circular orbit, Monte Carlo members in one array.
+
+SamSat-218D §"Rate damping" (seed lines 225–273: the law, its continuous and discrete
+modes) with Kovalenko (1975) ch. 5–6 (detumbling, its time estimates). Composes
+:class:`magbench.earth.CircularOrbit`, the rigid body of :mod:`magbench.dynamics` and the
+laws of :mod:`magbench.control`, integrated by the one :func:`magbench.sim.rk4_step`.
+
+``omega`` (the angular-velocity vector, final state of a run) is a name of the chapter-5
+contract (``shared/reference/bdot_triad.md`` §9); ``rate`` is its magnitude.
+"""
+
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+from scipy.spatial.transform import Rotation
+
+from .._validate import (as_choice, as_finite, as_nonnegative, as_positive, as_positive_or_infinite,
+                         as_positive_scalar, as_vectors)
+from ..control.bdot import _bdot, _bdot_projected
+from ..dynamics.rigid_body import (_as_quaternions, _cross, _euler_rates, _gravity_gradient_torque,
+                                   _inertia_matrix, _quaternion_rate, _rotate)
+from ..earth.circular_orbit import CircularOrbit
+from .integrate import rk4_step
+from .result import SimulationResult
+
+__all__ = ["DetumbleRun", "simulate_detumble", "detumble_time", "detumble_monte_carlo"]
+
+LAWS = ("bdot", "projected")
+MODES = ("continuous", "sampled", "duty")
+ESTIMATORS = ("model", "hold", "propagate")
+
+
+@dataclass(frozen=True)
+class DetumbleRun:
+    r"""A detumbling run of M members.
+
+    Attributes
+    ----------
+    time : ndarray, shape (K,)
+        Record times [s].
+    rate : ndarray, shape (M, K)
+        |ω| of every member at every record time [rad/s].
+    omega : ndarray, shape (M, 3)
+        Final angular velocity in body axes [rad/s].
+    attitude : ndarray, shape (M, 4)
+        Final attitude quaternion, scalar first, body → inertial [-].
+    inputs : dict
+        The run's arguments (and the step used, the initial states and any Monte Carlo
+        draws) [SI].
+
+    Notes
+    -----
+    Not in the sources: the names of the chapter-5 contract. ``inputs`` here is what the run
+    was given, not python-control's input signals, so the run is not itself a
+    :class:`~magbench.sim.SimulationResult`; :meth:`to_result` gives that view.
+    """
+
+    time: np.ndarray
+    rate: np.ndarray
+    omega: np.ndarray
+    attitude: np.ndarray
+    inputs: dict = field(default_factory=dict)
+
+    def to_result(self):
+        """The run as a :class:`~magbench.sim.SimulationResult`: state ``rate`` of shape (K, M),
+        the arguments as ``params`` and the final state as ``summary``."""
+        k = self.time.size
+        return SimulationResult(self.time, self.rate.T[None], np.empty((0, k)), np.empty((0, k)), ("rate",), (), (),
+                                params=dict(self.inputs),
+                                summary={"final_angular_velocity": self.omega, "final_attitude": self.attitude})
+
+
+def _multiple(name, value, step):
+    """Number of steps in ``value``, raising unless it is a whole number of steps."""
+    ratio = value / step
+    n = int(round(ratio))
+    if n < 1 or abs(ratio - n) > 1e-9 * max(1.0, ratio):
+        raise ValueError(f"{name} must be a whole number of integration steps ({step!r} s), got {value!r} s")
+    return n
+
+
+def _default_step(mode, control_interval, off_time, record_interval, speed):
+    if mode == "sampled":
+        return control_interval
+    if mode == "duty":
+        return min(0.25, off_time / 4.0)
+    bound = min(0.5, 0.2 / speed) if speed > 0 else 0.5
+    return record_interval / np.ceil(record_interval / bound - 1e-12)
+
+
+class _Field:
+    """Inertial field, its rate and the radial direction at one time, kept for the RK stages."""
+
+    def __init__(self, orbit):
+        self.orbit = orbit
+        self.cache = {}
+
+    def __call__(self, time):
+        hit = self.cache.get(time)
+        if hit is None:
+            if len(self.cache) > 4:
+                self.cache.clear()
+            b, b_rate = self.orbit.field_and_rate(time)
+            hit = self.cache[time] = (b, b_rate, self.orbit.position(time) / self.orbit.radius)
+        return hit
+
+
+def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dipole, law="bdot",
+                      mode="continuous", control_interval=0.1, on_time=16.0, off_time=1.0, estimator="model",
+                      step=None, gravity_gradient=True, record_interval=1.0):
+    r"""Simulate B-dot detumbling of M members at once (RK4, fixed step).
+
+    Parameters
+    ----------
+    inertia : array_like, shape (3,) or (3, 3)
+        Principal moments (body axes principal) or the inertia tensor in body axes [kg·m²].
+    orbit : CircularOrbit
+        Orbit and field; an array ``argument_of_latitude0`` (M,) gives each member its orbit
+        phase [-].
+    attitude : array_like, shape (M, 4) or (4,)
+        Initial attitude quaternion, scalar first, body → inertial [-].
+    rate : array_like, shape (M, 3) or (3,)
+        Initial angular velocity in body axes [rad/s].
+    duration : float
+        Simulated time; the run ends at the first record time ≥ duration [s].
+    gain : float or array_like, shape (M,)
+        k > 0: [A·m²·s/T] for ``law="bdot"``, [N·m·s] for ``law="projected"``.
+    max_dipole : float or array_like, shape (3,)
+        Largest dipole of each coil, > 0 (``inf``: no limit) [A·m²].
+    law : {"bdot", "projected"}, optional
+        m = −sat(kḂ) (:func:`magbench.control.bdot_dipole`) or the projected law
+        (:func:`magbench.control.bdot_dipole_projected`) [-].
+    mode : {"continuous", "sampled", "duty"}, optional
+        "continuous": exact Ḃ_body = RᵀḂ_N − ω × B_body at every RK stage (on-board models);
+        "sampled": every ``control_interval`` from t = 0, m = sat(−k(B_k − B_{k−1})/Δ), held,
+        m = 0 before the second sample; "duty": each cycle starts at t = 0 with ``off_time``
+        coils off, then ``on_time`` on, the dipole from ``estimator`` [-].
+    control_interval : float, optional
+        Sampling interval Δ of the "sampled" mode [s].
+    on_time : float, optional
+        Coils-on time of each duty cycle [s].
+    off_time : float, optional
+        Coils-off (measurement) time of each duty cycle [s].
+    estimator : {"model", "hold", "propagate"}, optional
+        Duty mode only. "model": exact Ḃ while on (on-board models); "hold": Ḃ from the field
+        difference across the window, dipole held; "propagate": ω⊥ = −B × Ḃ/|B|² from the
+        window, B_body propagated with it while on [-].
+    step : float, optional
+        Integration step [s]; by default ``control_interval`` (sampled), min(0.25 s,
+        off_time/4) (duty), or the largest divisor of ``record_interval`` not above
+        min(0.5 s, 0.2 rad / max|ω₀|) (continuous).
+    gravity_gradient : bool, optional
+        Include the gravity-gradient torque [-].
+    record_interval : float, optional
+        Interval between records of |ω|; a whole number of steps [s].
+
+    Returns
+    -------
+    DetumbleRun
+        ``time`` (K,), ``rate`` (M, K), final ``omega`` (M, 3) and ``attitude`` (M, 4), and
+        ``inputs``.
+
+    Notes
+    -----
+    SamSat-218D §"Rate damping" (seed lines 225–261) for the law and the two modes;
+    SamSat-218D §"Equations of motion" (seed lines 163–199) and Kovalenko (1975) eq. (4.18)
+    for the dynamics (aerodynamic torque neglected, ≲ 1 % of the control torque at 485 km).
+    Torque m × B_body; q renormalised after every step (its drift is O(h⁵) per step).
+    The duty-mode estimators are ours (the paper's ref. [1] is not available; see the shared
+    reference §2): "model" is the only reading that damps the whole 5–45 °/s range.
+
+    Examples
+    --------
+    >>> orbit = CircularOrbit(6856e3, np.radians(97.3), 7.72e22)
+    >>> run = simulate_detumble([0.0067, 0.0419, 0.0419], orbit, [1.0, 0.0, 0.0, 0.0],
+    ...                         np.radians([0.1, 10.0, 10.0]), 60.0, gain=1.691e4, max_dipole=0.2)
+    >>> run.rate.shape, bool(run.rate[0, -1] < run.rate[0, 0])
+    ((1, 61), True)
+    """
+    j = _inertia_matrix("inertia", inertia)
+    if not isinstance(orbit, CircularOrbit):
+        raise ValueError(f"orbit must be a magbench.earth.CircularOrbit, got {type(orbit).__name__}")
+    q0 = _as_quaternions("attitude", attitude)
+    w0 = as_vectors("rate", rate)
+    if q0.ndim > 2 or w0.ndim > 2:
+        raise ValueError(f"attitude and rate must be (M, 4) or (4,) and (M, 3) or (3,), got {q0.shape} and {w0.shape}")
+    phase = np.asarray(orbit.argument_of_latitude0)
+    try:
+        members = np.broadcast_shapes(q0.shape[:-1], w0.shape[:-1], phase.shape, np.shape(gain))
+    except ValueError:
+        raise ValueError(f"attitude {q0.shape}, rate {w0.shape}, orbit.argument_of_latitude0 {phase.shape} and gain "
+                         f"{np.shape(gain)} must agree on the number of members M (or have none)") from None
+    members = members[0] if members else 1
+    q0 = np.array(np.broadcast_to(q0.reshape(-1, 4), (members, 4)))
+    q0 /= np.linalg.norm(q0, axis=-1, keepdims=True)
+    w0 = np.array(np.broadcast_to(w0.reshape(-1, 3), (members, 3)))
+    span = as_positive_scalar("duration", duration, unit="s")
+    k = as_positive("gain", gain, unit="N·m·s" if law == "projected" else "A·m²·s/T")
+    k = k[:, None] if k.ndim == 1 else k
+    limit = as_positive_or_infinite("max_dipole", max_dipole, unit="A·m²")
+    as_choice("law", law, LAWS)
+    as_choice("mode", mode, MODES)
+    as_choice("estimator", estimator, ESTIMATORS)
+    delta = as_positive_scalar("control_interval", control_interval, unit="s")
+    t_on = as_positive_scalar("on_time", on_time, unit="s")
+    t_off = as_positive_scalar("off_time", off_time, unit="s")
+    every = as_positive_scalar("record_interval", record_interval, unit="s")
+    if not isinstance(gravity_gradient, (bool, np.bool_)):
+        raise ValueError(f"gravity_gradient must be True or False, got {gravity_gradient!r}")
+    speed = float(np.max(np.linalg.norm(w0, axis=-1)))
+    h = (_default_step(mode, delta, t_off, every, speed) if step is None
+         else as_positive_scalar("step", step, unit="s"))
+    per_sample = _multiple("control_interval", delta, h) if mode == "sampled" else 0
+    n_off = _multiple("off_time", t_off, h) if mode == "duty" else 0
+    n_on = _multiple("on_time", t_on, h) if mode == "duty" else 0
+    stride = _multiple("record_interval", every, h)
+    n_records = int(np.ceil(span / every - 1e-9)) + 1
+    n_steps = (n_records - 1) * stride
+
+    def dipole_law(b_body, b_rate):
+        return _bdot(b_rate, k, limit) if law == "bdot" else _bdot_projected(b_body, b_rate, k, limit)
+
+    fields = _Field(orbit)
+    n = orbit.mean_motion
+
+    def rhs(time, state, command):
+        q, w = state[:, :4], state[:, 4:]
+        b_n, b_rate_n, radial = fields(time)
+        b_body = _rotate(q, b_n, -1.0)
+        if command is None:          # the on-board models: exact Ḃ in body axes
+            m = dipole_law(b_body, _rotate(q, b_rate_n, -1.0) - _cross(w, b_body))
+        elif callable(command):      # duty "propagate": the field propagated with ω⊥
+            b_est, b_rate_est = command(time)
+            m = dipole_law(b_est, b_rate_est)
+        else:                        # held dipole (zero when off)
+            m = command
+        torque = _cross(m, b_body)
+        if gravity_gradient:
+            torque = torque + _gravity_gradient_torque(_rotate(q, radial, -1.0), j, n)
+        return np.concatenate([_quaternion_rate(q, w), _euler_rates(w, torque, j)], axis=-1)
+
+    def body_field(time, state):
+        return _rotate(state[:, :4], fields(time)[0], -1.0)
+
+    def propagated(b_end, w_perp, t_end):
+        def command(time):
+            b = Rotation.from_rotvec(-w_perp * (time - t_end)).apply(b_end)
+            return b, -_cross(w_perp, b)
+        return command
+
+    state = np.concatenate([q0, w0], axis=-1)
+    rates = np.empty((members, n_records))
+    rates[:, 0] = np.linalg.norm(w0, axis=-1)
+    zero = np.zeros((members, 3))
+    command, previous, window_start = None, None, None
+    for i in range(n_steps):
+        time = i * h
+        if mode == "sampled" and i % per_sample == 0:
+            sample = body_field(time, state)
+            command = zero if previous is None else dipole_law(sample, (sample - previous) / delta)
+            previous = sample
+        elif mode == "duty":
+            phase_step = i % (n_off + n_on)
+            if phase_step == 0:
+                window_start = body_field(time, state)
+                command = zero
+            elif phase_step == n_off:
+                b_end = body_field(time, state)
+                b_rate = (b_end - window_start) / t_off
+                if estimator == "model":
+                    command = None
+                elif estimator == "hold":
+                    command = dipole_law(b_end, b_rate)
+                else:
+                    w_perp = -_cross(b_end, b_rate) / np.sum(b_end * b_end, axis=-1, keepdims=True)
+                    command = propagated(b_end, w_perp, time)
+        state = rk4_step(rhs, time, state, h, (command,))
+        state[:, :4] /= np.linalg.norm(state[:, :4], axis=-1, keepdims=True)
+        if (i + 1) % stride == 0:
+            rates[:, (i + 1) // stride] = np.linalg.norm(state[:, 4:], axis=-1)
+    inputs = dict(inertia=j, orbit=orbit, attitude=q0, rate=w0, duration=span, gain=gain, max_dipole=max_dipole,
+                  law=law, mode=mode, control_interval=delta, on_time=t_on, off_time=t_off, estimator=estimator,
+                  step=h, gravity_gradient=bool(gravity_gradient), record_interval=every)
+    return DetumbleRun(np.arange(n_records) * every, rates, state[:, 4:].copy(), state[:, :4].copy(), inputs)
+
+
+def detumble_time(time, rate, threshold=np.radians(0.5), dwell=0.0):
+    r"""Time at which each member is detumbled: |ω| ≤ threshold from then on for ``dwell``.
+
+    Parameters
+    ----------
+    time : array_like, shape (K,)
+        Record times, increasing [s].
+    rate : array_like, shape (M, K) or (K,)
+        |ω| at the record times [rad/s].
+    threshold : float, optional
+        Largest |ω| counted as detumbled [rad/s]; 0.5 °/s by default.
+    dwell : float, optional
+        How long |ω| must stay at or below ``threshold`` (every record in [t, t + dwell],
+        which must lie inside the run); 0 takes the first crossing [s].
+
+    Returns
+    -------
+    ndarray, shape (M,) or ()
+        The first record time that qualifies [s]; NaN if none does.
+
+    Notes
+    -----
+    Not in the sources: SamSat-218D §"Rate damping" (Fig. 2) gives no criterion; the
+    0.5 °/s threshold is Basilisk's and Cp557's convention, the dwell Cp557's (30 s).
+
+    Examples
+    --------
+    >>> detumble_time([0.0, 1.0, 2.0, 3.0], [[0.1, 0.0, 0.0, 0.0], [0.1, 0.0, 0.1, 0.0]], 0.05, 1.0).tolist()
+    [1.0, nan]
+    """
+    t = as_finite("time", time)
+    if t.ndim != 1 or t.size < 1 or np.any(np.diff(t) <= 0):
+        raise ValueError(f"time must be a 1-D increasing array [s], got shape {t.shape}")
+    r = as_nonnegative("rate", rate, unit="rad/s")
+    if r.shape[-1] != t.size or r.ndim > 2:
+        raise ValueError(f"rate must have shape (M, {t.size}) or ({t.size},), got {r.shape}")
+    limit = as_nonnegative("threshold", threshold, unit="rad/s")
+    hold = as_nonnegative("dwell", dwell, unit="s")
+    below = r <= limit
+    index = np.arange(t.size)
+    # Index of the first record above the threshold at or after each record (K if none).
+    next_above = np.minimum.accumulate(np.where(below, t.size, index)[..., ::-1], axis=-1)[..., ::-1]
+    end = np.append(t, np.inf)[next_above]
+    ok = below & (end > t + hold) & (t + hold <= t[-1])
+    first = np.argmax(ok, axis=-1)
+    return np.where(ok.any(axis=-1), t[first], np.nan)
+
+
+def detumble_monte_carlo(inertia, orbit, *, members, seed, duration, rate_range, **options):
+    r"""Detumbling from random attitudes, rate axes, rate magnitudes and orbit phases.
+
+    Parameters
+    ----------
+    inertia : array_like, shape (3,) or (3, 3)
+        Principal moments or inertia tensor [kg·m²].
+    orbit : CircularOrbit
+        Orbit and field; each member's orbit phase is drawn uniformly and added to
+        ``argument_of_latitude0`` [-].
+    members : int
+        Number of members M ≥ 1 [-].
+    seed : int
+        Seed of :func:`numpy.random.default_rng` [-].
+    duration : float
+        Simulated time [s].
+    rate_range : tuple of float
+        Lowest and highest initial |ω|, drawn uniformly; axis uniform on the sphere [rad/s].
+    options : keyword arguments
+        ``**options``: keyword arguments of :func:`simulate_detumble` (``gain`` and ``max_dipole`` required)
+        [SI].
+
+    Returns
+    -------
+    DetumbleRun
+        As :func:`simulate_detumble`; ``inputs["draws"]`` holds the drawn attitude, rate and
+        orbit phase.
+
+    Notes
+    -----
+    Not in the sources: the envelope runs of the shared reference §6.2 (uniform attitude
+    by scipy's ``Rotation.random``); Kovalenko (1975) eq. (6.50) estimates their median.
+    """
+    m = int(as_positive_scalar("members", members))
+    if m != members:
+        raise ValueError(f"members must be a positive integer, got {members!r}")
+    bounds = as_nonnegative("rate_range", rate_range, unit="rad/s")
+    if bounds.shape != (2,) or not bounds[0] <= bounds[1] or bounds[1] == 0:
+        raise ValueError(f"rate_range must be (low, high) with 0 <= low <= high, high > 0 [rad/s], got {rate_range!r}")
+    low, high = bounds
+    rng = np.random.default_rng(seed)
+    attitude = Rotation.random(m, rng=rng).as_quat(scalar_first=True)
+    axis = rng.normal(size=(m, 3))
+    rate = axis / np.linalg.norm(axis, axis=-1, keepdims=True) * rng.uniform(low, high, size=(m, 1))
+    if np.ndim(orbit.argument_of_latitude0) != 0:
+        raise ValueError("orbit.argument_of_latitude0 must be a scalar here (each member's phase is drawn), "
+                         f"got shape {np.shape(orbit.argument_of_latitude0)}")
+    phase = orbit.argument_of_latitude0 + rng.uniform(0.0, 2.0 * np.pi, size=m)
+    run = simulate_detumble(inertia, replace(orbit, argument_of_latitude0=phase), attitude, rate, duration,
+                            **options)
+    run.inputs["draws"] = {"attitude": attitude, "rate": rate, "argument_of_latitude0": phase}
+    run.inputs["seed"] = seed
+    return run
