@@ -17,7 +17,7 @@ from magbench import chapters, coils, figures
 from magbench.chapters import ch02_field_simulator
 from magbench.cli import main
 from magbench.constants import MU_0
-from magbench.figures import thesis_ch2
+from magbench.chapters.ch02_field_simulator import figures as thesis_ch2
 
 A, D_BUILT, N, I = 0.5, 0.51, 110, 2.3   # as built: seed lines 272, 309
 MEASURED = 262.0                         # seed line 318

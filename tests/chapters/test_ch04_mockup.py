@@ -322,7 +322,7 @@ def test_bad_input(call, message):
 
 def test_interconnection_matches_simulate_pid():
     ct = _ct()
-    from magbench.figures import thesis_ch4
+    from magbench.chapters.ch04_mockup import figures as thesis_ch4
 
     kp, ki, kd = control.pid_gains_for_triple_pole(J, B0, 0.05)
     system, loop = thesis_ch4.build_interconnection(J, B0, kp, ki, kd, 0.4)
@@ -337,7 +337,7 @@ def test_interconnection_matches_simulate_pid():
 
 def test_reading_evidence_decides_stability():
     pytest.importorskip("control")
-    from magbench.figures import thesis_ch4
+    from magbench.chapters.ch04_mockup import figures as thesis_ch4
 
     rows = {r["reading"]: r for r in thesis_ch4.reading_evidence(J, B0, M1, np.pi / 2)}
     assert {k: r["stable_sets"] for k, r in rows.items()} == {

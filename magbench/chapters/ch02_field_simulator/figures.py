@@ -10,13 +10,13 @@ three-axis simulator that cancels the laboratory's field.
 
 import numpy as np
 
-from .. import coils, igrf
-from ..chapters import ch02_field_simulator
-from ..constants import MU_0
-from ..io import load_measurements
-from ..chapters.ch02_field_simulator import CHAPTER
-from ..params import chapter_parameters
-from . import FigureData, FigureParameter, FigureSpec, Series, register
+from ... import coils, igrf
+from ...chapters import ch02_field_simulator
+from ...constants import MU_0
+from ...io import load_measurements
+from . import CHAPTER
+from .._base import chapter_parameters
+from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 
 SOURCE = "Bui (2016), thesis §2"
 
@@ -714,21 +714,21 @@ def _three_axis_parameters():
 
 
 register(FigureSpec("thesis-fig03", "Candidate coil systems at equal power (thesis Fig. 3)",
-                    "Bui (2016) Fig. 3; Kovalenko (1975) §3.4", compute_fig03, plot_fig03, _fig03_parameters()))
+                    "Bui (2016) Fig. 3; Kovalenko (1975) §3.4", compute_fig03, plot_fig03, _fig03_parameters))
 register(FigureSpec("thesis-fig05", "Field lines of the coil pair (thesis Fig. 5)", "Bui (2016) Fig. 5",
-                    compute_fig05, plot_fig05, _geometry_parameters()))
+                    compute_fig05, plot_fig05, _geometry_parameters))
 register(FigureSpec("thesis-fig06", "|H| across the axis (thesis Fig. 6)", "Bui (2016) Fig. 6", compute_fig06, plot_line,
-                    _geometry_parameters()))
+                    _geometry_parameters))
 register(FigureSpec("thesis-fig07", "|H| on the coil axis (thesis Fig. 7)", "Bui (2016) Fig. 7",
-                    compute_fig07, plot_line, _geometry_parameters()))
+                    compute_fig07, plot_line, _geometry_parameters))
 register(FigureSpec("thesis-fig08", "The built simulator (thesis Fig. 8)", "Bui (2016) §2.4, Fig. 8",
-                    compute_fig08, plot_fig08, _fig08_parameters()))
+                    compute_fig08, plot_fig08, _fig08_parameters))
 register(FigureSpec("ch02-zone-criterion", "Uniform-zone length against the tolerance band",
                     "Bui (2016) §2.3", compute_zone_criterion, plot_zone_criterion,
-                    {k: v for k, v in _geometry_parameters(tolerance=False).items()
-                     if k in ("coil_radius", "design_spacing_ratio", "comsol_spacing", "built_spacing")}))
+                    lambda: {k: v for k, v in _geometry_parameters(tolerance=False).items()
+                             if k in ("coil_radius", "design_spacing_ratio", "comsol_spacing", "built_spacing")}))
 register(FigureSpec("ch02-hypotheses", "Explanations of the measured centre field", "Bui (2016) §2.4",
-                    compute_hypotheses, plot_hypotheses, _hypotheses_parameters()))
+                    compute_hypotheses, plot_hypotheses, _hypotheses_parameters))
 register(FigureSpec("ch02-three-axis", "A three-axis simulator for the laboratory",
                     "Not in the thesis (its ref. [1])", compute_three_axis, plot_three_axis,
-                    _three_axis_parameters()))
+                    _three_axis_parameters))

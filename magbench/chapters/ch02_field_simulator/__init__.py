@@ -6,11 +6,11 @@ COMSOL, built and measured, beside the exact field of thin loops.
 
 import numpy as np
 
-from .._validate import as_finite, as_positive
-from ..compare import make_row
-from ..io import load_measurements, load_parameter_set, load_printed
-from ..errata import printed_check
-from ._base import Chapter, chapter_parameters
+from ..._validate import as_finite, as_positive
+from ...compare import make_row
+from ...io import load_measurements, load_parameter_set, load_printed
+from ...errata import printed_check
+from .._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "ZONE_TOLERANCE", "simulator_rows", "simulator_center_h_tolerance",
            "simulator_checks", "simulator_field_checks", "thesis_printed_ampere_turns"]
@@ -73,7 +73,7 @@ def simulator_center_h_tolerance(current, turns, radius, spacing_range=(0.50, 0.
     (0.50–0.52 m, thesis §2.4) and the current is printed to 0.1 A (±0.05 A). The
     largest |ΔH| over the corners of that box, from its middle, is the tolerance.
     """
-    from .. import coils
+    from ... import coils
 
     d_mid = 0.5 * (spacing_range[0] + spacing_range[1])
     base = float(coils.helmholtz_center_h(current, turns, radius, d_mid))
@@ -96,8 +96,8 @@ def simulator_rows(params=None):
     params : dict, optional
         Chapter-2 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
     """
-    from .. import coils
-    from ..io import load_measurements
+    from ... import coils
+    from ...io import load_measurements
 
     p = params or chapter_parameters("ch02")
     m = load_measurements("thesis")
@@ -139,7 +139,7 @@ def simulator_rows(params=None):
 def simulator_checks():
     """Thesis §2.2 (the Helmholtz field simulator): printed design numbers that do not
     follow from eq. (16) and the winding formulas, on the thesis's own parameter set."""
-    from .. import coils
+    from ... import coils
 
     p = load_parameter_set("thesis")
     printed = load_printed("thesis")
@@ -184,7 +184,7 @@ def simulator_checks():
 def simulator_field_checks():
     """Thesis §2.1–2.4 beyond the coil design (eq. 15, the centre-field deviation, the
     electrics at the current limit) and Kovalenko's uniform-field coil systems (§3.4)."""
-    from .. import coils
+    from ... import coils
 
     p = load_parameter_set("thesis")
     m = load_measurements("thesis")
@@ -300,7 +300,7 @@ CHAPTER = Chapter(
     key="ch02", title="The geomagnetic-field simulator",
     short_title="the field simulator",
     pages=("book/ch02-field-simulator",), source="thesis", inputs=INPUTS,
-    figure_modules=("magbench.figures.thesis_ch2",),
+    figure_modules=("magbench.chapters.ch02_field_simulator.figures",),
     comparisons=simulator_rows,
     row_kinds=(("comsol-", "simulation"), ("sim-center-h", "measurement"),
                ("sim-coil-resistance", "measurement")),
