@@ -17,7 +17,7 @@ from .magnetorquer import (coil_current, coil_mass, coil_mass_for_moment, coil_r
                            turn_resistance, turns_from_resistance, turns_from_winding_length,
                            turns_per_volt_bounds, winding_density, winding_length,
                            wire_area_for_moment, wire_diameter_from_resistance)
-from .coil_design import binding_limit, coil_designs, design_explanation, design_magnetorquer
+from .coil_design import binding_limit, coil_designs, design_magnetorquer
 from .cores import (core_central_magnetization, effective_permeability, electromagnet_design,
                     field_for_magnetization, magnetization_curve, rod_demagnetizing_factor)
 from .magnets import (magnet_mass_for_torque, magnet_moment_per_mass, magnet_torque_per_mass,
@@ -30,7 +30,7 @@ __all__ = ["SHAPES", "turn_area", "turn_length", "wire_area", "wire_diameter", "
            "turns_from_winding_length", "winding_length", "joule_power_for_winding_length", "coil_mass",
            "coil_mass_for_moment", "mass_power_product", "winding_density", "mass_power_product_kovalenko",
            "supply_voltage", "turns_per_volt_bounds", "turns_from_resistance",
-           "wire_diameter_from_resistance", "coil_designs", "binding_limit", "design_explanation",
+           "wire_diameter_from_resistance", "coil_designs", "binding_limit",
            "design_magnetorquer", "rod_demagnetizing_factor", "effective_permeability",
            "magnetization_curve", "field_for_magnetization", "core_central_magnetization",
            "electromagnet_design", "magnet_torque_per_mass", "magnet_mass_for_torque",

@@ -10,6 +10,8 @@ import math
 
 import numpy as np
 import pytest
+
+from magbench.cli import design_explanation
 from numpy.testing import assert_allclose
 
 from magbench import magnetorquer as mt
@@ -238,7 +240,8 @@ def test_design_solver_infeasible_moment():
     res = mt.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, WIRES[:3], RHO, GAMMA)
     assert not res["feasible"] and res["turns"].size == 0
     assert res["binding_limit"] == "moment"
-    assert res["explanation"].startswith("moment") and "0.172" in res["explanation"]
+    explanation = design_explanation(res, W_MAX, M_MAX, M_REQ, U)
+    assert explanation.startswith("moment") and "0.172" in explanation
     assert res["min_power"] is None and res["min_mass"] is None
 
 
@@ -247,7 +250,8 @@ def test_design_solver_infeasible_power_and_mass():
     res = mt.design_magnetorquer(M_REQ, U, SIDE, "square", 1.0, 0.02, WIRES, RHO, GAMMA)
     assert not res["feasible"]
     assert res["binding_limit"] == "power and mass"
-    assert "M·W" in res["explanation"] and "0.18 mm" in res["explanation"]
+    explanation = design_explanation(res, 1.0, 0.02, M_REQ, U)
+    assert "M·W" in explanation and "0.18 mm" in explanation
 
 
 def test_design_solver_infeasible_winding_fit():
