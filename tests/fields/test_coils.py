@@ -391,3 +391,14 @@ def test_output_shape_follows_points():
     assert square_loop_b(p, A, CURRENT).shape == p.shape
     assert loop_b_posed(p, A, CURRENT, 1, (0, 0, 0), (1, 1, 1)).shape == p.shape
     assert coils.loop_b([0.1, 0.2, 0.3], A, CURRENT).shape == (3,)
+
+
+def test_a_round_coil_is_called_round():
+    """One word per concept: shape values say "round", as the turn and magnetorquer
+    functions do; the old "circle" is refused with the valid names."""
+    from magbench.fields import coaxial_system_b
+
+    args = ([0.0, 0.0, 0.0], [0.5, 0.5], [-0.25, 0.25], [253.0, 253.0])
+    coaxial_system_b(args[0], ["round", "round"], *args[1:])
+    with pytest.raises(ValueError, match="'round' or 'square', got 'circle'"):
+        coaxial_system_b(args[0], ["circle", "round"], *args[1:])

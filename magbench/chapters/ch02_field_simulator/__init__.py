@@ -205,8 +205,8 @@ def simulator_field_checks():
     resistance = float(coils.winding_resistance(a, n, v["sim_wire_diameter"], v["copper_resistivity"]))
     ni_printed = printed["thesis-sim-ampere-turns"].value_as_printed
     n_printed_r = round(printed["thesis-sim-coil-resistance"].value_as_printed / resistance * n)
-    circle2, helm = ["circle"] * 2, ([1.0, 1.0], [-0.5, 0.5], [1.0, 1.0])
-    four = (["circle"] * 4, [1.0] * 4, [-1.0, -0.25, 0.25, 1.0], [7.0, 3.0, 3.0, 7.0])
+    round2, helm = ["round"] * 2, ([1.0, 1.0], [-0.5, 0.5], [1.0, 1.0])
+    four = (["round"] * 4, [1.0] * 4, [-1.0, -0.25, 0.25, 1.0], [7.0, 3.0, 3.0, 7.0])
     four_dev = coils.coaxial_system_sphere_nonuniformity(*four, 2.0 / 3.0)
     half_radius_dev = coils.coaxial_system_sphere_nonuniformity(*four, 0.5)
     helmholtz_radius = (2.0 / 3.0) / coils.uniform_sphere_radius(1.0, 1.0, four_dev)
@@ -259,7 +259,7 @@ def simulator_field_checks():
             kov["kov-helmholtz-cylinder-deviation"], id="kovalenko-helmholtz-cylinder", chapter="ch02",
             location="§3.4, p. 60",
             quantity="Helmholtz pair: largest deviation in a cylinder of radius 0.1r, length 0.2r",
-            computed=100 * coils.coaxial_system_cylinder_nonuniformity(circle2, *helm, 0.1, 0.2), unit="%",
+            computed=100 * coils.coaxial_system_cylinder_nonuniformity(round2, *helm, 0.1, 0.2), unit="%",
             explanation="Exact loop fields on a grid of the solid cylinder.",
             computation="magbench.coils.coaxial_system_cylinder_nonuniformity"),
         printed_check(

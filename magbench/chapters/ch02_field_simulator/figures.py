@@ -326,21 +326,21 @@ def coil_systems():
     half_sq = float(coils.square_pair_spacing(1.0)) / 2
     r1 = np.sqrt(4 / 7)
     return [
-        ("Helmholtz pair, d = a", ["circle"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0]),
-        ("thesis pair, d = 1.116a", ["circle"] * 2, [1.0, 1.0], [-0.558, 0.558], [1.0, 1.0]),
+        ("Helmholtz pair, d = a", ["round"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0]),
+        ("thesis pair, d = 1.116a", ["round"] * 2, [1.0, 1.0], [-0.558, 0.558], [1.0, 1.0]),
         ("square pair, d = 0.5445 l", ["square"] * 2, [1.0, 1.0], [-half_sq, half_sq], [1.0, 1.0]),
-        ("Maxwell, three circles", ["circle"] * 3, [r1, 1.0, r1], [-np.sqrt(3 / 7), 0.0, np.sqrt(3 / 7)],
+        ("Maxwell, three circles", ["round"] * 3, [r1, 1.0, r1], [-np.sqrt(3 / 7), 0.0, np.sqrt(3 / 7)],
          [49.0, 64.0, 49.0]),
-        ("three circles (Kovalenko)", ["circle"] * 3, [1 / 1.0055, 1.0, 1 / 1.0055],
+        ("three circles (Kovalenko)", ["round"] * 3, [1 / 1.0055, 1.0, 1 / 1.0055],
          [-0.7599 / 1.0055, 0.0, 0.7599 / 1.0055], [50.0, 27.0, 50.0]),
-        ("four circles (Kovalenko)", ["circle"] * 4, [1.0] * 4, [-1.0, -0.25, 0.25, 1.0], [7.0, 3.0, 3.0, 7.0]),
+        ("four circles (Kovalenko)", ["round"] * 4, [1.0] * 4, [-1.0, -0.25, 0.25, 1.0], [7.0, 3.0, 3.0, 7.0]),
         ("Rubens, five squares", ["square"] * 5, [1.0] * 5, [-0.5, -0.25, 0.0, 0.25, 0.5],
          [19.0, 4.0, 10.0, 4.0, 19.0]),
     ]
 
 
 def _turn_lengths(shapes, sizes):
-    return np.array([2 * np.pi * s if sh == "circle" else 4 * s for sh, s in zip(shapes, sizes)])
+    return np.array([2 * np.pi * s if sh == "round" else 4 * s for sh, s in zip(shapes, sizes)])
 
 
 def compute_fig03(tolerance, center_h, power, winding_area, copper_resistivity):
@@ -477,7 +477,7 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
     n_eff = n * frac
     a_eff = coils.pair_radius_for_center_h(measured_center_h, n * i, d)
     reversed_h = float(np.linalg.norm(coils.coaxial_system_b(
-        np.zeros(3), ["circle"] * 2, [a, a], [-d / 2, d / 2], [n * i, -n * i]))) / MU_0
+        np.zeros(3), ["round"] * 2, [a, a], [-d / 2, d / 2], [n * i, -n * i]))) / MU_0
     return [
         row("exact", "exact field of the pair as built", predicted=h_model),
         row("fewer-turns", "fewer effective turns per coil", needed=n_eff, unit="turns",
