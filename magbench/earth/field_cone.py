@@ -77,7 +77,7 @@ def field_cone_axis(inclination):
 
     Examples
     --------
-    >>> np.round(field_cone_axis(0.0), 12).tolist()
+    >>> (np.round(field_cone_axis(0.0), 12) + 0.0).tolist()
     [0.0, 0.0, 1.0]
     """
     return _cone_frame(_inclination(inclination))[2]
