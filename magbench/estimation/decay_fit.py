@@ -51,8 +51,8 @@ class DecayFit:
 def _series(time, values):
     t = as_finite("time", time)
     y = as_finite("values", values)
-    if t.ndim != 1 or t.shape != y.shape or t.size < 4:
-        raise ValueError(f"time and values must be 1-D of one length >= 4, got {t.shape} and {y.shape}")
+    if t.ndim != 1 or t.shape != y.shape or t.size < 5:
+        raise ValueError(f"time and values must be 1-D of one length >= 5 (AICc of a 2-parameter fit), got {t.shape} and {y.shape}")
     return t, y
 
 
@@ -110,9 +110,9 @@ def fit_linear_decay(time, values):
 
     Examples
     --------
-    >>> fit = fit_linear_decay([0.0, 1.0, 2.0, 3.0], [1.0, 0.9, 0.81, 0.7])
+    >>> fit = fit_linear_decay([0.0, 1.0, 2.0, 3.0, 4.0], [1.0, 0.9, 0.81, 0.7, 0.6])
     >>> round(fit.parameters["slope"], 3)
-    -0.099
+    -0.1
     """
     t, y = _series(time, values)
     design = np.stack([np.ones_like(t), t], axis=-1)

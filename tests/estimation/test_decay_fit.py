@@ -32,4 +32,4 @@ def test_corrected_aic_needs_enough_samples():
     with pytest.raises(ValueError, match="samples must exceed parameters"):
         corrected_aic(1.0, 4, 2)
     with pytest.raises(ValueError, match="time and values must be 1-D"):
-        fit_linear_decay([0, 1, 2], [1, 2, 3])
+        fit_linear_decay([0, 1, 2, 3], [1, 2, 3, 4])
