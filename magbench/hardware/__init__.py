@@ -1,5 +1,5 @@
 """Hardware that makes or measures a field: turns and wires, air-core magnetorquers and
-their design space, windings, cored rods and electromagnets, permanent magnets, and the
+their design space, windings, cored rods and electromagnets, permanent magnets, hysteresis rods, and the
 sensors (datasheet error models).
 
 Pure functions of numpy arrays, SI. Re-exports the public functions of its modules.
@@ -22,9 +22,12 @@ from .cores import (core_central_magnetization, effective_permeability, electrom
                     field_for_magnetization, magnetization_curve, rod_demagnetizing_factor)
 from .magnets import (magnet_mass_for_torque, magnet_moment_per_mass, magnet_torque_per_mass,
                       permanent_magnet_min_mass)
+from .hysteresis import (hysteresis_damping_torque, hysteresis_loop_energy, hysteresis_response,
+                         hysteresis_slope, limb_induction, limiting_loop_energy, rod_cycle_energy)
 from .winding import winding_mass, winding_power, winding_resistance, winding_voltage
 
-__all__ = ["SHAPES", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
+__all__ = ["limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
+           "rod_cycle_energy", "limiting_loop_energy", "hysteresis_damping_torque", "SHAPES", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
            "dipole_moment", "current_for_moment", "coil_current", "turn_resistance", "coil_resistance",
            "moment_from_voltage", "wire_area_for_moment", "joule_power", "joule_power_for_moment",
            "turns_from_winding_length", "winding_length", "joule_power_for_winding_length", "coil_mass",
