@@ -250,7 +250,7 @@ def rotor_satellite_from_dimensionless(inertia, rotor_inertia, spin_rate, orbit,
 
     Notes
     -----
-    Rotor slides, seed lines 29–38 normalised as in ``rotor_spin.md`` §4 (the inverse of
+    Rotor slides, slide "Equations of motion" (seed lines 29–38) normalised as in ``rotor_spin.md`` §4 (the inverse of
     :func:`rotor_dimensionless`); B = (I22 + I33)/2.
     """
     _check_orbit(orbit)
@@ -474,7 +474,7 @@ def rotor_stability_map(restoring, damping, *, axial_ratio, momentum, inclinatio
 
     Notes
     -----
-    Rotor slides, lost slide "Stability and choice of control parameters" (seed lines
+    Rotor slides, slide "Stability and choice of control parameters" (lost) (seed lines
     90–92), recomputed with :func:`rotor_floquet_multipliers` (``rotor_spin.md`` §7).
     """
     k = as_finite("restoring", restoring)
@@ -572,7 +572,7 @@ def simulate_rotor_normalised(axial_ratio, momentum, restoring, damping, inclina
 
     Notes
     -----
-    Rotor slides, seed lines 29–87, in the normalised form of ``rotor_spin.md`` §4, Monte
+    Rotor slides, slides "Equations of motion" to "Control implementation" (seed lines 29–87), in the normalised form of ``rotor_spin.md`` §4, Monte
     Carlo members on the trailing axis of the state (the model's (5, ...) layout).
     """
     a, c1, i = _check_numbers(axial_ratio, momentum, inclination)
@@ -698,7 +698,7 @@ def rotor_body_rhs(time, state, satellite, orbit, *, damping="rate"):
 
     Notes
     -----
-    Rotor slides, seed lines 63–87, with ``rotor_spin.md`` §8 (controller in body axes) and
+    Rotor slides, slides "Choice of control" and "Control implementation" (seed lines 63–87), with ``rotor_spin.md`` §8 (controller in body axes) and
     §3 (model). Scalar code for speed; built per call here (for one evaluation);
     :func:`simulate_rotor` builds it once.
     """
@@ -745,7 +745,7 @@ def simulate_rotor(satellite, orbit, duration, *, initial_angles=(0.0, 0.0, 0.0)
 
     Notes
     -----
-    Rotor slides, lost slide "Simulation (asymmetric spacecraft)" (seed lines 94–96),
+    Rotor slides, slide "Simulation (asymmetric spacecraft)" (lost) (seed lines 94–96),
     with ``rotor_spin.md`` §8: start C0 = :func:`magbench.dynamics.airplane_231_matrix`
     (α0, β0, γ0), ω = n C0 e2 + s_ref(u0) e1 + initial_rate_error.
     """
