@@ -130,7 +130,7 @@ def semi_body_axes(matrix):
     s1 = np.broadcast_to(np.array([1.0, 0.0, 0.0]), o2.shape)
     s3 = _cross(s1, o2)
     norm = np.linalg.norm(s3, axis=-1, keepdims=True)
-    if np.any(norm == 0):
+    if np.any(norm < 1e-12):
         raise ValueError("matrix puts the rotor axis along the orbit normal (β = ±90°): the semi-body frame is singular")
     s3 = s3 / norm
     return np.stack([s1, _cross(s3, s1), s3], axis=-2)
