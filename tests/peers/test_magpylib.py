@@ -1,36 +1,18 @@
 """Peer cross-checks against magpylib (loop, pair and square-loop fields).
 
 Each test takes the ``magpy`` fixture, which skips that test alone when magpylib is
-missing; the analytic tests of the same functions live in tests/test_coils.py.
+missing; the analytic tests of the same functions live in tests/fields/test_coils.py.
 """
 
 import numpy as np
 import pytest
-from numpy.testing import assert_allclose, assert_array_equal
 
-from magbench import coils
 from magbench.coils import (
-    cylinder_nonuniformity,
-    helmholtz_ampere_turns,
     helmholtz_b,
-    helmholtz_center_h,
     loop_b,
     loop_b_posed,
-    optimal_separation,
-    sphere_nonuniformity,
-    square_loop_axial_b,
     square_loop_b,
-    square_pair_spacing,
-    thesis_printed_ampere_turns,
-    uniform_cylinder,
-    uniform_sphere_radius,
-    winding_mass,
-    winding_power,
-    winding_resistance,
-    winding_voltage,
 )
-from magbench.constants import MU_0
-from magbench.geomag import dipole_b
 from tests.support import near_axis_points as _near_axis_points
 from tests.support import near_wire_points as _near_wire_points
 from tests.support import relative_to_norm as _relative_to_norm

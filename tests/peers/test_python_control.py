@@ -8,10 +8,7 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from magbench.chapters import errata
-from scipy.integrate import solve_ivp
-
-from magbench import attitude, control
+from magbench import control
 from magbench.constants import MU_0
 
 J, M1 = 0.005, 0.4                  # thesis seed line 516
