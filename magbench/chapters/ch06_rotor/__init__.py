@@ -184,7 +184,7 @@ def kovalenko_checks():
         row, id="kov-relay-mean-moment", chapter="ch06", location=f"§7.3, eq. (7.26), p. {kovalenko_page(row.seed_line)}",
         computed=mean, computation="magbench.chapters.ch06_rotor.relay_mean_moment",
         explanation=(f"Averaging the spin-axis torque of the relay law (7.12) over a turn of the transverse field "
-                     f"gives {mean:.4f} L0; 4/π = {4 / math.pi:.4f}, and the book prints 1,27 L0."))]
+                     f"gives {mean:.4f} L0; 4/π = {4 / math.pi:.4f}, and the book prints {row.value_as_printed:g} L0."))]
 
 
 CHAPTER = Chapter(
