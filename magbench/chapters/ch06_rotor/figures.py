@@ -104,8 +104,8 @@ def plot_stability_map(data):
     right = ax.secondary_yaxis("right", functions=(lambda y: y * kwp * 1e3, lambda y: y / (kwp * 1e3)))
     right.set_ylabel("k_w [mN·m·s]")
     ax.legend(loc="upper left")
-    ax.set_title(f"Reconstruction of the lost stability slide: Floquet map, "
-                 f"{data.extra['stable_fraction']:.0%} of the plane stable (black: |ρ| = 1)")
+    ax.set_title(f"Reconstruction of the lost stability slide: Floquet map\n"
+                 f"{data.extra['stable_fraction']:.0%} of the plane stable (black line: |ρ| = 1)")
     return fig
 
 
