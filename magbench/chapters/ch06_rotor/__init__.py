@@ -106,14 +106,16 @@ def claim_rows(params=None):
     where = "rotor slides, Conclusion (seed lines 101–102)"
     return [
         make_row("rotor-spin-rate", spin.quantity, f"{where}; {spin.conditions}", spin.value,
-                 abs(mean_spin), spin.uncertainty_si, unit="rpm", scale=RPM,
+                 abs(mean_spin), spin.uncertainty_si, unit="rpm", scale=RPM, uncertainty=spin.uncertainty_si,
                  note="model: mean body spin of the simulated asymmetric spacecraft (spin set by the rotor, ours)"),
         make_row("rotor-spin-accuracy", accuracy.quantity, f"{where}; {accuracy.conditions}", accuracy.value,
                  float(np.max(np.abs(run.spin_rate - mean_spin))) / w0, accuracy.uncertainty_si, unit="1",
+                 uncertainty=accuracy.uncertainty_si,
                  note="model: largest |s − mean s| / ω0 of the run; the equilibrium itself swings the spin "
                       "by H0/I11 twice per orbit"),
         make_row("rotor-pointing-accuracy", pointing.quantity, f"{where} (plot lost)", pointing.value,
                  float(np.max(last)), pointing.uncertainty_si, unit="deg", scale=DEG,
+                 uncertainty=pointing.uncertainty_si,
                  note=(f"model: largest pointing error over orbits {maxima.size - last.size + 1}–{maxima.size} of "
                        "the simulated run; in the ideal model the error keeps decaying, so 10–15° is only a "
                        "transient envelope (it depends on our asymmetry and initial error)")),
