@@ -219,8 +219,9 @@ def slides_printed_damping_torque(field, rate_error, gain):
 
     Notes
     -----
-    Rotor slides, slide "Control implementation" (seed line 86), as printed, kept for the
-    errata (the printed sign anti-damps; read as a dipole it is k_w w⊥, whose torque is
+    Rotor slides, slide "Control implementation" (seed line 86), as printed: this function
+    reproduces the slides' slip on purpose, for the errata (the entry
+    ``rotor-damping-sign``); no controller uses it (the printed sign anti-damps; read as a dipole it is k_w w⊥, whose torque is
     perpendicular to w and does no work). Since (w × B) × B = −|B|² w⊥, this equals −(m × B) of
     :func:`projected_damping_dipole`.
     """

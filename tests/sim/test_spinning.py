@@ -11,7 +11,7 @@ from numpy.testing import assert_allclose
 from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
-from magbench.chapters._rotor_defaults import default_rotor_orbit, default_rotor_satellite
+from magbench.chapters.ch06_rotor.defaults import default_rotor_orbit, default_rotor_satellite
 from magbench.control import floquet_multipliers, projected_damping_dipole, rotor_equilibrium_dipole
 from magbench.dynamics import gyrostat_momentum, gyrostat_rhs, semi_body_axes
 from magbench.earth import CircularOrbit, dipole_equatorial_b

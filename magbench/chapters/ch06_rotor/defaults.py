@@ -9,9 +9,9 @@ import math
 
 import numpy as np
 
-from ..earth import CircularOrbit
-from ..io import load_parameter_set
-from ..sim.spinning import rotor_satellite_from_dimensionless
+from ...earth import CircularOrbit
+from ...io import load_parameter_set
+from ...sim.spinning import rotor_satellite_from_dimensionless
 
 __all__ = ["rotor_parameters", "default_rotor_orbit", "default_rotor_satellite"]
 
