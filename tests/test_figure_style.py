@@ -15,7 +15,7 @@ from magbench import figures
 matplotlib.use("Agg")
 
 #: Figures whose defaults take several seconds, or need the BROAD recordings.
-SLOW = {"ch04-montecarlo", "ch04-period-ratio", "ch04-tau-sensitivity", "ch04-broad-tilt",
+SLOW = {"tns0-capture", "ch04-montecarlo", "ch04-period-ratio", "ch04-tau-sensitivity", "ch04-broad-tilt",
         "thesis-fig03", "ch04-step-response"}
 MIN_FONT_PT = 7.0
 
