@@ -353,8 +353,12 @@ def compute_capture(**params):
                                          "L": ("kg m^2/s", run.angular_momentum[k])})
               for k in range(run.angular_momentum.shape[0])]
     series.append(Series("final regime", {"angle": ("deg", np.degrees(cap["final_angle"])),
-                                          "conical_angle": ("deg", np.degrees(cap["conical_angle"])),
                                           "rate": ("rad/s", cap["final_rate"])}))
+    # Only the members whose final rate admits a conical rotation (the relation has a solution).
+    ok = np.isfinite(cap["conical_angle"])
+    series.append(Series("conical relation", {"member": ("1", np.flatnonzero(ok) + 1.0),
+                                              "angle": ("deg", np.degrees(cap["final_angle"][ok])),
+                                              "conical_angle": ("deg", np.degrees(cap["conical_angle"][ok]))}))
     return FigureData("", "", "", {}, series)
 
 
@@ -367,7 +371,7 @@ def plot_capture(data):
 
     printed = load_printed("tns0")
     fig, axes = plt.subplots(1, 2, figsize=(6.8, 3.1), width_ratios=(1.6, 1.0))
-    members, final = data.series[:-1], data.series[-1].columns
+    members, final, cone = data.series[:-2], data.series[-2].columns, data.series[-1].columns
     for k, s in enumerate(members):
         t, a = s.columns["t"][1], s.columns["angle"][1]
         axes[0].plot(t, uniform_filter1d(a, 31, mode="nearest"), color=f"C{k % 10}", linewidth=0.9)
@@ -379,16 +383,14 @@ def plot_capture(data):
     axes[0].set_ylabel("angle(B, symmetry axis) [°]")
     axes[0].set_title("Capture runs (30-min running mean)")
     axes[0].legend(fontsize=7.5, loc="upper right")
-    sim, cone = final["angle"][1], final["conical_angle"][1]
-    ok = np.isfinite(cone)
-    axes[1].plot(cone[ok], sim[ok], "C0o", label="members")
+    axes[1].plot(cone["conical_angle"][1], cone["angle"][1], "C0o", label="members")
     lim = [0.0, 90.0]
     axes[1].plot(lim, lim, "k-", linewidth=0.8, label="equal")
     axes[1].set_xlim(*lim)
     axes[1].set_ylim(*lim)
     axes[1].set_xlabel("Ω²(A − C) cos θ′ = mB [°]")
     axes[1].set_ylabel("simulated, last orbit [°]")
-    axes[1].set_title(f"Final angle ({int(ok.sum())} of {ok.size} have a solution)")
+    axes[1].set_title(f"Final angle ({len(cone['angle'][1])} of {len(final['angle'][1])} have a solution)")
     axes[1].legend(fontsize=7.5)
     for ax in axes:
         ax.grid(alpha=0.3)
