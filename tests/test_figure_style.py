@@ -16,7 +16,7 @@ matplotlib.use("Agg")
 
 #: Figures whose defaults take several seconds, or need the BROAD recordings.
 SLOW = {"ch04-montecarlo", "ch04-period-ratio", "ch04-tau-sensitivity", "ch04-broad-tilt",
-        "thesis-fig03", "ch04-step-response", "rotor-simulation"}
+        "thesis-fig03", "ch04-step-response", "rotor-simulation", "tns0-capture"}
 MIN_FONT_PT = 7.0
 
 

@@ -65,10 +65,11 @@ _TO_SI = {
     "Oe": 1000.0 / (4.0 * math.pi),
     "nT": 1e-9, "uT": 1e-6, "G": 1e-4,
     "rpm": math.pi / 30.0,   # revolutions per minute (rotor slides, seed line 101)
+    "G Oe": 1e-4 * 1000.0 / (4.0 * math.pi),   # loop energy ∮H dB (Kovalenko 1975, p. 229)
 }
 
 _SI_UNIT = {"cm^3": "m^3", "mm": "m", "km": "m", "cm": "m", "deg": "rad", "%": "1", "emu": "A m^2",
-            "Oe": "A/m", "nT": "T", "uT": "T", "G": "T", "rpm": "rad/s"}
+            "Oe": "A/m", "nT": "T", "uT": "T", "G": "T", "rpm": "rad/s", "G Oe": "J/m^3"}
 
 
 class DataError(ValueError):
