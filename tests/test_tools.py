@@ -107,6 +107,15 @@ def test_book_check_fails_on_each_defect_it_names(tmp_path):
         assert any(expected in p for p in problems), (expected, problems)
 
 
+def test_book_check_names_a_transcription_line_label(tmp_path):
+    """"(no proper rotation, L337)": a line of the transcription, not a place a reader can find."""
+    page, html = _page(tmp_path, "<p>It never saw the Sun (no proper rotation, L337).</p>", None)
+    problems = _load("check_book").check_page("p", page, html)[0]
+    assert any("internal label" in p for p in problems), problems
+    page, html = _page(tmp_path / "ok", "<p>Its moment L = 0.4 A·m², and L2 norms (L1 too).</p>", None)
+    assert not any("internal label" in p for p in _load("check_book").check_page("p", page, html)[0])
+
+
 def test_book_check_wants_the_build_provenance(tmp_path):
     page, html = _page(tmp_path, "<p>Text.</p>", provenance=False)
     problems = _load("check_book").check_page("p", page, html)[0]

@@ -57,7 +57,7 @@ def image_is_blank(path):
 #: A number like 6.2e-41 in the reader's text (code is exempt): prose writes a·10ⁿ.
 E_NOTATION = re.compile(r"(?<![\w.])\d+(?:\.\d+)?e[-+]?\d+(?![\w.])")
 #: Working labels of the transcription that mean nothing to a reader.
-INTERNAL_LABEL = re.compile(r"seed line|seed text|inventory gap|\bTH-[A-Za-z0-9]+|\bgap G\d+")
+INTERNAL_LABEL = re.compile(r"seed line|seed text|inventory gap|\bTH-[A-Za-z0-9]+|\bgap G\d+|[(,] ?L\d{2,4}\b")
 
 
 def _prose_text(main):

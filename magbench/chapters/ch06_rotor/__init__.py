@@ -18,6 +18,7 @@ from ...control.spin import rotor_program_field, slides_printed_damping_torque
 from ...errata import kovalenko_page, printed_check
 from ...io import load_printed
 from ...sim.spinning import simulate_rotor
+from ..._format import format_number
 from .._base import Chapter, chapter_parameters
 from .defaults import default_rotor_orbit, default_rotor_satellite, rotor_parameters
 
@@ -55,7 +56,7 @@ def _run(items):
 
 
 def default_run(params=None):
-    """The simulation of the lost slide (seed lines 94–96) with the chapter's inputs.
+    """The simulation of the lost slide (slide 'Simulation (asymmetric spacecraft)') with the chapter's inputs.
 
     Parameters
     ----------
@@ -80,7 +81,7 @@ def orbit_maxima(run, orbital_rate):
 
 
 def claim_rows(params=None):
-    """The slides' three conclusions (seed lines 101–102) beside the simulated run.
+    """The slides' three conclusions (slide 'Conclusion') beside the simulated run.
 
     The claims are verbal or a range; ``data/rotor/printed.csv`` holds our reading of
     each as a range, and the tolerance is its half-width. The model values come from
@@ -103,7 +104,7 @@ def claim_rows(params=None):
     maxima = orbit_maxima(run, w0)
     last = maxima[-2:] if maxima.size >= 2 else maxima
     mean_spin = float(np.mean(run.spin_rate))
-    where = "rotor slides, Conclusion (seed lines 101–102)"
+    where = "rotor slides, Conclusion"
     return [
         make_row("rotor-spin-rate", spin.quantity, f"{where}; {spin.conditions}", spin.value,
                  abs(mean_spin), spin.uncertainty_si, unit="rpm", scale=RPM, uncertainty=spin.uncertainty_si,
@@ -151,17 +152,17 @@ def printed_damping_power(params=None, samples=64):
 
 
 def damping_checks():
-    """The slides' damping projection (seed line 86) as printed: its sign, on the chapter's
+    """The slides' damping projection (slide 'Control implementation') as printed: its sign, on the chapter's
     own parameter set (never on overrides)."""
     row = load_printed("rotor")["rotor-damping-power"]
     as_torque, as_dipole = printed_damping_power()
     return [printed_check(
-        row, id="rotor-damping-sign", chapter="ch06", location=f"slide \"{row.section}\", seed line {row.seed_line}",
+        row, id="rotor-damping-sign", chapter="ch06", location=f"slide \"{row.section}\"",
         computed=as_torque, computation="magbench.control.spin.slides_printed_damping_torque",
         explanation=(f"Since (w × B) × B = −|B|² w⊥, the printed M = −k_w (w × B) × B/|B|² read as a torque is "
                      f"+k_w w⊥: its power is {as_torque:+.3g} k_w |w⊥|², so it pumps energy into the motion it "
                      f"should damp. Read as a dipole its torque is perpendicular to w (power "
-                     f"{as_dipole:.1g} k_w |w⊥|²) and does no work. The dipole that damps is "
+                     f"{format_number(as_dipole, 1)} k_w |w⊥|², zero to rounding) and does no work. The dipole that damps is "
                      "m = k_w (w × B)/|B|² (Kovalenko (4.30)–(4.32)), torque −k_w w⊥; the chapter uses it."))]
 
 

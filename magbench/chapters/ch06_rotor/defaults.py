@@ -22,7 +22,7 @@ def rotor_parameters():
 
 
 def default_rotor_orbit(params=None):
-    """The default orbit: circular, direct non-rotating dipole, u = 0 at t = 0 (rotor slides, seed line 21).
+    """The default orbit: circular, direct non-rotating dipole, u = 0 at t = 0 (rotor slides, slide 'Problem statement').
 
     ``params`` (name -> SI value, as :func:`rotor_parameters` returns) overrides the file.
     """

@@ -1,7 +1,7 @@
 """Figures of chapter 6: the spinning satellite with a rotor (rotor slides, Kovalenko ch. 7).
 
 The ids are those of ``shared/reference/rotor_spin.md`` §14–§15. The two lost slides
-(seed lines 90–96) are *reconstructions*: their titles and captions say so. Every
+('Stability and choice of control parameters', 'Simulation') are *reconstructions*: their titles and captions say so. Every
 numeric default except the field and the inclination is ours (``data/rotor/params.toml``).
 """
 
@@ -60,7 +60,7 @@ def _map_parameters():
 
 def compute_stability_map(axial_ratio, momentum, inclination, restoring, damping, restoring_max, damping_max,
                           grid_points, steps):
-    """max|ρ| over (κ, κ_w) (the lost stability slide, seed lines 90–92; rotor_spin.md §7)."""
+    """max|ρ| over (κ, κ_w) (the lost stability slide)."""
     n = int(grid_points)
     if n < 2:
         raise ValueError(f"grid_points must be >= 2, got {grid_points!r}")
@@ -157,7 +157,7 @@ def _simulation_parameters():
 
 
 def compute_simulation(initial_alpha, initial_beta, orbits):
-    """The asymmetric spacecraft from an initial pointing error (lost slide, seed lines 94–96)."""
+    """The asymmetric spacecraft from an initial pointing error (the lost simulation slide)."""
     p = chapter_parameters(CHAPTER.key)
     p.update(initial_alpha=initial_alpha, initial_beta=initial_beta, simulation_orbits=float(int(orbits)))
     run = default_run(p)
@@ -220,7 +220,7 @@ def _law_parameters():
 
 def compute_equilibrium_law(inclination, equatorial_b, orbital_rate, gain, axial_momentum, axial_inertia,
                             rotor_momentum):
-    """The slides' dipole (seed lines 63–69) for k and 2k, its torque on the reference, H and s_ref."""
+    """The slides' dipole (slide 'Choice of control') for k and 2k, its torque on the reference, H and s_ref."""
     u = np.linspace(0.0, 2.0 * math.pi, 361)
     field = rotor_program_field(u, inclination, equatorial_b)
     series = []
@@ -327,7 +327,7 @@ def _energy_run(law, gain, rotor_momentum, initial_rate, field_rate, b0, duratio
 
 
 def compute_damping_sign(damping_gain, rotor_momentum, initial_rate, field_rate, equatorial_b, duration):
-    """½ωᵀIω of the gyrostat under the corrected projection and under the printed one (seed line 86)."""
+    """½ωᵀIω of the gyrostat under the corrected projection and under the printed one (slide 'Control implementation')."""
     series = []
     for law, label in (("corrected", "m = k_w (w × B)/|B|² (damps)"),
                        ("printed", "printed −k_w (w × B) × B/|B|² as a torque")):
@@ -351,18 +351,18 @@ def plot_damping_sign(data):
 
 
 register(FigureSpec("rotor-stability-map", "Stability in the gains (reconstruction of the lost slide)",
-                    f"{SOURCE}, slide 'Stability and choice of control parameters' (lost), seed lines 90–92",
+                    f"{SOURCE}, slide 'Stability and choice of control parameters' (lost)",
                     compute_stability_map, plot_stability_map, _map_parameters))
 register(FigureSpec("rotor-simulation", "The asymmetric spacecraft simulated (reconstruction of the lost slide; "
                     "slow, about 20 s)",
-                    f"{SOURCE}, slide 'Simulation (asymmetric spacecraft)' (lost), seed lines 94–96",
+                    f"{SOURCE}, slide 'Simulation (asymmetric spacecraft)' (lost)",
                     compute_simulation, plot_simulation, _simulation_parameters))
 register(FigureSpec("rotor-equilibrium-law", "The equilibrium dipole law over one orbit",
-                    f"{SOURCE}, slides 'Creating the equilibrium' and 'Choice of control', seed lines 41–69",
+                    f"{SOURCE}, slides 'Creating the equilibrium' and 'Choice of control'",
                     compute_equilibrium_law, plot_equilibrium_law, _law_parameters))
 register(FigureSpec("rotor-damping-sign", "The damping projection: corrected sign against the printed one",
-                    f"{SOURCE}, slide 'Control implementation', seed line 86; Kovalenko (1975) eqs. (4.30)–(4.32)",
+                    f"{SOURCE}, slide 'Control implementation'; Kovalenko (1975) eqs. (4.30)–(4.32)",
                     compute_damping_sign, plot_damping_sign, _damping_parameters))
 register(FigureSpec("rotor-floquet-slice", "Floquet multiplier against the damping gain",
-                    f"{SOURCE}, slide 'Ensuring stability', seed line 80",
+                    f"{SOURCE}, slide 'Ensuring stability'",
                     compute_floquet_slice, plot_floquet_slice, _slice_parameters))

@@ -186,7 +186,7 @@ def cone_checks():
     rate = np.gradient(2.0 * u + np.unwrap(phase_error), u)
     row = load_printed("tns0")["tns0-cone-rate"]
     return [printed_check(
-        row, id="tns0-field-cone-rate", chapter="ch07", location=f"§1, L{row.seed_line} (Fig. 3)",
+        row, id="tns0-field-cone-rate", chapter="ch07", location="§1 (Fig. 3)",
         quantity=(f"Largest rate of the field direction around the cone at i = {np.degrees(i):.1f}°, in units of "
                   "the orbital rate (the averaged model: constant, 'twice the orbital rate')"),
         computed=float(rate.max()),
@@ -210,15 +210,15 @@ def table_checks():
     theta = float(load_table2().nutation[0])
     return [
         printed_check(
-            flat, id="tns0-table1-nutation-half-pi", chapter="ch07", location=f"Table 1, L{flat.seed_line}",
+            flat, id="tns0-table1-nutation-half-pi", chapter="ch07", location="Table 1",
             computed=float(np.pi / 2),
             explanation=(f"Sessions 2–7 print {flat.value_as_printed:g} rad, which is π/2 = {np.pi / 2:.4f} rad to the "
                          "printed digits: the value the text derives for session 2 from ДС1 never seeing the Sun "
-                         "(no proper rotation, L337). A flat spin about a transverse axis is also where energy "
+                         "(no proper rotation). A flat spin about a transverse axis is also where energy "
                          "dissipation drives a prolate body (A > C) at constant |L|."),
             computation="numpy.pi / 2"),
         printed_check(
-            words, id="tns0-table2-angle-in-degrees", chapter="ch07", location=f"Conclusions, L{words.seed_line}",
+            words, id="tns0-table2-angle-in-degrees", chapter="ch07", location="Conclusions",
             quantity="Table 2's angle between B and the symmetry axis, in degrees, beside the conclusion's 'about 45°'",
             computed=float(np.degrees(theta)),
             explanation=(f"Table 2's {theta:g} rad is {np.degrees(theta):.1f}°, within the ±{words.resolution:g}° that "

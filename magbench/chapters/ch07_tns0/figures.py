@@ -279,7 +279,7 @@ def _rod_parameters():
 
 # --- a session model (model only) -------------------------------------------------------
 
-#: Sensor normals in body axes (ours: only n1 = −n3 is in the text, L337).
+#: Sensor normals in body axes (ours: only n1 = −n3 is in the text).
 SENSOR_NORMALS = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [-1.0, 0.0, 0.0]])
 
 
