@@ -116,6 +116,14 @@ def test_book_check_names_a_transcription_line_label(tmp_path):
     assert not any("internal label" in p for p in _load("check_book").check_page("p", page, html)[0])
 
 
+def test_book_check_reads_a_commit_id_as_an_id(tmp_path):
+    """A commit id made of digits and one 'e' ("5861051e3259") is not e-notation in the text."""
+    page, html = _page(tmp_path, "<p>Built from commit 5861051e3259 with lock sha256 12e456789abc.</p>", None)
+    assert not any("e-notation" in p for p in _load("check_book").check_page("p", page, html)[0])
+    page, html = _page(tmp_path / "n", "<p>A ratio of 5861051e3259 is a number.</p>", None)
+    assert any("e-notation" in p for p in _load("check_book").check_page("p", page, html)[0])
+
+
 def test_book_check_wants_the_build_provenance(tmp_path):
     page, html = _page(tmp_path, "<p>Text.</p>", provenance=False)
     problems = _load("check_book").check_page("p", page, html)[0]

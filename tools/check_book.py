@@ -56,6 +56,8 @@ def image_is_blank(path):
 
 #: A number like 6.2e-41 in the reader's text (code is exempt): prose writes a·10ⁿ.
 E_NOTATION = re.compile(r"(?<![\w.])\d+(?:\.\d+)?e[-+]?\d+(?![\w.])")
+#: A commit id or content hash as the provenance lines write them.
+HEX_ID = re.compile(r"\b(?:commit|sha256) [0-9a-f]{7,64}\b")
 #: Working labels of the transcription that mean nothing to a reader.
 INTERNAL_LABEL = re.compile(r"seed line|seed text|inventory gap|\bTH-[A-Za-z0-9]+|\bgap G\d+|[(,] ?L\d{2,4}\b")
 
@@ -67,7 +69,8 @@ def _prose_text(main):
     main = copy.copy(main)
     for node in main.select("div.cell_input, pre, code"):
         node.decompose()
-    return main.get_text(" ")
+    # Commit ids and content hashes are hex: "5861051e3259" is not a number in e-notation.
+    return HEX_ID.sub("", main.get_text(" "))
 
 
 def check_page(name, page_path, html_dir):
