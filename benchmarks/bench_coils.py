@@ -1,4 +1,4 @@
-"""Benchmark: magbench.coils.helmholtz_b against magpylib's fastest path, same run.
+"""Benchmark: magbench.fields.helmholtz_b against magpylib's fastest path, same run.
 
 Run as ``python benchmarks/bench_coils.py [n_points] [repeats]`` (defaults 10**6, 7).
 Both codes evaluate the thesis's Helmholtz pair (a = 0.5 m, d = 0.5 m, 110 turns ×
@@ -29,7 +29,7 @@ import time  # noqa: E402
 import numpy as np  # noqa: E402
 
 import magbench  # noqa: E402
-from magbench.coils import helmholtz_b  # noqa: E402
+from magbench.fields import helmholtz_b
 
 A, D, CURRENT, TURNS = 0.5, 0.5, 2.3, 110
 
@@ -100,7 +100,7 @@ def main(n=10**6, repeats=7):
     print(f"magbench {magbench.__file__}")
     print(f"python {platform.python_version()}, numpy {np.__version__}, magpylib {magpy.__version__}")
     print(f"Helmholtz pair, {n} random points, median of {repeats} interleaved runs")
-    print(f"  magbench.coils.helmholtz_b        : {1e3 * m_ours:8.1f} ms")
+    print(f"  magbench.fields.helmholtz_b        : {1e3 * m_ours:8.1f} ms")
     print(f"  magpylib.func.circle_field (x2)   : {1e3 * m_mag:8.1f} ms")
     print(f"  speed-up (magpylib / magbench)    : {m_mag / m_ours:8.2f} x")
     print(f"  max |dB| / |B| between the two    : {rel.max():8.1e}")

@@ -86,7 +86,7 @@ def main(members=1000, peer_members=2, repeats=3):
     print(f"python {platform.python_version()}, numpy {np.__version__}")
     print(f"bench Monte Carlo, {members} members x {p['bench_duration']:.0f} s at "
           f"{1 / setup.sample_interval:.0f} Hz, median of {repeats}")
-    print(f"  magbench.bench.monte_carlo (vectorised)     : {ours:8.2f} s  ({times})")
+    print(f"  magbench.sim.bench.monte_carlo (vectorised)     : {ours:8.2f} s  ({times})")
     print(f"  solve_ivp per member, {peer_per_member:6.2f} s/member x {members}: {peer:8.0f} s "
           f"(extrapolated from {peer_members} members)")
     print(f"  speed-up                                    : {peer / ours:8.0f} x")

@@ -118,7 +118,7 @@ _DESIGN_KEYS = ("turns", "wire_diameter", "pitch", "resistance", "current", "pow
 def _coil_wires(name, enamel):
     """(bare diameters, overall diameters or None, label) of a wire table [m]."""
     if name == "awg":
-        from .magnetorquer import awg_diameter
+        from .hardware import awg_diameter
 
         d = [float(awg_diameter(g)) for g in _AWG_GAUGES]
         return d, None, (f"AWG {_AWG_GAUGES[0]}-{_AWG_GAUGES[-1]} (ASTM B258, by definition); "

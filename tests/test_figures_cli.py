@@ -9,6 +9,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 
+from magbench import earth
 from magbench import figures
 from magbench.cli import main
 
@@ -27,13 +28,12 @@ def test_every_figure_computes_and_draws(figure_id):
 
 def test_fig02_lines_are_field_lines():
     # Along each computed line the tangent is parallel to the dipole field (thesis Fig. 2).
-    from magbench import geomag
 
     data = figures.compute("thesis-fig02", earth_dipole_tilt=0.0)
     s = data.series[0]
     x, z = s.columns["x"][1], s.columns["z"][1]
     pts = np.stack([x, np.zeros_like(x), z], axis=1)
-    b = geomag.dipole_b(pts, [0.0, 0.0, -1.0])
+    b = earth.dipole_b(pts, [0.0, 0.0, -1.0])
     tangent = np.gradient(pts, axis=0)
     cross = np.linalg.norm(np.cross(tangent[1:-1], b[1:-1]), axis=1)
     rel = cross / (np.linalg.norm(tangent[1:-1], axis=1) * np.linalg.norm(b[1:-1], axis=1))

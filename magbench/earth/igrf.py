@@ -1,7 +1,7 @@
 """The real geomagnetic field from IGRF-14, through ppigrf.
 
 This is an adapter around an external model, kept apart from the pure physics in
-:mod:`magbench.geomag`: it reads ppigrf's coefficient file. Dates outside the model's
+:mod:`magbench.earth`: it reads ppigrf's coefficient file. Dates outside the model's
 validity (1900–2030 for IGRF-14) are rejected instead of being silently frozen, which
 is what ppigrf itself does past its last epoch.
 
@@ -108,7 +108,7 @@ def igrf_dipole(year):
     Notes
     -----
     Not in the thesis: IGRF-14 degree-1 coefficients, converted with
-    :func:`magbench.geomag.dipole_from_gauss_coefficients`.
+    :func:`magbench.earth.dipole_from_gauss_coefficients`.
 
     Examples
     --------

@@ -12,7 +12,7 @@ from ._inputs import _center, _nonnegative_scalar, _positive_scalar
 from .loop import loop_b_posed
 from .square import square_loop_b
 
-__all__ = ["three_axis_pair_b", "three_axis_pair_currents", "coaxial_system_b",
+__all__ = ["SPHERE_DIRECTIONS", "three_axis_pair_b", "three_axis_pair_currents", "coaxial_system_b",
            "coaxial_system_sphere_nonuniformity", "coaxial_system_cylinder_nonuniformity",
            "coaxial_system_uniform_radius"]
 
@@ -225,7 +225,7 @@ def _meridians(count, azimuths):
 #: Directions sampling a sphere's surface: the golden-angle spiral (near-uniform) plus
 #: two meridians (azimuth 0 and 45°) through the poles, where coaxial systems usually
 #: deviate most, and across the equator.
-_DIRS = np.concatenate([_fibonacci_directions(800), _meridians(181, (0.0, np.pi / 4))])
+SPHERE_DIRECTIONS = np.concatenate([_fibonacci_directions(800), _meridians(181, (0.0, np.pi / 4))])
 
 
 def _system_deviation(points, system):
@@ -259,7 +259,7 @@ def coaxial_system_sphere_nonuniformity(shapes, sizes, positions, ampere_turns, 
     -----
     Not in the thesis: Kovalenko (1975) §3.4, p. 61, quotes the four-coil system
     as uniform to 0.5 % in a sphere of radius 2r/3. Sampled on 40 concentric spheres of
-    1162 directions each (:data:`_DIRS`).
+    1162 directions each (:data:`SPHERE_DIRECTIONS`).
 
     Examples
     --------
@@ -270,7 +270,7 @@ def coaxial_system_sphere_nonuniformity(shapes, sizes, positions, ampere_turns, 
     system = _system(shapes, sizes, positions, ampere_turns)
     s = _nonnegative_scalar("sphere_radius", sphere_radius, unit="m")
     shells = np.linspace(s / 40.0, s, 40)
-    pts = shells[:, None, None] * _DIRS[None, :, :]
+    pts = shells[:, None, None] * SPHERE_DIRECTIONS[None, :, :]
     return float(_system_deviation(pts.reshape(-1, 3), system).max())
 
 
@@ -366,7 +366,7 @@ def coaxial_system_uniform_radius(shapes, sizes, positions, ampere_turns, tolera
 
     def dev(s):
         s = np.asarray(s, dtype=float)
-        pts = s.reshape(-1, 1, 1) * _DIRS[None, :, :]
+        pts = s.reshape(-1, 1, 1) * SPHERE_DIRECTIONS[None, :, :]
         return _system_deviation(pts.reshape(-1, 3), system).reshape(s.size, -1).max(axis=-1).reshape(s.shape)
 
     grid = np.linspace(0.0, s_max, 121)[1:]

@@ -337,8 +337,8 @@ def draw_sensor_errors(setup, steps, members, rng):
 
     Notes
     -----
-    Not in the thesis: the errors are what :func:`magbench.sensors.gyro_readings` and
-    :func:`magbench.sensors.magnetometer_readings` add to a zero signal; since both models
+    Not in the thesis: the errors are what :func:`magbench.hardware.sensors.gyro_readings` and
+    :func:`magbench.hardware.sensors.magnetometer_readings` add to a zero signal; since both models
     add errors independent of the signal, truth + these errors is exactly their reading.
 
     Examples

@@ -13,7 +13,9 @@ from numpy.testing import assert_allclose
 
 from magbench.chapters import errata
 
-from magbench import chapters, coils, figures
+from magbench import chapters, figures
+from magbench import dynamics
+from magbench import fields
 from magbench.chapters import ch02_field_simulator
 from magbench.cli import main
 from magbench.constants import MU_0
@@ -33,29 +35,29 @@ def _eq16(ni, a, d):
 
 def test_oscillation_field_gives_the_period_of_eq14():
     j, m, t = 0.005, 0.6, 60.0
-    h = coils.oscillation_field_h(j, m, t)
+    h = dynamics.oscillation_field_h(j, m, t)
     # Eq. (14): ω = √(mB/J) must give back T; a handful of roundings.
     assert_allclose(2 * np.pi / np.sqrt(m * MU_0 * h / j), t, rtol=1e-14)
 
 
 def test_oscillation_field_thesis_numbers():
     # Audit A4/A5: 72.7 and 228.5 A/m (printed to 0.1 A/m).
-    assert_allclose(coils.oscillation_field_h(0.005, 0.6, 60.0), 72.7, atol=0.05)
-    assert_allclose(coils.oscillation_field_h(0.005, 0.6, 60.0, np.pi), 228.5, atol=0.05)
+    assert_allclose(dynamics.oscillation_field_h(0.005, 0.6, 60.0), 72.7, atol=0.05)
+    assert_allclose(dynamics.oscillation_field_h(0.005, 0.6, 60.0, np.pi), 228.5, atol=0.05)
 
 
 @pytest.mark.parametrize("kw", [{"period": 0.0}, {"inertia": -1.0}, {"amplitude": 0.0}])
 def test_oscillation_field_bad_input(kw):
     args = {"inertia": 0.005, "moment": 0.6, "period": 60.0, **kw}
     with pytest.raises(ValueError, match=next(iter(kw))):
-        coils.oscillation_field_h(**args)
+        dynamics.oscillation_field_h(**args)
 
 
 # ----------------------------------------------------------------- inverse problems
 
 
 def test_pair_radius_round_trip_and_branch():
-    a = coils.pair_radius_for_center_h(MEASURED, N * I, D_BUILT)
+    a = fields.pair_radius_for_center_h(MEASURED, N * I, D_BUILT)
     # Brent to 1e-15 on a smooth function: the field matches to ~1e-13.
     assert_allclose(_eq16(N * I, a, D_BUILT), MEASURED, rtol=1e-12)
     assert a >= D_BUILT / np.sqrt(2)
@@ -65,7 +67,7 @@ def test_pair_radius_above_the_peak_raises():
     peak = 4 * N * I / (3 * np.sqrt(3) * D_BUILT)      # H at a = d/√2, by hand
     assert_allclose(_eq16(N * I, D_BUILT / np.sqrt(2), D_BUILT), peak, rtol=1e-14)
     with pytest.raises(ValueError, match="center_h"):
-        coils.pair_radius_for_center_h(1.01 * peak, N * I, D_BUILT)
+        fields.pair_radius_for_center_h(1.01 * peak, N * I, D_BUILT)
 
 
 def test_planar_model_against_four_infinite_wires():
@@ -77,17 +79,17 @@ def test_planar_model_against_four_infinite_wires():
         direction = np.array([r[1], -r[0]])       # ŷ × r̂ in the (x, z) plane, times |r|
         h += sign * ni / (2 * np.pi) * direction / (r @ r)
     # Only the axial part survives; both are a few roundings.
-    assert_allclose(abs(h[1]), coils.planar_pair_center_h(ni, a, d), rtol=1e-14)
+    assert_allclose(abs(h[1]), fields.planar_pair_center_h(ni, a, d), rtol=1e-14)
     assert_allclose(h[0], 0.0, atol=1e-12)
 
 
 @pytest.mark.parametrize("direction, index", [("axial", 2), ("transverse", 0)])
 def test_pair_distance_to_h(direction, index):
     frac = MEASURED / _eq16(N * I, A, D_BUILT)
-    s = coils.pair_distance_to_h(frac, A, D_BUILT, direction)
+    s = fields.pair_distance_to_h(frac, A, D_BUILT, direction)
     pts = np.zeros((3, 3))
     pts[1:, index] = [s, 0.98 * s]
-    h = np.linalg.norm(coils.helmholtz_b(pts, A, D_BUILT, I, N), axis=-1) / MU_0
+    h = np.linalg.norm(fields.helmholtz_b(pts, A, D_BUILT, I, N), axis=-1) / MU_0
     # Brent to 1e-12 radii; the field changes slowly there.
     assert_allclose(h[1] / h[0], frac, rtol=1e-9)
     assert h[2] / h[0] > frac      # no earlier crossing just inside
@@ -95,16 +97,16 @@ def test_pair_distance_to_h(direction, index):
 
 def test_uniform_zone_length_edges_and_quartic_limit():
     for direction, index in (("axial", 2), ("transverse", 0)):
-        length = coils.uniform_zone_length(A, D_BUILT, 0.01, direction)
+        length = fields.uniform_zone_length(A, D_BUILT, 0.01, direction)
         pts = np.zeros((2, 3))
         pts[1, index] = length / 2
-        h = np.linalg.norm(coils.helmholtz_b(pts, A, D_BUILT, I, N), axis=-1)
+        h = np.linalg.norm(fields.helmholtz_b(pts, A, D_BUILT, I, N), axis=-1)
         assert_allclose(abs(h[1] / h[0] - 1), 0.01, rtol=1e-8)
     # For d = a the leading deviation is −(144/125)(r/a)⁴ P4(cos θ) (Legendre expansion of the
     # pair's field): on the axis z = a (125δ/144)^{1/4}, across it the length grows by (8/3)^{1/4}.
     delta = 1e-6
-    axial = coils.uniform_zone_length(1.0, 1.0, delta, "axial")
-    across = coils.uniform_zone_length(1.0, 1.0, delta, "transverse")
+    axial = fields.uniform_zone_length(1.0, 1.0, delta, "axial")
+    across = fields.uniform_zone_length(1.0, 1.0, delta, "transverse")
     # Next term is O((r/a)²) ≈ 1e-3 relative at this δ.
     assert_allclose(axial, 2 * (125 * delta / 144) ** 0.25, rtol=3e-3)
     assert_allclose(across / axial, (8 / 3) ** 0.25, rtol=3e-3)
@@ -112,7 +114,7 @@ def test_uniform_zone_length_edges_and_quartic_limit():
 
 def test_uniform_zone_length_bad_direction():
     with pytest.raises(ValueError, match="direction"):
-        coils.uniform_zone_length(A, D_BUILT, 0.01, "diagonal")
+        fields.uniform_zone_length(A, D_BUILT, 0.01, "diagonal")
 
 
 # ----------------------------------------------------------------- three-axis designer
@@ -124,7 +126,7 @@ def _by_hand(point, currents, radii, separations, turns, axes):
     for k in range(3):
         n = np.asarray(axes[k], float) / np.linalg.norm(axes[k])
         for s in (-1, 1):
-            b += coils.loop_b_posed(point, radii[k], currents[k], turns[k], s * separations[k] / 2 * n, n)
+            b += fields.loop_b_posed(point, radii[k], currents[k], turns[k], s * separations[k] / 2 * n, n)
     return b
 
 
@@ -132,7 +134,7 @@ def test_three_axis_currents_reach_the_target():
     radii, seps, turns = [0.5, 0.55, 0.6], [0.5, 0.55, 0.6], [110, 110, 110]
     background = np.array([14.6e-6, 2.7e-6, 50.4e-6])
     target = MU_0 * np.array([250.0, -40.0, 10.0])
-    i = coils.three_axis_pair_currents(target, background, radii, seps, turns)
+    i = fields.three_axis_pair_currents(target, background, radii, seps, turns)
     total = background + _by_hand(np.zeros(3), i, radii, seps, turns, np.eye(3))
     # Linear solve of a well-conditioned 3×3: ~1e-15 relative to |B|.
     assert_allclose(total, target, rtol=0, atol=1e-14 * np.linalg.norm(target))
@@ -148,7 +150,7 @@ def test_three_axis_currents_with_cross_coupling():
     radii, seps, turns = [0.5, 0.55, 0.6], [0.5, 0.55, 0.6], [110, 100, 120]
     point = np.array([0.03, -0.02, 0.05])
     target, background = MU_0 * np.array([0.0, 180.0, -60.0]), np.array([1e-5, -2e-5, 4e-5])
-    i = coils.three_axis_pair_currents(target, background, radii, seps, turns, axes=axes, point=point)
+    i = fields.three_axis_pair_currents(target, background, radii, seps, turns, axes=axes, point=point)
     total = background + _by_hand(point, i, radii, seps, turns, axes)
     assert_allclose(total, target, rtol=0, atol=1e-14 * np.linalg.norm(target))
 
@@ -157,20 +159,20 @@ def test_three_axis_currents_are_linear():
     args = ([0.5, 0.55, 0.6], [0.5, 0.55, 0.6], 110)
     t1, t2 = MU_0 * np.array([100.0, 0, 0]), MU_0 * np.array([0, 30.0, -70.0])
     b1, b2 = np.array([1e-5, 0, 5e-5]), np.array([0, 3e-6, 0])
-    i12 = coils.three_axis_pair_currents(t1 + 2 * t2, b1 + 2 * b2, *args)
-    i1 = coils.three_axis_pair_currents(t1, b1, *args)
-    i2 = coils.three_axis_pair_currents(t2, b2, *args)
+    i12 = fields.three_axis_pair_currents(t1 + 2 * t2, b1 + 2 * b2, *args)
+    i1 = fields.three_axis_pair_currents(t1, b1, *args)
+    i2 = fields.three_axis_pair_currents(t2, b2, *args)
     assert_allclose(i12, i1 + 2 * i2, rtol=1e-13, atol=1e-15)
 
 
 def test_three_axis_bad_input():
     with pytest.raises(ValueError, match="span"):
-        coils.three_axis_pair_currents([0, 0, 1e-4], [0, 0, 0], 0.5, 0.5, 110,
+        fields.three_axis_pair_currents([0, 0, 1e-4], [0, 0, 0], 0.5, 0.5, 110,
                                        axes=[[1, 0, 0], [0, 1, 0], [1, 1, 0]])
     with pytest.raises(ValueError, match="currents"):
-        coils.three_axis_pair_b([0, 0, 0], [1.0, 2.0], 0.5, 0.5, 110)
+        fields.three_axis_pair_b([0, 0, 0], [1.0, 2.0], 0.5, 0.5, 110)
     with pytest.raises(ValueError, match="radii"):
-        coils.three_axis_pair_b([0, 0, 0], [1.0, 2.0, 0.0], [0.5, 0.5], 0.5, 110)
+        fields.three_axis_pair_b([0, 0, 0], [1.0, 2.0, 0.0], [0.5, 0.5], 0.5, 110)
 
 
 # ----------------------------------------------------------------- multi-coil systems
@@ -180,10 +182,10 @@ def test_system_helmholtz_matches_the_pair_functions():
     system = (["round"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0])
     # Two independent samplings of the same field (the pair functions use the meridian
     # plane): equal to 1e-6 radii, 1e-6 relative.
-    assert_allclose(coils.coaxial_system_uniform_radius(*system, 0.01),
-                    coils.uniform_sphere_radius(1.0, 1.0, 0.01), rtol=1e-6)
-    assert_allclose(coils.coaxial_system_cylinder_nonuniformity(*system, 0.1, 0.2),
-                    coils.cylinder_nonuniformity(1.0, 1.0, 0.1, 0.2), rtol=1e-3)
+    assert_allclose(fields.coaxial_system_uniform_radius(*system, 0.01),
+                    fields.uniform_sphere_radius(1.0, 1.0, 0.01), rtol=1e-6)
+    assert_allclose(fields.coaxial_system_cylinder_nonuniformity(*system, 0.1, 0.2),
+                    fields.cylinder_nonuniformity(1.0, 1.0, 0.1, 0.2), rtol=1e-3)
 
 
 def test_maxwell_coil_has_sixth_order_axis():
@@ -192,16 +194,16 @@ def test_maxwell_coil_has_sixth_order_axis():
     r1 = np.sqrt(4 / 7)
     system = (["round"] * 3, [r1, 1.0, r1], [-np.sqrt(3 / 7), 0, np.sqrt(3 / 7)], [49.0, 64.0, 49.0])
     z = np.array([0.0, 0.02, 0.04])
-    b = coils.coaxial_system_b(np.stack([0 * z, 0 * z, z], -1), *system)[:, 2]
+    b = fields.coaxial_system_b(np.stack([0 * z, 0 * z, z], -1), *system)[:, 2]
     dev = np.abs(b[1:] / b[0] - 1)
     assert_allclose(dev[1] / dev[0], 64.0, rtol=0.02)   # z⁸ term: (0.04)² ≈ 2e-3 relative
 
 
 def test_system_bad_input():
     with pytest.raises(ValueError, match="shapes"):
-        coils.coaxial_system_b([0, 0, 0], ["triangle"], [1.0], [0.0], [1.0])
+        fields.coaxial_system_b([0, 0, 0], ["triangle"], [1.0], [0.0], [1.0])
     with pytest.raises(ValueError, match="positions"):
-        coils.coaxial_system_b([0, 0, 0], ["round"] * 2, [1.0, 1.0], [0.0], [1.0, 1.0])
+        fields.coaxial_system_b([0, 0, 0], ["round"] * 2, [1.0, 1.0], [0.0], [1.0, 1.0])
 
 
 # ----------------------------------------------------------------- compare and hypotheses
@@ -227,7 +229,7 @@ def test_exact_maximum_on_both_lines_is_the_centre_for_comsol_geometry():
     for k in (0, 2):
         pts = np.zeros((s.size, 3))
         pts[:, k] = s
-        h = np.linalg.norm(coils.helmholtz_b(pts, A, 0.5, I, N), axis=-1) / MU_0
+        h = np.linalg.norm(fields.helmholtz_b(pts, A, 0.5, I, N), axis=-1) / MU_0
         assert np.argmax(h) == 450      # the centre node
 
 
@@ -280,7 +282,7 @@ def test_line_figures(figure_id, index):
         assert c["position"][mid] == 0.0
         assert_allclose(c["|H|"][mid], _eq16(N * I, A, d), rtol=1e-14)
         direction = "axial" if index == 2 else "transverse"
-        assert_allclose(c["zone_length"][0], coils.uniform_zone_length(A, d, 0.01, direction), rtol=1e-14)
+        assert_allclose(c["zone_length"][0], fields.uniform_zone_length(A, d, 0.01, direction), rtol=1e-14)
 
 
 def test_fig05_field_is_divergence_free():
@@ -309,7 +311,7 @@ def test_fig03_equal_power_and_field():
         power = p["copper_resistivity"] * np.sum(c["ampere_turns"] ** 2 * lengths) / p["winding_area"]
         assert_allclose(power, p["power"], rtol=1e-12)
         shapes = ["square" if q else "round" for q in square]
-        h = np.linalg.norm(coils.coaxial_system_b(np.zeros(3), shapes, c["size"], c["position"],
+        h = np.linalg.norm(fields.coaxial_system_b(np.zeros(3), shapes, c["size"], c["position"],
                                                   c["ampere_turns"])) / MU_0
         assert_allclose(h, p["center_h"], rtol=1e-12)
     # Default power: the thesis's design pair at 250 A/m; that pair then has a = 0.5 m.
@@ -322,7 +324,7 @@ def test_zone_criterion_matches_the_readings():
     for s, d in zip(data.series, (0.558, 0.5, 0.51)):
         for direction, reading in (("transverse", 0.25), ("axial", 0.30)):
             t = float(np.asarray(s.columns[f"{direction}_matching_tolerance"][1])[0])
-            assert_allclose(coils.uniform_zone_length(A, d, t, direction), reading, rtol=1e-6)
+            assert_allclose(fields.uniform_zone_length(A, d, t, direction), reading, rtol=1e-6)
 
 
 def test_three_axis_figure_reaches_the_target():

@@ -14,7 +14,7 @@ from numpy.testing import assert_allclose
 
 from magbench.chapters import errata
 
-from magbench import magnetorquer as mt
+from magbench import hardware
 from magbench.cli import main
 from magbench.constants import MU_0
 from magbench.io import DataError, load_wire_table
@@ -50,14 +50,14 @@ def test_unknown_wire_table():
 
 def test_awg_definition():
     # exact by definition: 36 AWG = 0.005 in, 0000 AWG = 0.46 in, a factor 92 over 39 steps
-    assert_allclose(mt.awg_diameter(36), 0.005 * 0.0254, **EXACT)
-    assert_allclose(mt.awg_diameter(-3), 0.46 * 0.0254, **EXACT)
-    assert_allclose(mt.awg_diameter(np.arange(-3, 40)) / mt.awg_diameter(np.arange(-2, 41)),
+    assert_allclose(hardware.awg_diameter(36), 0.005 * 0.0254, **EXACT)
+    assert_allclose(hardware.awg_diameter(-3), 0.46 * 0.0254, **EXACT)
+    assert_allclose(hardware.awg_diameter(np.arange(-3, 40)) / hardware.awg_diameter(np.arange(-2, 41)),
                     92 ** (1 / 39), **EXACT)
     # every 6 gauges halve the diameter nearly (92^(6/39) = 2.0050)
-    assert_allclose(mt.awg_diameter(24) / mt.awg_diameter(30), 2.005, atol=0.0005)
+    assert_allclose(hardware.awg_diameter(24) / hardware.awg_diameter(30), 2.005, atol=0.0005)
     with pytest.raises(ValueError, match="gauge"):
-        mt.awg_diameter(-4)
+        hardware.awg_diameter(-4)
 
 
 # --- the solver with a wire table ----------------------------------------------------------
@@ -82,7 +82,7 @@ def _brute_force_table(moment, u, side, shape, w_max, m_max, bare, overall, leng
     ("square", 2.0, 0.1, 0.1, 1), ("round", 1.5, 0.06, 0.05, 2), ("square", 3.0, 0.2, 0.03, 3)])
 def test_solver_with_table_matches_brute_force(shape, w_max, m_max, length, layers):
     t = load_wire_table("iec60317")
-    res = mt.design_magnetorquer(0.4, 12.0, 0.1, shape, w_max, m_max, t.nominal_diameter, RHO,
+    res = hardware.design_magnetorquer(0.4, 12.0, 0.1, shape, w_max, m_max, t.nominal_diameter, RHO,
                                  GAMMA, winding_length=length, max_layers=layers, require_fit=True,
                                  overall_diameters=t.max_overall_diameter)
     ref = _brute_force_table(0.4, 12.0, 0.1, shape, w_max, m_max, t.nominal_diameter,
@@ -97,7 +97,7 @@ def test_solver_with_table_matches_brute_force(shape, w_max, m_max, length, laye
 
 def test_solver_thesis_inputs_with_the_iec_table():
     t = load_wire_table("iec60317")
-    res = mt.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, t.nominal_diameter, RHO, GAMMA,
+    res = hardware.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, t.nominal_diameter, RHO, GAMMA,
                                  require_fit=True, overall_diameters=t.max_overall_diameter)
     best = res["min_mass"]
     # 0.18 mm is the thinnest wire that reaches 0.4 A·m² (0.172 mm needed); N = 262 is the
@@ -115,8 +115,8 @@ def test_solver_thesis_inputs_with_the_iec_table():
 
 def test_solver_overall_diameter_is_backward_compatible():
     d = [0.18e-3, 0.2e-3]
-    a = mt.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, d, RHO, GAMMA, 10e-6)
-    b = mt.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, d[::-1], RHO, GAMMA,
+    a = hardware.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, d, RHO, GAMMA, 10e-6)
+    b = hardware.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, d[::-1], RHO, GAMMA,
                                overall_diameters=[0.22e-3, 0.2e-3])
     for key in ("turns", "wire_diameter", "power", "mass", "layer_length", "fits"):
         assert_allclose(np.asarray(a[key], float), np.asarray(b[key], float), **EXACT)
@@ -126,20 +126,20 @@ def test_solver_overall_diameter_is_backward_compatible():
                                            ([0.2e-3, -1.0], "overall_diameters")])
 def test_solver_bad_overall_diameters(overall, match):
     with pytest.raises(ValueError, match=match):
-        mt.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, [0.18e-3, 0.2e-3], RHO, GAMMA,
+        hardware.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, [0.18e-3, 0.2e-3], RHO, GAMMA,
                                overall_diameters=overall)
 
 
 # --- the built coil's 55 Ω ----------------------------------------------------------------
 
 def test_what_explains_the_measured_resistance():
-    s = mt.wire_area(0.2e-3)
-    n = mt.turns_from_resistance(55.0, 0.1, s, RHO, "square")
+    s = hardware.wire_area(0.2e-3)
+    n = hardware.turns_from_resistance(55.0, 0.1, s, RHO, "square")
     # R ∝ N: 240 × 55/53.476 = 246.8 turns, i.e. about 7 extra turns by hand
-    assert_allclose(n, 240 * 55.0 / mt.coil_resistance(240, 0.1, s, RHO, "square"), **EXACT)
-    d = mt.wire_diameter_from_resistance(55.0, 240, 0.1, RHO, "square")
+    assert_allclose(n, 240 * 55.0 / hardware.coil_resistance(240, 0.1, s, RHO, "square"), **EXACT)
+    d = hardware.wire_diameter_from_resistance(55.0, 240, 0.1, RHO, "square")
     # R ∝ 1/d²: 0.2 mm × √(53.476/55) = 0.1972 mm, inside the standard's ±3 µm
-    assert_allclose(mt.coil_resistance(240, 0.1, mt.wire_area(d), RHO, "square"), 55.0, **EXACT)
+    assert_allclose(hardware.coil_resistance(240, 0.1, hardware.wire_area(d), RHO, "square"), 55.0, **EXACT)
     assert 0.2e-3 - 3e-6 < d < 0.2e-3
 
 
@@ -147,23 +147,23 @@ def test_what_explains_the_measured_resistance():
 
 def test_magnetization_curve_round_trip_and_limits():
     h = np.array([0.0, 10.0, 500.0, 1e5])
-    j = mt.magnetization_curve(h, 1.25e6, 40.0)
-    assert_allclose(mt.field_for_magnetization(j, 1.25e6, 40.0), h, rtol=1e-12, atol=1e-9)
+    j = hardware.magnetization_curve(h, 1.25e6, 40.0)
+    assert_allclose(hardware.field_for_magnetization(j, 1.25e6, 40.0), h, rtol=1e-12, atol=1e-9)
     # E28: J(500) = 1.157·10⁶ A/m for permalloy 50Н (Kovalenko's J° ≈ 1.1·10⁶, 5 % apart)
     assert_allclose(j[2], 1.157e6, atol=0.0005e6)
     # permendur at 1500 A/m: 1.725·10⁶ (Kovalenko's J° ≈ 1.75·10⁶)
-    assert_allclose(mt.magnetization_curve(1500.0, 1.92e6, 170.0), 1.725e6, atol=0.0005e6)
+    assert_allclose(hardware.magnetization_curve(1500.0, 1.92e6, 170.0), 1.725e6, atol=0.0005e6)
     with pytest.raises(ValueError, match="magnetization"):
-        mt.field_for_magnetization(1.3e6, 1.25e6, 40.0)
+        hardware.field_for_magnetization(1.3e6, 1.25e6, 40.0)
 
 
 def test_core_central_magnetization_solves_the_self_consistent_field():
-    n = mt.rod_demagnetizing_factor(np.array([20.0, 40.0, 150.0]))
+    n = hardware.rod_demagnetizing_factor(np.array([20.0, 40.0, 150.0]))
     hk = np.array([1e-4, 2434.0, 1e6])[:, None]
-    j = mt.core_central_magnetization(hk, n, 1.25e6, 40.0)
+    j = hardware.core_central_magnetization(hk, n, 1.25e6, 40.0)
     # J = a H/(H + b) with H = H_к − N J (Kovalenko 9.6 with 9.21)
     h = hk - n * j
-    assert_allclose(j, mt.magnetization_curve(h, 1.25e6, 40.0), rtol=1e-10)
+    assert_allclose(j, hardware.magnetization_curve(h, 1.25e6, 40.0), rtol=1e-10)
     # weak field: linear, J = H_к/(N + b/a); strong field: saturation at a
     # (rtol 1e-5: at 1e-4 A/m the curve's own nonlinearity H/b is below 1e-5)
     assert_allclose(j[0], 1e-4 / (n + 40.0 / 1.25e6), rtol=1e-5)
@@ -171,7 +171,7 @@ def test_core_central_magnetization_solves_the_self_consistent_field():
 
 
 def test_electromagnet_design_is_consistent():
-    em = mt.electromagnet_design(0.4, 40.0, 1.1e6, 500.0, 0.79, 2e6, 0.5, RHO, 8.0e3, GAMMA, 12.0)
+    em = hardware.electromagnet_design(0.4, 40.0, 1.1e6, 500.0, 0.79, 2e6, 0.5, RHO, 8.0e3, GAMMA, 12.0)
     # the core's moment is k J° V = 0.4 A·m² by construction (9.64)-(9.65)
     volume = math.pi * em["core_diameter"] ** 2 * em["length"] / 4
     assert_allclose(0.79 * 1.1e6 * volume, 0.4, **EXACT)
@@ -188,7 +188,7 @@ def test_electromagnet_design_is_consistent():
 
 
 def test_permanent_magnet_min_mass_e36():
-    l, d, m = mt.permanent_magnet_min_mass(10.0, 8.4e5, 7.0, 7350.0)
+    l, d, m = hardware.permanent_magnet_min_mass(10.0, 8.4e5, 7.0, 7350.0)
     # Kovalenko's example for a test (inventory E36): L = 10 A·m² -> l = 90.6 mm, d = 12.9 mm,
     # m = 87.5 g (the last with the implied γ = 7350 kg/m³), half a unit of each last digit
     assert_allclose([l * 1e3, d * 1e3, m * 1e3], [90.6, 12.9, 87.5], atol=0.05)
@@ -197,9 +197,9 @@ def test_permanent_magnet_min_mass_e36():
 
 
 def test_magnet_moment_per_mass_matches_e02():
-    per_kg = mt.magnet_moment_per_mass(1.4 / MU_0, 7.5e3)
+    per_kg = hardware.magnet_moment_per_mass(1.4 / MU_0, 7.5e3)
     # torque per kg in B = 0.5e-4 T is (L/m)·B: eq. (1.7)
-    assert_allclose(per_kg * 0.5e-4, mt.magnet_torque_per_mass(1.4, 0.5e-4, 7.5e3), **EXACT)
+    assert_allclose(per_kg * 0.5e-4, hardware.magnet_torque_per_mass(1.4, 0.5e-4, 7.5e3), **EXACT)
 
 
 # --- the command ---------------------------------------------------------------------------
@@ -288,7 +288,7 @@ def test_actuator_figure_agrees_with_the_library():
     data = figures.compute("ch03-actuators")
     cols = {k: np.asarray(v, float) for k, (u, v) in data.series[0].columns.items()}
     t = load_wire_table("iec60317")
-    coil = mt.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, t.nominal_diameter, RHO, GAMMA,
+    coil = hardware.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, t.nominal_diameter, RHO, GAMMA,
                                   require_fit=True, overall_diameters=t.max_overall_diameter)["min_mass"]
     assert_allclose([cols["mass"][0], cols["power"][0]], [coil["mass"], coil["power"]], **EXACT)
     # the rod's central magnetisation from the curve (9.23) reaches at least the assumed J°,

@@ -12,7 +12,8 @@ from numpy.testing import assert_allclose
 from magbench.chapters import errata
 from scipy.integrate import solve_ivp
 
-from magbench import attitude, control
+from magbench import control
+from magbench import dynamics
 from magbench.constants import MU_0
 
 J, M1 = 0.005, 0.4                  # thesis seed line 516
@@ -25,66 +26,66 @@ PRINTED_SETS = [(0.1, 0.5, 0.5), (0.2, 0.5, 0.5), (0.3, 0.5, 0.5),
 
 def test_small_angle_period_is_eq14():
     # Eq. (14): ω = 2π/T = √(mB/J).
-    assert_allclose(attitude.small_angle_period(J, M1, B0), 2 * np.pi * np.sqrt(J / (M1 * B0)), rtol=1e-15)
+    assert_allclose(dynamics.small_angle_period(J, M1, B0), 2 * np.pi * np.sqrt(J / (M1 * B0)), rtol=1e-15)
 
 
 @pytest.mark.parametrize("amplitude", [0.05, 0.5, 1.0, np.pi / 2, 2.5, 3.0, 3.1])
 def test_elliptic_period_against_solve_ivp(amplitude):
     # Released at rest at ψ = A, the pendulum next stops at ψ = −A after half a period.
-    plant = attitude.Mockup(J, B0, M1)
+    plant = dynamics.Mockup(J, B0, M1)
 
     def turn(t, y, p):
         return y[1]
     turn.direction = 1.0          # ω crosses zero upwards at ψ = −A
-    t0 = float(attitude.small_angle_period(J, M1, B0))
-    sol = solve_ivp(attitude.pendulum_rhs, (0, 20 * t0), [amplitude, 0.0], args=(plant,),
+    t0 = float(dynamics.small_angle_period(J, M1, B0))
+    sol = solve_ivp(dynamics.pendulum_rhs, (0, 20 * t0), [amplitude, 0.0], args=(plant,),
                     events=turn, rtol=1e-12, atol=1e-14)
     half = sol.t_events[0][0]
     # Tolerance: solve_ivp at rtol 1e-12; near the separatrix (A = 3.1) the slow crawl
     # at the turning point amplifies the event-time error.
-    assert_allclose(2 * half, attitude.pendulum_period(amplitude, J, M1, B0), rtol=1e-8)
+    assert_allclose(2 * half, dynamics.pendulum_period(amplitude, J, M1, B0), rtol=1e-8)
     assert_allclose(sol.y_events[0][0][0], -amplitude, atol=1e-8)
 
 
 def test_period_limits_and_series():
-    t0 = attitude.small_angle_period(J, M1, B0)
+    t0 = dynamics.small_angle_period(J, M1, B0)
     # Small-amplitude series T = T0 (1 + A²/16 + 11A⁴/3072 + …): error O(A⁶).
     a = 0.1
-    assert_allclose(attitude.pendulum_period(a, J, M1, B0), t0 * (1 + a**2 / 16 + 11 * a**4 / 3072), rtol=1e-9)
-    assert attitude.pendulum_period(0.0, J, M1, B0) == pytest.approx(float(t0), rel=1e-15)
-    assert np.isinf(attitude.pendulum_period(np.pi, J, M1, B0))          # the separatrix
+    assert_allclose(dynamics.pendulum_period(a, J, M1, B0), t0 * (1 + a**2 / 16 + 11 * a**4 / 3072), rtol=1e-9)
+    assert dynamics.pendulum_period(0.0, J, M1, B0) == pytest.approx(float(t0), rel=1e-15)
+    assert np.isinf(dynamics.pendulum_period(np.pi, J, M1, B0))          # the separatrix
     # Monotone in the amplitude.
-    assert np.all(np.diff(attitude.pendulum_period(np.linspace(0, 3.1, 50), J, M1, B0)) > 0)
+    assert np.all(np.diff(dynamics.pendulum_period(np.linspace(0, 3.1, 50), J, M1, B0)) > 0)
 
 
 def test_energy_is_conserved_and_peak_rate():
-    plant = attitude.Mockup(J, B0, M1)
-    t0 = float(attitude.small_angle_period(J, M1, B0))
-    sol = solve_ivp(attitude.pendulum_rhs, (0, 5 * t0), [np.pi / 2, 0.0], args=(plant,),
+    plant = dynamics.Mockup(J, B0, M1)
+    t0 = float(dynamics.small_angle_period(J, M1, B0))
+    sol = solve_ivp(dynamics.pendulum_rhs, (0, 5 * t0), [np.pi / 2, 0.0], args=(plant,),
                     t_eval=np.linspace(0, 5 * t0, 4001), rtol=1e-11, atol=1e-13)
-    e = attitude.pendulum_energy(sol.y[0], sol.y[1], J, M1, B0)
+    e = dynamics.pendulum_energy(sol.y[0], sol.y[1], J, M1, B0)
     scale = M1 * B0                      # energy scale mB0 [J]
     assert np.max(np.abs(e - e[0])) / scale < 1e-8     # integrator tolerance 1e-11 over 5 periods
-    assert_allclose(np.max(np.abs(sol.y[1])), attitude.pendulum_peak_rate(np.pi / 2, J, M1, B0), rtol=1e-5)
+    assert_allclose(np.max(np.abs(sol.y[1])), dynamics.pendulum_peak_rate(np.pi / 2, J, M1, B0), rtol=1e-5)
     # rtol 1e-5: the sampled maximum misses the true peak by O((Δt ω0)²).
 
 
 def test_two_coil_equilibrium():
     # Eq. (36) with constant m1, m2: at rest where the net dipole lies along the field.
-    plant = attitude.Mockup(J, B0, 0.3, 0.4)
+    plant = dynamics.Mockup(J, B0, 0.3, 0.4)
     psi_eq = -np.arctan2(0.4, 0.3)
-    assert_allclose(attitude.two_coil_rhs(0.0, [psi_eq, 0.0], plant)[1], 0.0, atol=1e-18)
-    assert_allclose(attitude.pendulum_rhs(0.0, [0.3, 0.0], plant),
-                    attitude.two_coil_rhs(0.0, [0.3, 0.0], attitude.Mockup(J, B0, 0.3, 0.0)))
+    assert_allclose(dynamics.two_coil_rhs(0.0, [psi_eq, 0.0], plant)[1], 0.0, atol=1e-18)
+    assert_allclose(dynamics.pendulum_rhs(0.0, [0.3, 0.0], plant),
+                    dynamics.two_coil_rhs(0.0, [0.3, 0.0], dynamics.Mockup(J, B0, 0.3, 0.0)))
 
 
 def test_field_and_amplitude_for_period_invert_the_period():
     for a in (0.2, 1.0, 2.0, 3.0):
-        t = attitude.pendulum_period(a, J, M1, B0)
-        assert_allclose(attitude.field_for_period(t, a, J, M1), B0, rtol=1e-13)
-        assert_allclose(attitude.amplitude_for_period(float(t), J, M1, B0), a, rtol=1e-10)
+        t = dynamics.pendulum_period(a, J, M1, B0)
+        assert_allclose(dynamics.field_for_period(t, a, J, M1), B0, rtol=1e-13)
+        assert_allclose(dynamics.amplitude_for_period(float(t), J, M1, B0), a, rtol=1e-10)
     # At A → 0 the exact field is eq. (15) without its amplitude factor.
-    assert_allclose(attitude.field_for_period(60.0, 0.0, J, M1), 4 * np.pi**2 * J / (M1 * 60.0**2), rtol=1e-14)
+    assert_allclose(dynamics.field_for_period(60.0, 0.0, J, M1), 4 * np.pi**2 * J / (M1 * 60.0**2), rtol=1e-14)
 
 
 # --- geometry of the mock-up on a thread (thesis §4.1) -----------------------------------
@@ -92,7 +93,7 @@ def test_field_and_amplitude_for_period_invert_the_period():
 def test_euler_matrix_is_a_rotation_with_the_printed_body_axis():
     rng = np.random.default_rng(1)
     psi, theta, phi = rng.uniform(-3, 3, (3, 20))
-    r = attitude.euler_313_matrix(psi, theta, phi)
+    r = dynamics.euler_313_matrix(psi, theta, phi)
     assert_allclose(r @ np.swapaxes(r, -1, -2), np.broadcast_to(np.eye(3), r.shape), atol=1e-14)
     assert_allclose(np.linalg.det(r), 1.0, rtol=1e-14)
     # Inventory audit A36: z' = (sinθ sinψ, −sinθ cosψ, cosθ).
@@ -109,16 +110,16 @@ def test_printed_cm_velocity_and_body_rates_by_finite_differences():
     d, h, t = 0.1, 1e-5, 0.8
     psi, theta, phi, x, y = angles(t)
     dpsi, dth, dphi, dx, dy = rates
-    fd = (attitude.thread_center_of_mass(*angles(t + h)[3:], *angles(t + h)[:2], d)
-          - attitude.thread_center_of_mass(*angles(t - h)[3:], *angles(t - h)[:2], d)) / (2 * h)
+    fd = (dynamics.thread_center_of_mass(*angles(t + h)[3:], *angles(t + h)[:2], d)
+          - dynamics.thread_center_of_mass(*angles(t - h)[3:], *angles(t - h)[:2], d)) / (2 * h)
     printed = [dx - d * np.cos(theta) * np.sin(psi) * dth - d * np.sin(theta) * np.cos(psi) * dpsi,
                dy + d * np.cos(theta) * np.cos(psi) * dth - d * np.sin(theta) * np.sin(psi) * dpsi,
                d * np.sin(theta) * dth]
     assert_allclose(fd, printed, atol=1e-10)
-    r = attitude.euler_313_matrix(psi, theta, phi)
-    rdot = (attitude.euler_313_matrix(*angles(t + h)[:3]) - attitude.euler_313_matrix(*angles(t - h)[:3])) / (2 * h)
+    r = dynamics.euler_313_matrix(psi, theta, phi)
+    rdot = (dynamics.euler_313_matrix(*angles(t + h)[:3]) - dynamics.euler_313_matrix(*angles(t - h)[:3])) / (2 * h)
     w = r.T @ rdot                       # skew matrix of the body-axis rate
-    assert_allclose([w[2, 1], w[0, 2], w[1, 0]], attitude.body_rates_313(psi, theta, phi, dpsi, dth, dphi),
+    assert_allclose([w[2, 1], w[0, 2], w[1, 0]], dynamics.body_rates_313(psi, theta, phi, dpsi, dth, dphi),
                     atol=1e-9)
 
 
@@ -245,14 +246,14 @@ def test_gain_reading_scales():
 # --- bad input ----------------------------------------------------------------------------
 
 @pytest.mark.parametrize("call, message", [
-    (lambda: attitude.pendulum_period(3.2, J, M1, B0), "amplitude"),
-    (lambda: attitude.pendulum_period(1.0, -J, M1, B0), "inertia"),
-    (lambda: attitude.small_angle_period(J, 0.0, B0), "moment"),
-    (lambda: attitude.field_for_period(0.0, 1.0, J, M1), "period"),
-    (lambda: attitude.amplitude_for_period(1.0, J, M1, B0), "small-angle period"),
-    (lambda: attitude.Mockup(0.0, B0), "inertia"),
-    (lambda: attitude.Mockup(J, np.nan), "field"),
-    (lambda: attitude.thread_center_of_mass(0, 0, 0, 0, -0.1), "cm_offset"),
+    (lambda: dynamics.pendulum_period(3.2, J, M1, B0), "amplitude"),
+    (lambda: dynamics.pendulum_period(1.0, -J, M1, B0), "inertia"),
+    (lambda: dynamics.small_angle_period(J, 0.0, B0), "moment"),
+    (lambda: dynamics.field_for_period(0.0, 1.0, J, M1), "period"),
+    (lambda: dynamics.amplitude_for_period(1.0, J, M1, B0), "small-angle period"),
+    (lambda: dynamics.Mockup(0.0, B0), "inertia"),
+    (lambda: dynamics.Mockup(J, np.nan), "field"),
+    (lambda: dynamics.thread_center_of_mass(0, 0, 0, 0, -0.1), "cm_offset"),
     (lambda: control.PidLoop(J, B0, 0.1, 0.5, 0.5, allocation="approx"), "allocation"),
     (lambda: control.PidLoop(J, B0, 0.1, 0.5, 0.5, moment_limit=0.0), "moment_limit"),
     (lambda: control.PidLoop(J, -B0, 0.1, 0.5, 0.5), "field"),

@@ -5,7 +5,8 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from magbench import bench, control
+from magbench import control
+from magbench.sim import bench
 from magbench.dynamics import Mockup, mockup_rhs, pendulum_rhs, two_coil_rhs
 
 

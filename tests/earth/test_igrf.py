@@ -4,7 +4,8 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from magbench import geomag, igrf
+from magbench.earth import igrf
+from magbench import earth
 
 
 def test_dipole_1960_matches_thesis_pole():
@@ -30,8 +31,8 @@ def test_degree_one_field_equals_dipole_formula():
     d = igrf.igrf_dipole(2016.0)
     f = igrf.igrf_field(0.0, np.radians(10.0), 2016.0, max_degree=1)
     r = 6378.137e3    # WGS-84 equatorial radius: geodetic = geocentric on the equator
-    m_vec = geomag.earth_dipole_moment_vector(d.moment, d.pole_latitude, d.pole_longitude)
-    b = geomag.dipole_b(r * np.array([np.cos(np.radians(10)), np.sin(np.radians(10)), 0.0]), m_vec)
+    m_vec = earth.earth_dipole_moment_vector(d.moment, d.pole_latitude, d.pole_longitude)
+    b = earth.dipole_b(r * np.array([np.cos(np.radians(10)), np.sin(np.radians(10)), 0.0]), m_vec)
     assert_allclose(f.total, np.linalg.norm(b), rtol=1e-9)   # ppigrf works in km/nT floats
 
 

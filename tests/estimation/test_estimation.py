@@ -5,7 +5,8 @@ import pytest
 from numpy.testing import assert_allclose
 from scipy.spatial.transform import Rotation
 
-from magbench import estimation, sensors
+from magbench import estimation
+from magbench.hardware import sensors
 from magbench.rotations import hamilton_product
 
 G = 9.81

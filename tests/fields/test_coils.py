@@ -1,4 +1,4 @@
-"""Tests of magbench.coils: exact loop field, Helmholtz pair, uniformity, squares, electrics.
+"""Tests of magbench.fields: exact loop field, Helmholtz pair, uniformity, squares, electrics.
 
 Tolerances are stated next to every comparison with the reason for their size. Thesis
 and Kovalenko numbers come from /work/shared/reference/seeds_inventory.md §1.2 (A10–A20)
@@ -9,29 +9,12 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose, assert_array_equal
 
-from magbench import coils
-from magbench.coils import (
-    cylinder_nonuniformity,
-    helmholtz_ampere_turns,
-    helmholtz_b,
-    helmholtz_center_h,
-    loop_b,
-    loop_b_posed,
-    optimal_separation,
-    sphere_nonuniformity,
-    square_loop_axial_b,
-    square_loop_b,
-    square_pair_spacing,
-    thesis_printed_ampere_turns,
-    uniform_cylinder,
-    uniform_sphere_radius,
-    winding_mass,
-    winding_power,
-    winding_resistance,
-    winding_voltage,
-)
+from magbench import fields
+from magbench.fields import cylinder_nonuniformity, helmholtz_ampere_turns, helmholtz_b, helmholtz_center_h, loop_b, loop_b_posed, optimal_separation, sphere_nonuniformity, square_loop_axial_b, square_loop_b, square_pair_spacing, uniform_cylinder, uniform_sphere_radius
+from magbench.chapters.ch02_field_simulator import thesis_printed_ampere_turns
+from magbench.hardware import winding_mass, winding_power, winding_resistance, winding_voltage
 from magbench.constants import MU_0
-from magbench.geomag import dipole_b
+from magbench.earth import dipole_b
 from tests.support import near_axis_points as _near_axis_points
 from tests.support import near_wire_points as _near_wire_points
 from tests.support import relative_to_norm as _relative_to_norm
@@ -390,7 +373,7 @@ def test_output_shape_follows_points():
     assert helmholtz_b(p, A, A, CURRENT, TURNS).shape == p.shape
     assert square_loop_b(p, A, CURRENT).shape == p.shape
     assert loop_b_posed(p, A, CURRENT, 1, (0, 0, 0), (1, 1, 1)).shape == p.shape
-    assert coils.loop_b([0.1, 0.2, 0.3], A, CURRENT).shape == (3,)
+    assert fields.loop_b([0.1, 0.2, 0.3], A, CURRENT).shape == (3,)
 
 
 def test_a_round_coil_is_called_round():

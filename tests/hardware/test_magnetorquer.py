@@ -1,4 +1,4 @@
-"""Tests for magbench.magnetorquer: thesis §3 (eqs. 17–32) and Kovalenko ch. 1, 8, 9.
+"""Tests for magbench.hardware: thesis §3 (eqs. 17–32) and Kovalenko ch. 1, 8, 9.
 
 Tolerances on printed numbers are half a unit of the last printed digit unless a comment
 says otherwise; identities are checked to floating-point precision (rtol 1e-12).
@@ -14,7 +14,7 @@ import pytest
 from magbench.cli import design_explanation
 from numpy.testing import assert_allclose
 
-from magbench import magnetorquer as mt
+from magbench import hardware
 from magbench.constants import MU_0
 
 # Thesis inputs, seed lines 404–416.
@@ -48,16 +48,16 @@ def test_rho_rho_tilde_product():
 def test_eq32_coefficients():
     # eq. (32), seed line 420, from the square formulas (28)–(29) at U = N = 1:
     # "M = 10⁻³·N/U" printed with one digit -> half a unit of 10⁻³
-    mass_coef = mt.coil_mass_for_moment(M_REQ, 1.0, 1.0, RHO, GAMMA, "square")
+    mass_coef = hardware.coil_mass_for_moment(M_REQ, 1.0, 1.0, RHO, GAMMA, "square")
     assert_allclose(mass_coef, 1e-3, atol=0.5e-3)
     assert_allclose(mass_coef, 16 * RHO * GAMMA * M_REQ, **EXACT)
     # "W = 40·U/N": half a unit of the last digit
-    power_coef = mt.joule_power_for_moment(M_REQ, 1.0, 1.0, SIDE, "square")
+    power_coef = hardware.joule_power_for_moment(M_REQ, 1.0, 1.0, SIDE, "square")
     assert_allclose(power_coef, 40.0, atol=0.5)
 
 
 def test_turns_per_volt_bounds_and_turn_range():
-    lo, hi = mt.turns_per_volt_bounds(M_REQ, SIDE, W_MAX, M_MAX, RHO, GAMMA, "square")
+    lo, hi = hardware.turns_per_volt_bounds(M_REQ, SIDE, W_MAX, M_MAX, RHO, GAMMA, "square")
     # "20 <= N/U <= 100" (seed line 426): half a unit of the last digit
     assert_allclose([lo, hi], [20.0, 100.0], atol=0.5)
     # "240 <= N <= 1200" at 12 V: both are 12 × the printed N/U bounds, so the
@@ -69,31 +69,31 @@ def test_turns_per_volt_bounds_and_turn_range():
 
 
 def test_wire_area_and_diameter():
-    s_r = mt.wire_area_for_moment(M_REQ, U, SIDE, RHO)
+    s_r = hardware.wire_area_for_moment(M_REQ, U, SIDE, RHO)
     # eq. (21) gives 2.333·10⁻⁸ m² (the printed 2.34 is rounded up: see the xfail below);
     # identity with the printed inputs, floating-point rounding only
     assert_allclose(s_r, 4 * 0.0175e-6 * 0.4 / (12 * 0.1), **EXACT)
     # "d = 0.172 mm": half a unit of the last digit. It follows from the exact 2.333·10⁻⁸;
     # the printed 2.34·10⁻⁸ would give 0.1726 -> 0.173 mm
-    assert_allclose(mt.wire_diameter(s_r), 0.172e-3, atol=0.0005e-3)
-    assert_allclose(mt.wire_area(mt.wire_diameter(s_r)), s_r, **EXACT)
+    assert_allclose(hardware.wire_diameter(s_r), 0.172e-3, atol=0.0005e-3)
+    assert_allclose(hardware.wire_area(hardware.wire_diameter(s_r)), s_r, **EXACT)
 
 
 def test_mass_and_power_at_240_turns():
-    mass = mt.coil_mass_for_moment(M_REQ, U, 240, RHO, GAMMA, "square")
-    power = mt.joule_power_for_moment(M_REQ, U, 240, SIDE, "square")
+    mass = hardware.coil_mass_for_moment(M_REQ, U, 240, RHO, GAMMA, "square")
+    power = hardware.joule_power_for_moment(M_REQ, U, 240, SIDE, "square")
     # "M = 0.02 kg" (seed line 429) and "W = 2 W" (seed line 435): half a unit of the last digit
     assert_allclose(mass, 0.02, atol=0.005)
     assert_allclose(power, 2.0, atol=0.5)
     # and both agree with the coil built from the eq. (21) wire, eqs. (24) and W = U²/R
-    s_r = mt.wire_area_for_moment(M_REQ, U, SIDE, RHO)
-    assert_allclose(mt.coil_mass(240, SIDE, s_r, GAMMA, "square"), mass, **EXACT)
-    r = mt.coil_resistance(240, SIDE, s_r, RHO, "square")
-    assert_allclose(mt.joule_power(U, r), power, **EXACT)
+    s_r = hardware.wire_area_for_moment(M_REQ, U, SIDE, RHO)
+    assert_allclose(hardware.coil_mass(240, SIDE, s_r, GAMMA, "square"), mass, **EXACT)
+    r = hardware.coil_resistance(240, SIDE, s_r, RHO, "square")
+    assert_allclose(hardware.joule_power(U, r), power, **EXACT)
 
 
 def test_resistance_of_built_coil():
-    r = mt.coil_resistance(N_BUILT, SIDE, mt.wire_area(D_BUILT), RHO, "square")
+    r = hardware.coil_resistance(N_BUILT, SIDE, hardware.wire_area(D_BUILT), RHO, "square")
     # "R = N·r = 53.5 Ω" (seed line 439): half a unit of the last digit
     assert_allclose(r, 53.5, atol=0.05)
     # measured "≈ 55 Ω", "≈ 3 %" (seed lines 439-441): half a unit of the percentage
@@ -102,74 +102,74 @@ def test_resistance_of_built_coil():
 
 # --- Invariants ------------------------------------------------------------------------
 
-@pytest.mark.parametrize("shape", mt.SHAPES)
+@pytest.mark.parametrize("shape", hardware.SHAPES)
 def test_mass_power_product_independent_of_turns_and_voltage(shape):
     n, u = np.meshgrid([50.0, 240.0, 1200.0, 5000.0], [3.3, 5.0, 12.0, 28.0])
-    product = (mt.coil_mass_for_moment(M_REQ, u, n, RHO, GAMMA, shape)
-               * mt.joule_power_for_moment(M_REQ, u, n, SIDE, shape))
-    assert_allclose(product, mt.mass_power_product(M_REQ, SIDE, RHO, GAMMA), **EXACT)
+    product = (hardware.coil_mass_for_moment(M_REQ, u, n, RHO, GAMMA, shape)
+               * hardware.joule_power_for_moment(M_REQ, u, n, SIDE, shape))
+    assert_allclose(product, hardware.mass_power_product(M_REQ, SIDE, RHO, GAMMA), **EXACT)
     # the same from first principles: wire of eq. (21), R = N r, W = U²/R, M = ρ̃ P S_r N
-    s_r = mt.wire_area_for_moment(M_REQ, u, SIDE, RHO)
-    direct = (mt.coil_mass(n, SIDE, s_r, GAMMA, shape)
-              * mt.joule_power(u, mt.coil_resistance(n, SIDE, s_r, RHO, shape)))
+    s_r = hardware.wire_area_for_moment(M_REQ, u, SIDE, RHO)
+    direct = (hardware.coil_mass(n, SIDE, s_r, GAMMA, shape)
+              * hardware.joule_power(u, hardware.coil_resistance(n, SIDE, s_r, RHO, shape)))
     assert_allclose(direct, product, **EXACT)
 
 
-@pytest.mark.parametrize("shape", mt.SHAPES)
+@pytest.mark.parametrize("shape", hardware.SHAPES)
 def test_moment_from_voltage_is_eq17_with_eq18_for_any_turns(shape):
-    s_r = mt.wire_area(D_BUILT)
+    s_r = hardware.wire_area(D_BUILT)
     n = np.array([10.0, 240.0, 1000.0])
-    i = mt.coil_current(U, mt.turn_resistance(SIDE, s_r, RHO, shape), n)
-    m = mt.dipole_moment(i, n, mt.turn_area(SIDE, shape))
-    assert_allclose(m, mt.moment_from_voltage(U, SIDE, s_r, RHO), **EXACT)
+    i = hardware.coil_current(U, hardware.turn_resistance(SIDE, s_r, RHO, shape), n)
+    m = hardware.dipole_moment(i, n, hardware.turn_area(SIDE, shape))
+    assert_allclose(m, hardware.moment_from_voltage(U, SIDE, s_r, RHO), **EXACT)
     # eq. (21) inverts eq. (20)
-    assert_allclose(mt.wire_area_for_moment(m, U, SIDE, RHO), s_r, **EXACT)
+    assert_allclose(hardware.wire_area_for_moment(m, U, SIDE, RHO), s_r, **EXACT)
     # eq. (27)/(31) inverts eq. (18)
-    assert_allclose(mt.supply_voltage(i, n, SIDE, s_r, RHO, shape), U, **EXACT)
+    assert_allclose(hardware.supply_voltage(i, n, SIDE, s_r, RHO, shape), U, **EXACT)
 
 
 def test_round_versus_square_factors():
-    s_r = mt.wire_area(D_BUILT)
+    s_r = hardware.wire_area(D_BUILT)
     q = np.pi / 4
     ratio = lambda f, *a: f(*a, "square") / f(*a, "round")   # noqa: E731
-    assert_allclose(ratio(mt.turn_area, SIDE), 1 / q, **EXACT)
-    assert_allclose(ratio(mt.turn_length, SIDE), 1 / q, **EXACT)
-    assert_allclose(ratio(mt.turn_resistance, SIDE, s_r, RHO), 1 / q, **EXACT)
+    assert_allclose(ratio(hardware.turn_area, SIDE), 1 / q, **EXACT)
+    assert_allclose(ratio(hardware.turn_length, SIDE), 1 / q, **EXACT)
+    assert_allclose(ratio(hardware.turn_resistance, SIDE, s_r, RHO), 1 / q, **EXACT)
     # (28) = (π/4)·(22), (29) = (4/π)·(25), (31) = (4/π)·(27), (30) = (26)
-    assert_allclose(ratio(mt.joule_power_for_moment, M_REQ, U, 240, SIDE), q, **EXACT)
-    assert_allclose(ratio(mt.coil_mass_for_moment, M_REQ, U, 240, RHO, GAMMA), 1 / q, **EXACT)
-    assert_allclose(ratio(mt.supply_voltage, 0.2, 240, SIDE, s_r, RHO), 1 / q, **EXACT)
-    assert_allclose(ratio(mt.coil_mass, 240, SIDE, s_r, GAMMA), 1 / q, **EXACT)
+    assert_allclose(ratio(hardware.joule_power_for_moment, M_REQ, U, 240, SIDE), q, **EXACT)
+    assert_allclose(ratio(hardware.coil_mass_for_moment, M_REQ, U, 240, RHO, GAMMA), 1 / q, **EXACT)
+    assert_allclose(ratio(hardware.supply_voltage, 0.2, 240, SIDE, s_r, RHO), 1 / q, **EXACT)
+    assert_allclose(ratio(hardware.coil_mass, 240, SIDE, s_r, GAMMA), 1 / q, **EXACT)
     # printed round forms: (22) 4m/(πl²)·U/N, (25) 4πρ̃ρm·N/U, (27) ρπl/S_r·IN
-    assert_allclose(mt.joule_power_for_moment(M_REQ, U, 240, SIDE, "round"),
+    assert_allclose(hardware.joule_power_for_moment(M_REQ, U, 240, SIDE, "round"),
                     4 * M_REQ / (np.pi * SIDE**2) * U / 240, **EXACT)
-    assert_allclose(mt.coil_mass_for_moment(M_REQ, U, 240, RHO, GAMMA, "round"),
+    assert_allclose(hardware.coil_mass_for_moment(M_REQ, U, 240, RHO, GAMMA, "round"),
                     4 * np.pi * GAMMA * RHO * M_REQ * 240 / U, **EXACT)
     # round-turn mass at N = 240: the audit's 0.0157 kg (seeds_inventory A25), half a unit
     # of its last digit
-    assert_allclose(mt.coil_mass_for_moment(M_REQ, U, 240, RHO, GAMMA, "round"), 0.0157,
+    assert_allclose(hardware.coil_mass_for_moment(M_REQ, U, 240, RHO, GAMMA, "round"), 0.0157,
                     atol=0.00005)
 
 
 def test_eq23_is_eq22_with_dense_winding():
     s_r, length = 2.34e-8, 0.05
-    n = mt.turns_from_winding_length(length, s_r)
-    for shape in mt.SHAPES:
-        assert_allclose(mt.joule_power_for_winding_length(M_REQ, U, length, s_r, SIDE, shape),
-                        mt.joule_power_for_moment(M_REQ, U, n, SIDE, shape), **EXACT)
-    assert_allclose(mt.winding_length(n, s_r), length, **EXACT)
+    n = hardware.turns_from_winding_length(length, s_r)
+    for shape in hardware.SHAPES:
+        assert_allclose(hardware.joule_power_for_winding_length(M_REQ, U, length, s_r, SIDE, shape),
+                        hardware.joule_power_for_moment(M_REQ, U, n, SIDE, shape), **EXACT)
+    assert_allclose(hardware.winding_length(n, s_r), length, **EXACT)
 
 
 def test_kovalenko_mass_power_product():
-    thesis = mt.mass_power_product(M_REQ, SIDE, RHO, GAMMA)
+    thesis = hardware.mass_power_product(M_REQ, SIDE, RHO, GAMMA)
     # k = 1, γ_к = ρ̃, D = l: the thesis's eq. (26)/(30)
-    assert_allclose(mt.mass_power_product_kovalenko(M_REQ, SIDE, RHO, GAMMA, 1.0), thesis, **EXACT)
+    assert_allclose(hardware.mass_power_product_kovalenko(M_REQ, SIDE, RHO, GAMMA, 1.0), thesis, **EXACT)
     # 1/k at fixed winding density; product of (8.9) and (8.11) at any current density j
-    k, g, j = 0.5, mt.winding_density(0.5, GAMMA, 1.8e3), np.array([1e6, 3e6])
+    k, g, j = 0.5, hardware.winding_density(0.5, GAMMA, 1.8e3), np.array([1e6, 3e6])
     m_k = 4 * g * M_REQ / (SIDE * k * j)           # (8.9)
     p_k = 4 * RHO * j * M_REQ / SIDE              # (8.11)
-    assert_allclose(mt.mass_power_product_kovalenko(M_REQ, SIDE, RHO, g, k), m_k * p_k, **EXACT)
-    assert_allclose(mt.winding_density(1.0, GAMMA, 1.8e3), GAMMA, **EXACT)
+    assert_allclose(hardware.mass_power_product_kovalenko(M_REQ, SIDE, RHO, g, k), m_k * p_k, **EXACT)
+    assert_allclose(hardware.winding_density(1.0, GAMMA, 1.8e3), GAMMA, **EXACT)
 
 
 def test_copper_gamma_rho_kovalenko():
@@ -204,7 +204,7 @@ def _brute_force(moment, u, side, shape, w_max, m_max, wires, rho, gamma, t, n_t
                                                ("square", 0.8, 0.07)])
 def test_design_solver_matches_brute_force(shape, w_max, m_max):
     t = 10e-6
-    res = mt.design_magnetorquer(M_REQ, U, SIDE, shape, w_max, m_max, WIRES, RHO, GAMMA, t)
+    res = hardware.design_magnetorquer(M_REQ, U, SIDE, shape, w_max, m_max, WIRES, RHO, GAMMA, t)
     ref = _brute_force(M_REQ, U, SIDE, shape, w_max, m_max, WIRES, RHO, GAMMA, t)
     assert res["feasible"] and len(ref) > 0
     assert max(row[0] for row in ref) < 5000      # the brute force's N range was wide enough
@@ -220,7 +220,7 @@ def test_design_solver_matches_brute_force(shape, w_max, m_max):
 
 
 def test_design_solver_rejects_the_built_coil():
-    res = mt.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, [D_BUILT], RHO, GAMMA)
+    res = hardware.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, [D_BUILT], RHO, GAMMA)
     # the smallest power-compliant count for 0.2 mm wire is 324 turns (144/(2 r) = 323.1), not 240
     assert res["feasible"]
     assert res["turns"].min() == 324
@@ -229,15 +229,15 @@ def test_design_solver_rejects_the_built_coil():
 
 
 def test_built_coil_violates_the_power_limit():
-    r = mt.coil_resistance(N_BUILT, SIDE, mt.wire_area(D_BUILT), RHO, "square")
-    power = mt.joule_power(U, r)
+    r = hardware.coil_resistance(N_BUILT, SIDE, hardware.wire_area(D_BUILT), RHO, "square")
+    power = hardware.joule_power(U, r)
     # 144/53.5 = 2.69 W: half a unit of the last digit of this value
     assert_allclose(power, 2.69, atol=0.005)
     assert power > W_MAX
 
 
 def test_design_solver_infeasible_moment():
-    res = mt.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, WIRES[:3], RHO, GAMMA)
+    res = hardware.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, WIRES[:3], RHO, GAMMA)
     assert not res["feasible"] and res["turns"].size == 0
     assert res["binding_limit"] == "moment"
     explanation = design_explanation(res, W_MAX, M_MAX, M_REQ, U)
@@ -247,7 +247,7 @@ def test_design_solver_infeasible_moment():
 
 def test_design_solver_infeasible_power_and_mass():
     # M·W >= 16ρρ̃m²/l² = 0.0399 kg·W > 1 W × 0.02 kg
-    res = mt.design_magnetorquer(M_REQ, U, SIDE, "square", 1.0, 0.02, WIRES, RHO, GAMMA)
+    res = hardware.design_magnetorquer(M_REQ, U, SIDE, "square", 1.0, 0.02, WIRES, RHO, GAMMA)
     assert not res["feasible"]
     assert res["binding_limit"] == "power and mass"
     explanation = design_explanation(res, 1.0, 0.02, M_REQ, U)
@@ -255,18 +255,18 @@ def test_design_solver_infeasible_power_and_mass():
 
 
 def test_design_solver_infeasible_winding_fit():
-    res = mt.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, WIRES, RHO, GAMMA,
+    res = hardware.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, WIRES, RHO, GAMMA,
                                  winding_length=0.01, require_fit=True)
     assert not res["feasible"] and res["binding_limit"] == "winding fit"
-    loose = mt.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, WIRES, RHO, GAMMA,
+    loose = hardware.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, WIRES, RHO, GAMMA,
                                    winding_length=0.01, max_layers=20, require_fit=True)
     assert loose["feasible"] and np.all(loose["fits"]) and np.all(loose["layers"] <= 20)
 
 
 def test_design_solver_accepts_thesis_exact_wire_at_240_turns():
     # with the continuous eq. (21) wire, N = 240 sits exactly on the 2 W limit
-    d = float(mt.wire_diameter(mt.wire_area_for_moment(M_REQ, U, SIDE, RHO)))
-    res = mt.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, [d], RHO, GAMMA)
+    d = float(hardware.wire_diameter(hardware.wire_area_for_moment(M_REQ, U, SIDE, RHO)))
+    res = hardware.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, [d], RHO, GAMMA)
     assert res["min_mass"]["turns"] == 240
     assert res["turns"].max() == 1203          # the exact mass bound, 1203.8
     assert_allclose(res["min_mass"]["moment"], M_REQ, **EXACT)
@@ -292,30 +292,30 @@ def test_design_solver_bad_input(kwargs, name):
                 max_mass=M_MAX, wire_diameters=WIRES, resistivity=RHO, density=GAMMA)
     args.update(kwargs)
     with pytest.raises(ValueError, match=name):
-        mt.design_magnetorquer(**args)
+        hardware.design_magnetorquer(**args)
 
 
 @pytest.mark.parametrize("call,name", [
-    (lambda: mt.turn_area(0.1, "triangle"), "shape"),
-    (lambda: mt.turn_area(0.1, 4), "shape"),
-    (lambda: mt.turn_area(-0.1), "side"),
-    (lambda: mt.wire_area(0.0), "diameter"),
-    (lambda: mt.dipole_moment(1.0, 0, 0.01), "turns"),
-    (lambda: mt.coil_current(12.0, -1.0, 240), "turn_resistance"),
-    (lambda: mt.turn_resistance(0.1, 1e-8, float("inf")), "resistivity"),
-    (lambda: mt.moment_from_voltage(12.0, 0.1, -1e-8, RHO), "wire_area"),
-    (lambda: mt.joule_power(12.0, 0.0), "resistance"),
-    (lambda: mt.coil_mass(240, 0.1, 1e-8, 0.0), "density"),
-    (lambda: mt.turns_from_winding_length(-0.1, 1e-8), "winding_length"),
-    (lambda: mt.winding_density(1.5, GAMMA, 1e3), "fill_factor"),
-    (lambda: mt.mass_power_product_kovalenko(0.4, 0.1, RHO, GAMMA, 0.0), "fill_factor"),
-    (lambda: mt.turns_per_volt_bounds(0.4, 0.1, 0.0, 0.1, RHO, GAMMA), "max_power"),
-    (lambda: mt.rod_demagnetizing_factor(5.0), "elongation"),
-    (lambda: mt.rod_demagnetizing_factor(50.0, "ellipsoid"), "formula"),
-    (lambda: mt.effective_permeability(0.5, 0.01), "permeability"),
-    (lambda: mt.effective_permeability(100.0, 1.5), "demagnetizing_factor"),
-    (lambda: mt.magnet_torque_per_mass(0.0, 5e-5, 7.5e3), "remanence"),
-    (lambda: mt.magnet_mass_for_torque(-1.0, 1.4, 5e-5, 7.5e3), "torque"),
+    (lambda: hardware.turn_area(0.1, "triangle"), "shape"),
+    (lambda: hardware.turn_area(0.1, 4), "shape"),
+    (lambda: hardware.turn_area(-0.1), "side"),
+    (lambda: hardware.wire_area(0.0), "diameter"),
+    (lambda: hardware.dipole_moment(1.0, 0, 0.01), "turns"),
+    (lambda: hardware.coil_current(12.0, -1.0, 240), "turn_resistance"),
+    (lambda: hardware.turn_resistance(0.1, 1e-8, float("inf")), "resistivity"),
+    (lambda: hardware.moment_from_voltage(12.0, 0.1, -1e-8, RHO), "wire_area"),
+    (lambda: hardware.joule_power(12.0, 0.0), "resistance"),
+    (lambda: hardware.coil_mass(240, 0.1, 1e-8, 0.0), "density"),
+    (lambda: hardware.turns_from_winding_length(-0.1, 1e-8), "winding_length"),
+    (lambda: hardware.winding_density(1.5, GAMMA, 1e3), "fill_factor"),
+    (lambda: hardware.mass_power_product_kovalenko(0.4, 0.1, RHO, GAMMA, 0.0), "fill_factor"),
+    (lambda: hardware.turns_per_volt_bounds(0.4, 0.1, 0.0, 0.1, RHO, GAMMA), "max_power"),
+    (lambda: hardware.rod_demagnetizing_factor(5.0), "elongation"),
+    (lambda: hardware.rod_demagnetizing_factor(50.0, "ellipsoid"), "formula"),
+    (lambda: hardware.effective_permeability(0.5, 0.01), "permeability"),
+    (lambda: hardware.effective_permeability(100.0, 1.5), "demagnetizing_factor"),
+    (lambda: hardware.magnet_torque_per_mass(0.0, 5e-5, 7.5e3), "remanence"),
+    (lambda: hardware.magnet_mass_for_torque(-1.0, 1.4, 5e-5, 7.5e3), "torque"),
 ])
 def test_bad_input_names_parameter(call, name):
     with pytest.raises(ValueError, match=name):
@@ -324,9 +324,9 @@ def test_bad_input_names_parameter(call, name):
 
 def test_error_message_gives_value_and_range():
     with pytest.raises(ValueError, match=r"side must be > 0 m, got .*-0\.1"):
-        mt.turn_area(-0.1)
+        hardware.turn_area(-0.1)
     with pytest.raises(ValueError, match=r"shape must be one of \('round', 'square'\), got 'oval'"):
-        mt.coil_mass(240, 0.1, 1e-8, GAMMA, "oval")
+        hardware.coil_mass(240, 0.1, 1e-8, GAMMA, "oval")
 
 
 # --- Cored rods and permanent magnets (Kovalenko) -------------------------------------
@@ -340,14 +340,14 @@ TABLE5_NU = np.array([5.1, 0.84, -0.22, -2.6, -4.6, -3.2, 0.0, 2.8, 2.0])
 
 
 def test_table5_power_law():
-    four_pi_n = 4 * np.pi * mt.rod_demagnetizing_factor(TABLE5_P)
+    four_pi_n = 4 * np.pi * hardware.rod_demagnetizing_factor(TABLE5_P)
     # 2 %: the printed "расч" column is not 4π·0.93p^-1.7 rounded (it differs by up to
     # 1.4 %, e.g. 0.00738 vs 0.00748 at p = 75.63), so half-digit agreement is impossible
     assert_allclose(four_pi_n, TABLE5_COMPUTED, rtol=0.02)
 
 
 def test_table5_rosenblat():
-    four_pi_n = 4 * np.pi * mt.rod_demagnetizing_factor(TABLE5_P, "rosenblat")
+    four_pi_n = 4 * np.pi * hardware.rod_demagnetizing_factor(TABLE5_P, "rosenblat")
     # 3 %: (9.24) is an empirical fit to the measured column ("good agreement", p. 184);
     # its printed prefactor is lost and reconstructed, so no printed value to round to
     assert_allclose(four_pi_n, TABLE5_MEASURED, rtol=0.03)
@@ -366,26 +366,26 @@ def test_table5_nu_column():
 
 
 def test_effective_permeability():
-    n = mt.rod_demagnetizing_factor(np.array([20.0, 100.0]))
-    assert_allclose(mt.effective_permeability(1.0, n), 1.0, **EXACT)
-    assert_allclose(mt.effective_permeability(1e4, 0.0), 1e4, **EXACT)
+    n = hardware.rod_demagnetizing_factor(np.array([20.0, 100.0]))
+    assert_allclose(hardware.effective_permeability(1.0, n), 1.0, **EXACT)
+    assert_allclose(hardware.effective_permeability(1e4, 0.0), 1e4, **EXACT)
     # μ → ∞ gives 1/N (to 1 part in 10⁸ at μ = 10¹²)
-    assert_allclose(mt.effective_permeability(1e12, n), 1 / n, rtol=1e-8)
+    assert_allclose(hardware.effective_permeability(1e12, n), 1 / n, rtol=1e-8)
     # B = μ0 μ_eff H_к equals μ0(H + J) with H = H_к − N J, J = (μ − 1) H (Kovalenko 9.5)
     mu, h_k = 3000.0, 10.0
     h = h_k / (1 + n * (mu - 1))
-    assert_allclose(mt.effective_permeability(mu, n) * h_k, h + (mu - 1) * h, **EXACT)
+    assert_allclose(hardware.effective_permeability(mu, n) * h_k, h + (mu - 1) * h, **EXACT)
 
 
 def test_kovalenko_e02_magnet():
-    per_kg = mt.magnet_torque_per_mass(1.4, 0.5e-4, 7.5e3)
+    per_kg = hardware.magnet_torque_per_mass(1.4, 0.5e-4, 7.5e3)
     # 7.43·10⁻³ N·m/kg (the audit's three digits): half a unit of the last one
     assert_allclose(per_kg, 7.43e-3, atol=0.005e-3)
     assert_allclose(per_kg, 1.4 * 0.5e-4 / (MU_0 * 7.5e3), **EXACT)
     # "m [кг] ≈ 135 M [Н·м]" (Kovalenko p. 30): half a unit of the last digit
-    assert_allclose(mt.magnet_mass_for_torque(1.0, 1.4, 0.5e-4, 7.5e3), 135.0, atol=0.5)
+    assert_allclose(hardware.magnet_mass_for_torque(1.0, 1.4, 0.5e-4, 7.5e3), 135.0, atol=0.5)
     # "1.35 kg ... about 10⁻² N·m", "0.1 N·m needs 13.5 kg": printed one-digit torque
-    assert_allclose(mt.magnet_torque_per_mass(1.4, 0.5e-4, 7.5e3) * 1.35, 1e-2, atol=0.05e-2)
+    assert_allclose(hardware.magnet_torque_per_mass(1.4, 0.5e-4, 7.5e3) * 1.35, 1e-2, atol=0.05e-2)
 
 
 # --- Printed values that do not reproduce (strict xfail: the assertion is the printed
@@ -395,41 +395,41 @@ def test_kovalenko_e02_magnet():
                    "12 V with 0.2 mm wire gives 0.539 (0.42 mixes the square-turn resistance "
                    "with the round-turn area)")
 def test_thesis_built_coil_moment_printed():
-    m = mt.moment_from_voltage(U, SIDE, mt.wire_area(D_BUILT), RHO)
+    m = hardware.moment_from_voltage(U, SIDE, hardware.wire_area(D_BUILT), RHO)
     assert_allclose(m, 0.42, atol=0.005)     # half a unit of the last printed digit
 
 
 @pytest.mark.xfail(strict=True, reason="thesis seed line 431 prints S_r = 2.34·10⁻⁸ m²; eq. (21) "
                    "gives 4ρm/(Ul) = 2.333·10⁻⁸ m² (rounded up; the printed d = 0.172 mm follows from 2.333, not from 2.34, which gives 0.1726 mm)")
 def test_thesis_wire_area_printed():
-    s_r = mt.wire_area_for_moment(M_REQ, U, SIDE, RHO)
+    s_r = hardware.wire_area_for_moment(M_REQ, U, SIDE, RHO)
     assert_allclose(s_r, 2.34e-8, atol=0.005e-8)     # half a unit of the last printed digit
 
 
 @pytest.mark.xfail(strict=True, reason="thesis seed line 516 prints I₁ = 0.24 A for "
                    "m₁ = 0.4 A·m²; eq. (17) for the square coil of N = 240 gives 0.167 A")
 def test_thesis_current_for_moment_printed():
-    i = mt.current_for_moment(M_REQ, N_BUILT, mt.turn_area(SIDE, "square"))
+    i = hardware.current_for_moment(M_REQ, N_BUILT, hardware.turn_area(SIDE, "square"))
     assert_allclose(i, 0.24, atol=0.005)     # half a unit of the last printed digit
 
 
 @pytest.mark.xfail(strict=True, reason="thesis seed line 434 prints a single-layer winding "
                    "length L ≈ 0.1 m; N = L/√S_r (seed line 352) gives 240·√(2.34e-8) = 0.037 m")
 def test_thesis_winding_length_printed():
-    assert_allclose(mt.winding_length(N_BUILT, 2.34e-8), 0.1, atol=0.05)   # half a unit
+    assert_allclose(hardware.winding_length(N_BUILT, 2.34e-8), 0.1, atol=0.05)   # half a unit
 
 
 @pytest.mark.xfail(strict=True, reason="the built coil (0.2 mm wire, N = 240, 53.5 Ω at 12 V) "
                    "dissipates 2.69 W, above the thesis's own W <= 2 W limit (seed line 410)")
 def test_thesis_built_coil_meets_power_limit():
-    r = mt.coil_resistance(N_BUILT, SIDE, mt.wire_area(D_BUILT), RHO, "square")
-    assert mt.joule_power(U, r) <= W_MAX
+    r = hardware.coil_resistance(N_BUILT, SIDE, hardware.wire_area(D_BUILT), RHO, "square")
+    assert hardware.joule_power(U, r) <= W_MAX
 
 
 @pytest.mark.xfail(strict=True, reason="Kovalenko p. 30 prints ≈ 0.75·10⁻² N·m/kg; eq. (1.7) "
                    "gives 0.743·10⁻² (rounded up, 0.9 %)")
 def test_kovalenko_e02_printed_torque_per_mass():
-    per_kg = mt.magnet_torque_per_mass(1.4, 0.5e-4, 7.5e3)
+    per_kg = hardware.magnet_torque_per_mass(1.4, 0.5e-4, 7.5e3)
     assert_allclose(per_kg, 0.75e-2, atol=0.005e-2)   # half a unit of the last printed digit
 
 
@@ -448,9 +448,9 @@ def test_one_winding_api_for_simulator_coils_and_magnetorquers():
 
     rho, gamma, d = 0.0175e-6, 8.9e3, 0.2e-3
     square = Turn.square(0.1)
-    assert_allclose(winding_resistance(square, 240, d, rho), coil_resistance(240, 0.1, mt.wire_area(d), rho, "square"),
+    assert_allclose(winding_resistance(square, 240, d, rho), coil_resistance(240, 0.1, hardware.wire_area(d), rho, "square"),
                     rtol=1e-15)   # same formula, same operations
-    assert_allclose(winding_mass(square, 240, d, gamma), coil_mass(240, 0.1, mt.wire_area(d), gamma, "square"),
+    assert_allclose(winding_mass(square, 240, d, gamma), coil_mass(240, 0.1, hardware.wire_area(d), gamma, "square"),
                     rtol=1e-15)
     assert_allclose(square.area, 0.01, rtol=1e-15)
     # The simulator coil: a radius is a round turn, so both spellings agree.

@@ -5,7 +5,7 @@ import pytest
 from numpy.testing import assert_allclose
 from scipy import stats
 
-from magbench import sensors
+from magbench.hardware import sensors
 
 # Two-sided probability of a false failure for each statistical check; the seeds are
 # fixed, so a check either always passes or always fails, but the bound says how

@@ -7,12 +7,7 @@ missing; the analytic tests of the same functions live in tests/fields/test_coil
 import numpy as np
 import pytest
 
-from magbench.coils import (
-    helmholtz_b,
-    loop_b,
-    loop_b_posed,
-    square_loop_b,
-)
+from magbench.fields import helmholtz_b, loop_b, loop_b_posed, square_loop_b
 from tests.support import near_axis_points as _near_axis_points
 from tests.support import near_wire_points as _near_wire_points
 from tests.support import relative_to_norm as _relative_to_norm

@@ -1,4 +1,4 @@
-"""The bench simulation (magbench.bench): oracle, closed forms, seeds, bad input."""
+"""The bench simulation (magbench.sim.bench): oracle, closed forms, seeds, bad input."""
 
 from dataclasses import replace
 
@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from magbench import bench, magnetorquer
+from magbench.sim import bench
+from magbench import hardware
 from magbench.params import chapter_parameters
 
 P = chapter_parameters("ch04", overrides="")
@@ -140,10 +141,10 @@ def test_bench_trace_envelope_contains_its_nominal_run(figure_id):
 def test_full_scale_moment_from_measured_resistance():
     # m = N (U/R) l^2; with R = N r (no extra resistance) it must equal eq. (20).
     assert_allclose(bench.coil_full_scale_moment(12.0, 55.0, 240, 0.1), 240 * 12.0 / 55.0 * 0.01, rtol=1e-15)
-    s = magnetorquer.wire_area(0.2e-3)
-    r = magnetorquer.coil_resistance(240, 0.1, s, 0.0175e-6, "square")
+    s = hardware.wire_area(0.2e-3)
+    r = hardware.coil_resistance(240, 0.1, s, 0.0175e-6, "square")
     assert_allclose(bench.coil_full_scale_moment(12.0, r, 240, 0.1),
-                    magnetorquer.moment_from_voltage(12.0, 0.1, s, 0.0175e-6), rtol=1e-13)
+                    hardware.moment_from_voltage(12.0, 0.1, s, 0.0175e-6), rtol=1e-13)
 
 
 def test_horizontal_field_adds_the_background_as_a_vector():

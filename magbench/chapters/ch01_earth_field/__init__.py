@@ -8,7 +8,9 @@ import itertools
 
 import numpy as np
 
-from ... import attitude, geomag, igrf
+from ...earth import igrf
+from ... import dynamics
+from ... import earth
 from ...compare import make_row
 from ...constants import EARTH_POLAR_MOMENT_OF_INERTIA, EARTH_RADIUS, EARTH_ROTATION_RATE, MU_0
 from ...io import load_parameter_set, load_printed
@@ -85,11 +87,11 @@ def geomagnetic_rows(params=None, *, epochs=None):
     f = igrf.igrf_field(lat, lon, year)
 
     def lab_elements(moment, pole_lat, pole_lon):
-        phi = geomag.geomagnetic_latitude(lat, lon, pole_lat, pole_lon)
-        return np.array([geomag.dipole_total_b(phi, moment, p["earth_radius"]),
-                         geomag.dipole_horizontal_b(phi, moment, p["earth_radius"]),
-                         geomag.dipole_vertical_b(phi, moment, p["earth_radius"]),
-                         geomag.dipole_inclination(phi)])
+        phi = earth.geomagnetic_latitude(lat, lon, pole_lat, pole_lon)
+        return np.array([earth.dipole_total_b(phi, moment, p["earth_radius"]),
+                         earth.dipole_horizontal_b(phi, moment, p["earth_radius"]),
+                         earth.dipole_vertical_b(phi, moment, p["earth_radius"]),
+                         earth.dipole_inclination(phi)])
 
     model = lab_elements(m, plat, plon)
     spread = [_printed_digit_spread(lambda *v, k=k: lab_elements(*v)[k], (m, plat, plon),
@@ -107,8 +109,8 @@ def geomagnetic_rows(params=None, *, epochs=None):
     ]
     # The equatorial dipole field the thesis prints (0.31 Oe) against the real dipole.
     d = igrf.igrf_dipole(year)
-    b0_igrf = geomag.dipole_equatorial_b(d.moment, EARTH_RADIUS)
-    b0_model = geomag.dipole_equatorial_b(m, p["earth_radius"])
+    b0_igrf = earth.dipole_equatorial_b(d.moment, EARTH_RADIUS)
+    b0_model = earth.dipole_equatorial_b(m, p["earth_radius"])
     rows.append(make_row("equatorial-dipole-field", f"Dipole field on the equator, {year:.0f}",
                          src, b0_igrf, b0_model, b0_model * half_m / m, unit="uT", scale=1e-6))
     return rows
@@ -122,19 +124,19 @@ def geomagnetic_checks():
     printed, kov = load_printed("thesis"), load_printed("kovalenko")
     m, r = p["earth_dipole_moment"], p["earth_radius"]
     lat, lon = p["laboratory_latitude"], p["laboratory_longitude"]
-    phi = geomag.geomagnetic_latitude(lat, lon, p["geomagnetic_pole_latitude"],
+    phi = earth.geomagnetic_latitude(lat, lon, p["geomagnetic_pole_latitude"],
                                       p["geomagnetic_pole_longitude"])
     printed_j = float(np.arctan(-2.0 * np.tan(phi)))     # thesis eq. (3) as printed
-    pole_h = float(tesla_to_oersted(geomag.dipole_total_b(np.pi / 2, m, r)))
+    pole_h = float(tesla_to_oersted(earth.dipole_total_b(np.pi / 2, m, r)))
 
     g10, g11, h11 = (kov[k].value for k in ("kov-g10-1965", "kov-g11-1965", "kov-h11-1965"))
     b0_1965 = float(np.sqrt(g10**2 + g11**2 + h11**2))
-    mean_dipole = float(tesla_to_oersted(geomag.dipole_mean_surface_b(b0_1965)))
+    mean_dipole = float(tesla_to_oersted(earth.dipole_mean_surface_b(b0_1965)))
 
     jc, wc = p["mockup_inertia"], p["mockup_initial_rate"]
-    exact = abs(float(attitude.momentum_exchange_energy_ratio(
+    exact = abs(float(dynamics.momentum_exchange_energy_ratio(
         jc, wc, -wc, EARTH_POLAR_MOMENT_OF_INERTIA, EARTH_ROTATION_RATE)))
-    thesis_ratio = float(attitude.thesis_energy_ratio(jc, EARTH_POLAR_MOMENT_OF_INERTIA))
+    thesis_ratio = float(dynamics.thesis_energy_ratio(jc, EARTH_POLAR_MOMENT_OF_INERTIA))
 
     moment_l, field_h = p["mtq_moment"], p["sim_design_h"]      # thesis design values (§2.1 and §3.2)
     inclination_igrf = float(np.degrees(igrf.igrf_field(lat, lon, p["thesis_epoch"]).inclination))
@@ -148,23 +150,23 @@ def geomagnetic_checks():
             location="§1.1, eqs. (1), (3) (from Kovalenko eq. 2.3)",
             quantity="Inclination J at the laboratory (St Petersburg) from eq. (3)",
             printed=float(np.degrees(printed_j)),
-            computed=float(np.degrees(geomag.dipole_inclination(phi))),
+            computed=float(np.degrees(earth.dipole_inclination(phi))),
             tolerance=0.05, unit="deg",
             explanation=("Printed tan J = −2 tan Φ (and Z = −2M cos θ_M/R³) makes the field point "
                          "upwards in the northern hemisphere, against the thesis's own axes "
                          "(z down, J > 0 in the north). The magnitudes are right; the sign is not. "
                          f"IGRF gives {inclination_igrf:+.1f}° at the laboratory."),
-            computation="magbench.geomag.dipole_inclination",
+            computation="magbench.earth.dipole_inclination",
         ),
         source_check(
             id="thesis-equator-field", chapter="ch01", source="thesis",
             location="§1.1, after eq. (3) (copied from Kovalenko p. 35)",
             quantity="Dipole field at the equator, M/R³",
             printed=printed["thesis-equator-field"].value_as_printed,
-            computed=float(tesla_to_oersted(geomag.dipole_equatorial_b(m, r))),
+            computed=float(tesla_to_oersted(earth.dipole_equatorial_b(m, r))),
             tolerance=printed["thesis-equator-field"].resolution, unit="Oe",
             explanation=f"M/R³ with M = {cgs_moment} CGS and R = {r / 1e3:.0f} km.",
-            computation="magbench.geomag.dipole_equatorial_b",
+            computation="magbench.earth.dipole_equatorial_b",
         ),
         source_check(
             id="thesis-pole-field-rounding", chapter="ch01", source="thesis",
@@ -175,20 +177,20 @@ def geomagnetic_checks():
             explanation=(f"2M/R³ with M = {cgs_moment} CGS and R = {r / 1e3:.0f} km is {pole_h:.4f} Oe, which "
                          f"rounds to {pole_h:.2f}; the printed {printed['thesis-pole-field'].value_as_printed:g} is "
                          f"twice the rounded equatorial {printed['thesis-equator-field'].value_as_printed:g}."),
-            computation="magbench.geomag.dipole_total_b",
+            computation="magbench.earth.dipole_total_b",
         ),
         source_check(
             id="thesis-eq5-cgs-torque", chapter="ch01", source="thesis",
             location="§1.2, eq. (5)",
             quantity=f"Torque on L = {moment_l:g} A·m² across H = {field_h:g} A/m from M = L × H",
             printed=moment_l * field_h,
-            computed=float(np.linalg.norm(geomag.magnetic_torque_from_h(
+            computed=float(np.linalg.norm(dynamics.magnetic_torque_from_h(
                 [moment_l, 0.0, 0.0], [0.0, field_h, 0.0]))),
             tolerance=0.0, unit="N m",
             explanation=("M = L × H holds only in CGS units, where B = H in vacuum. In SI the "
                          "torque is μ0 L × H; read literally with SI inputs, eq. (5) is off by "
                          f"a factor 1/μ0 ≈ {1e-5 / MU_0:.0f}·10⁵."),
-            computation="magbench.geomag.magnetic_torque_from_h",
+            computation="magbench.dynamics.magnetic_torque_from_h",
         ),
         source_check(
             id="thesis-eq12a-energy-ratio", chapter="ch01", source="thesis",
@@ -199,7 +201,7 @@ def geomagnetic_checks():
                          "(Δω)². Because the Earth already rotates, ΔT_E ≈ ω_E ΔK_E, and the exact "
                          "ratio is ≈ ω_E/ω̄_c: some 37 orders of magnitude larger than J_c/J_E, yet "
                          "still ≪ 1, so the conclusion (the Earth takes momentum, not energy) holds."),
-            computation="magbench.attitude.momentum_exchange_energy_ratio",
+            computation="magbench.dynamics.momentum_exchange_energy_ratio",
         ),
         source_check(
             id="kovalenko-mean-dipole-field", chapter="ch01", source="kovalenko",
@@ -210,7 +212,7 @@ def geomagnetic_checks():
             explanation=("The closed-form surface mean of the dipole field with Table 1's g10, g11, "
                          f"h11 ({', '.join(f'{g:.0f}'.replace('-', '−') for g in b0_printed)} γ) is {mean_dipole:.4f} Oe; the book "
                          f"prints {kov['kov-mean-field-dipole'].value_as_printed:g}."),
-            computation="magbench.geomag.dipole_mean_surface_b",
+            computation="magbench.earth.dipole_mean_surface_b",
         ),
     ]
 
@@ -222,7 +224,7 @@ def kovalenko_field_checks():
     1965 model is the same field re-fitted (its dipole differs by 0.02 %), so the
     printed-digit tolerance applies.
     """
-    from ... import igrf
+    from ...earth import igrf
     from ...constants import IGRF_REFERENCE_RADIUS
 
     kov = load_printed("kovalenko")
@@ -231,7 +233,7 @@ def kovalenko_field_checks():
     checks = []
     radii = {"R": r_e, "R1000": r_e + 1.0e6, "R2000": r_e + 2.0e6, "1.5R": 1.5 * r_e}
     for tag, radius in radii.items():
-        spectrum = geomag.lowes_spectrum(g, h, IGRF_REFERENCE_RADIUS / radius)
+        spectrum = earth.lowes_spectrum(g, h, IGRF_REFERENCE_RADIUS / radius)
         for kind, value in (("field", np.sqrt(spectrum.sum())), ("dipole", np.sqrt(spectrum[0]))):
             row = kov[f"kov-rms-{kind}-{tag}"]
             checks.append(source_check(
@@ -244,7 +246,7 @@ def kovalenko_field_checks():
                              "R = 6371 km. Where the printed value is lower (R + 1000 km, 1.5R) the "
                              "table disagrees with itself too: its n = 1 entry at R + 1000 km (793.8) "
                              "is 0.6 % below the (R/r)⁶ scaling of its own entry at R (1915.3)."),
-                computation="magbench.geomag.lowes_spectrum"))
+                computation="magbench.earth.lowes_spectrum"))
     mean6 = float(tesla_to_oersted(igrf.igrf_mean_surface_b(1965.0, max_degree=6)))
     mean1 = float(tesla_to_oersted(igrf.igrf_mean_surface_b(1965.0, max_degree=1)))
     checks += [
@@ -254,16 +256,16 @@ def kovalenko_field_checks():
                     printed=float(ampere_per_meter_to_oersted(kov["kov-mean-field-n6"].value)), computed=mean6,
                     tolerance=kov["kov-mean-field-n6"].resolution,
                     unit="Oe", explanation="Gauss–Legendre surface mean of |B| of IGRF-14 1965.0.",
-                    computation="magbench.igrf.igrf_mean_surface_b"),
+                    computation="magbench.earth.igrf.igrf_mean_surface_b"),
         source_check(id="kovalenko-dipole-accuracy", chapter="ch01", source="kovalenko",
                     location="§2.2, p. 41",
                     quantity="Accuracy of the dipole approximation A₁ = T₁c/T_c",
                     printed=kov["kov-dipole-accuracy"].value * 100, computed=100 * mean1 / mean6,
                     tolerance=kov["kov-dipole-accuracy"].resolution, unit="%",
                     explanation="Ratio of the two surface means.",
-                    computation="magbench.igrf.igrf_mean_surface_b"),
+                    computation="magbench.earth.igrf.igrf_mean_surface_b"),
     ]
-    b = geomag.orbital_dipole_b(np.linspace(0, 2 * np.pi, 3601), np.pi / 2, 7371e3, 8.1e22)
+    b = earth.orbital_dipole_b(np.linspace(0, 2 * np.pi, 3601), np.pi / 2, 7371e3, 8.1e22)
     b2 = np.sum(b**2, axis=-1)
     checks.append(source_check(
         id="kovalenko-polar-orbit-b2-ratio", chapter="ch01", source="kovalenko",
@@ -271,7 +273,7 @@ def kovalenko_field_checks():
         printed=kov["kov-polar-orbit-b2-ratio"].value, computed=float(b2.max() / b2.min()),
         tolerance=kov["kov-polar-orbit-b2-ratio"].resolution, unit="1",
         explanation="Eq. (2.40) with i = 90°: |B|² ∝ 1 + 3 sin²u.",
-        computation="magbench.geomag.orbital_dipole_b"))
+        computation="magbench.earth.orbital_dipole_b"))
     return checks
 
 

@@ -2,7 +2,9 @@
 
 import numpy as np
 
-from ... import geomag, igrf
+from ...earth import igrf
+from ... import dynamics
+from ... import earth
 from ...constants import EARTH_GM, EARTH_ROTATION_RATE
 from ..._format import format_number
 from . import CHAPTER
@@ -38,10 +40,10 @@ def _ned_basis(latitude, longitude):
 
 def dipole_ned_b(latitude, longitude, moment, pole_latitude, pole_longitude, radius):
     """Thesis dipole field at a place on the sphere, as (north, east, down) [T]."""
-    m_vec = geomag.earth_dipole_moment_vector(moment, pole_latitude, pole_longitude)
+    m_vec = earth.earth_dipole_moment_vector(moment, pole_latitude, pole_longitude)
     clat = np.cos(latitude)
     point = radius * np.array([clat * np.cos(longitude), clat * np.sin(longitude), np.sin(latitude)])
-    return _ned_basis(latitude, longitude) @ geomag.dipole_b(point, m_vec)
+    return _ned_basis(latitude, longitude) @ earth.dipole_b(point, m_vec)
 
 
 # --- thesis Fig. 1: elements of the geomagnetic field ------------------------------------
@@ -179,10 +181,10 @@ def compute_elements(earth_dipole_moment, earth_radius):
     m, r = earth_dipole_moment, earth_radius
     cols = {
         "geomagnetic_latitude": ("deg", np.degrees(phi)),
-        "T": ("uT", geomag.dipole_total_b(phi, m, r) * 1e6),
-        "Z": ("uT", geomag.dipole_vertical_b(phi, m, r) * 1e6),
-        "H": ("uT", geomag.dipole_horizontal_b(phi, m, r) * 1e6),
-        "J": ("deg", np.degrees(geomag.dipole_inclination(phi))),
+        "T": ("uT", earth.dipole_total_b(phi, m, r) * 1e6),
+        "Z": ("uT", earth.dipole_vertical_b(phi, m, r) * 1e6),
+        "H": ("uT", earth.dipole_horizontal_b(phi, m, r) * 1e6),
+        "J": ("deg", np.degrees(earth.dipole_inclination(phi))),
     }
     return FigureData("ch01-field-elements", "Dipole field elements against geomagnetic latitude",
                       "Bui (2016) eqs. (1)–(3); Kovalenko (1975) eqs. (2.1)–(2.3)", {},
@@ -233,7 +235,7 @@ def compute_orbit_field(earth_dipole_moment, earth_radius, orbit_altitude, orbit
     u = n * t
     series = []
     for label, tilt in (("direct dipole", 0.0), ("inclined dipole", earth_dipole_tilt)):
-        b = geomag.orbital_dipole_b(u, orbit_inclination, r, earth_dipole_moment, tilt=tilt,
+        b = earth.orbital_dipole_b(u, orbit_inclination, r, earth_dipole_moment, tilt=tilt,
                                     node_phase=-EARTH_ROTATION_RATE * t)
         series.append(Series(label, {
             "time": ("min", t / 60), "B_x": ("uT", b[:, 0] * 1e6), "B_y": ("uT", b[:, 1] * 1e6),
@@ -284,9 +286,9 @@ def compute_torque_plane(field_elevation, samples):
     moments = rng.normal(size=(count, 3))
     moments /= np.linalg.norm(moments, axis=1, keepdims=True)
     b = np.array([np.cos(field_elevation), 0.0, np.sin(field_elevation)])
-    torques = geomag.magnetic_torque(moments, b)
+    torques = dynamics.magnetic_torque(moments, b)
     along = torques @ b
-    perp = np.linalg.norm(geomag.perpendicular_moment(moments, b), axis=1)
+    perp = np.linalg.norm(dynamics.perpendicular_moment(moments, b), axis=1)
     return FigureData("ch01-torque-plane", "Magnetic torques are confined to the plane normal to B",
                       "Bui (2016) eqs. (4)–(8)", {}, [Series("random unit moments", {
                           "M_x": ("N m", torques[:, 0]), "M_y": ("N m", torques[:, 1]),

@@ -6,6 +6,7 @@ COMSOL, built and measured, beside the exact field of thin loops.
 
 import numpy as np
 
+from ... import dynamics, fields, hardware
 from ..._validate import as_finite, as_positive
 from ...compare import make_row
 from ...io import load_measurements, load_parameter_set, load_printed
@@ -73,11 +74,10 @@ def simulator_center_h_tolerance(current, turns, radius, spacing_range=(0.50, 0.
     (0.50–0.52 m, thesis §2.4) and the current is printed to 0.1 A (±0.05 A). The
     largest |ΔH| over the corners of that box, from its middle, is the tolerance.
     """
-    from ... import coils
 
     d_mid = 0.5 * (spacing_range[0] + spacing_range[1])
-    base = float(coils.helmholtz_center_h(current, turns, radius, d_mid))
-    return max(abs(float(coils.helmholtz_center_h(current + di, turns, radius, d)) - base)
+    base = float(fields.helmholtz_center_h(current, turns, radius, d_mid))
+    return max(abs(float(fields.helmholtz_center_h(current + di, turns, radius, d)) - base)
                for di in (-current_half_digit, current_half_digit) for d in spacing_range)
 
 
@@ -89,14 +89,13 @@ ZONE_TOLERANCE = 0.01
 
 def simulator_rows(params=None):
     """Chapter 2: the field simulator as measured and as COMSOL-modelled, beside the
-    exact thin-loop model (:mod:`magbench.coils`).
+    exact thin-loop model (:mod:`magbench.fields`).
 
     Parameters
     ----------
     params : dict, optional
         Chapter-2 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
     """
-    from ... import coils
     from ...io import load_measurements
 
     p = params or chapter_parameters("ch02")
@@ -105,13 +104,13 @@ def simulator_rows(params=None):
     a, d_built, d_comsol = p["sim_built_radius"], p["sim_built_spacing"], p["sim_comsol_spacing"]
     src = "thesis §2.4 (measured)"
     centre = m["sim-center-h"]
-    h_built = float(coils.helmholtz_center_h(i, n, a, d_built))
-    h_comsol = float(coils.helmholtz_center_h(i, n, a, d_comsol))
+    h_built = float(fields.helmholtz_center_h(i, n, a, d_built))
+    h_comsol = float(fields.helmholtz_center_h(i, n, a, d_comsol))
     tol_built = simulator_center_h_tolerance(i, n, a)
-    tol_comsol = max(abs(float(coils.helmholtz_center_h(i + s * 0.05, n, a, d_comsol)) - h_comsol)
+    tol_comsol = max(abs(float(fields.helmholtz_center_h(i + s * 0.05, n, a, d_comsol)) - h_comsol)
                      for s in (-1, 1))
     res = m["sim-coil-resistance"]
-    r_model = float(coils.winding_resistance(a, n, p["sim_wire_diameter"], p["copper_resistivity"]))
+    r_model = float(hardware.winding_resistance(a, n, p["sim_wire_diameter"], p["copper_resistivity"]))
     r_tol = 0.5 * (res.value_high - res.value_low) + res.uncertainty     # range plus the stated ±1 Ω
     rows = [
         make_row("sim-center-h", "Field at the centre of the built simulator, 2.3 A per coil", src,
@@ -127,7 +126,7 @@ def simulator_rows(params=None):
     ]
     for key, direction, fig in (("comsol-uniform-transverse", "transverse", 6), ("comsol-uniform-axial", "axial", 7)):
         row = m[key]
-        length = coils.uniform_zone_length(a, d_comsol, ZONE_TOLERANCE, direction)
+        length = fields.uniform_zone_length(a, d_comsol, ZONE_TOLERANCE, direction)
         rows.append(make_row(
             key, f"Uniform zone {'across the axis' if direction == 'transverse' else 'on the axis'} "
                  f"(Fig. {fig}), within {100 * ZONE_TOLERANCE:g} %", "thesis §2.3 (COMSOL, read off)",
@@ -139,7 +138,6 @@ def simulator_rows(params=None):
 def simulator_checks():
     """Thesis §2.2 (the Helmholtz field simulator): printed design numbers that do not
     follow from eq. (16) and the winding formulas, on the thesis's own parameter set."""
-    from ... import coils
 
     p = load_parameter_set("thesis")
     printed = load_printed("thesis")
@@ -147,14 +145,14 @@ def simulator_checks():
     n, i = p["sim_turns"].value_si, p["sim_current"].value_si
     dw, rho = p["sim_wire_diameter"].value_si, p["copper_resistivity"].value_si
     h = p["sim_design_h"].value_si
-    ni = float(coils.helmholtz_ampere_turns(h, a, ratio * a))
+    ni = float(fields.helmholtz_ampere_turns(h, a, ratio * a))
     ni_slip = float(thesis_printed_ampere_turns(h, a, ratio))
-    resistance = float(coils.winding_resistance(a, n, dw, rho))
-    power = float(coils.winding_power(a, n, dw, rho, i))
+    resistance = float(hardware.winding_resistance(a, n, dw, rho))
+    power = float(hardware.winding_power(a, n, dw, rho, i))
     # The turns the printed resistance implies (R is proportional to N): the thesis's R and P
     # were computed for this N, not for the 110 turns it states.
     n_printed = round(printed["thesis-sim-coil-resistance"].value_as_printed / resistance * n)
-    r_printed_n = float(coils.winding_resistance(a, n_printed, dw, rho))
+    r_printed_n = float(hardware.winding_resistance(a, n_printed, dw, rho))
     i_printed_n = printed["thesis-sim-ampere-turns"].value_as_printed / n_printed
     return [
         printed_check(
@@ -162,29 +160,28 @@ def simulator_checks():
             location="§2.2, eq. (16)", quantity=f"Ampere-turns per coil for {h:g} A/m (a = {a:g} m, d/a = {ratio:g})",
             computed=ni, unit="A",
             explanation=(f"Eq. (16) gives {ni:.1f} A·turns; the printed {ni_slip:.0f} is reproduced exactly by "
-                         "evaluating (d/2a)² as (d/a)²/2 (magbench.coils.thesis_printed_ampere_turns)."),
-            computation="magbench.coils.helmholtz_ampere_turns"),
+                         "evaluating (d/2a)² as (d/a)²/2 (magbench.chapters.ch02_field_simulator.thesis_printed_ampere_turns)."),
+            computation="magbench.fields.helmholtz_ampere_turns"),
         printed_check(
             printed["thesis-sim-coil-resistance"], id="thesis-sim-coil-resistance", chapter="ch02",
             location="§2.2", quantity=f"Resistance of a simulator coil, N = {n:.0f}, {dw * 1e3:g} mm copper",
             computed=resistance, unit="ohm",
             explanation=(f"R = 2πaρN/S0 gives {resistance:.2f} Ω; {r_printed_n:.1f} Ω is the value for "
                          f"N = {n_printed:.0f}."),
-            computation="magbench.coils.winding_resistance"),
+            computation="magbench.hardware.winding_resistance"),
         printed_check(
             printed["thesis-sim-coil-power"], id="thesis-sim-coil-power", chapter="ch02",
             location="§2.2", quantity=f"Power of a simulator coil, N = {n:.0f}, I = {i:g} A",
             computed=power, unit="W",
             explanation=(f"P = UI gives {power:.1f} W; {r_printed_n * i_printed_n ** 2:.0f} W fits N = "
                          f"{n_printed:.0f} and I = {i_printed_n:.2f} A (NI = {n_printed * i_printed_n:.0f})."),
-            computation="magbench.coils.winding_power"),
+            computation="magbench.hardware.winding_power"),
     ]
 
 
 def simulator_field_checks():
     """Thesis §2.1–2.4 beyond the coil design (eq. 15, the centre-field deviation, the
     electrics at the current limit) and Kovalenko's uniform-field coil systems (§3.4)."""
-    from ... import coils
 
     p = load_parameter_set("thesis")
     m = load_measurements("thesis")
@@ -193,25 +190,25 @@ def simulator_field_checks():
                                     "oscillation_amplitude", "sim_built_radius", "sim_built_spacing",
                                     "sim_turns", "sim_current", "sim_wire_diameter", "copper_resistivity",
                                     "sim_design_h")}
-    h_printed_eq = float(coils.oscillation_field_h(v["mockup_inertia"], v["mockup_magnet_moment"],
+    h_printed_eq = float(dynamics.oscillation_field_h(v["mockup_inertia"], v["mockup_magnet_moment"],
                                                    v["oscillation_period"]))
-    h_with_a = float(coils.oscillation_field_h(v["mockup_inertia"], v["mockup_magnet_moment"],
+    h_with_a = float(dynamics.oscillation_field_h(v["mockup_inertia"], v["mockup_magnet_moment"],
                                                v["oscillation_period"], v["oscillation_amplitude"]))
     a, d, n, i = v["sim_built_radius"], v["sim_built_spacing"], v["sim_turns"], v["sim_current"]
-    h_built = float(coils.helmholtz_center_h(i, n, a, d))
+    h_built = float(fields.helmholtz_center_h(i, n, a, d))
     measured = m["sim-center-h"].value
     r_max, i_max = printed["sim-coil-resistance-max"].value, printed["sim-current-max"].value
-    voltage = float(coils.winding_voltage(a, n, v["sim_wire_diameter"], v["copper_resistivity"], i))
-    resistance = float(coils.winding_resistance(a, n, v["sim_wire_diameter"], v["copper_resistivity"]))
+    voltage = float(hardware.winding_voltage(a, n, v["sim_wire_diameter"], v["copper_resistivity"], i))
+    resistance = float(hardware.winding_resistance(a, n, v["sim_wire_diameter"], v["copper_resistivity"]))
     ni_printed = printed["thesis-sim-ampere-turns"].value_as_printed
     n_printed_r = round(printed["thesis-sim-coil-resistance"].value_as_printed / resistance * n)
     round2, helm = ["round"] * 2, ([1.0, 1.0], [-0.5, 0.5], [1.0, 1.0])
     four = (["round"] * 4, [1.0] * 4, [-1.0, -0.25, 0.25, 1.0], [7.0, 3.0, 3.0, 7.0])
-    four_dev = coils.coaxial_system_sphere_nonuniformity(*four, 2.0 / 3.0)
-    half_radius_dev = coils.coaxial_system_sphere_nonuniformity(*four, 0.5)
-    helmholtz_radius = (2.0 / 3.0) / coils.uniform_sphere_radius(1.0, 1.0, four_dev)
+    four_dev = fields.coaxial_system_sphere_nonuniformity(*four, 2.0 / 3.0)
+    half_radius_dev = fields.coaxial_system_sphere_nonuniformity(*four, 0.5)
+    helmholtz_radius = (2.0 / 3.0) / fields.uniform_sphere_radius(1.0, 1.0, four_dev)
     rubens = (["square"] * 5, [1.0] * 5, [-0.5, -0.25, 0.0, 0.25, 0.5], [19.0, 4.0, 10.0, 4.0, 19.0])
-    rubens_dev = 100 * coils.coaxial_system_cylinder_nonuniformity(*rubens, 0.25, 0.5)
+    rubens_dev = 100 * fields.coaxial_system_cylinder_nonuniformity(*rubens, 0.25, 0.5)
     design_h = v["sim_design_h"]
     deviation_printed = printed["sim-center-h-deviation"]
     return [
@@ -223,13 +220,13 @@ def simulator_field_checks():
                          f"A·m², T = {v['oscillation_period']:g} s is {h_printed_eq:.1f} A/m. The printed ≈ 200 A/m "
                          f"needs the amplitude factor A = π that the thesis defines beside eq. (15) and eq. (15) drops "
                          f"({h_with_a:.1f} A/m), a factor with no place in a small-oscillation period."),
-            computation="magbench.coils.oscillation_field_h"),
+            computation="magbench.dynamics.oscillation_field_h"),
         printed_check(
             printed["thesis-eq15-field"], id="thesis-eq15-with-amplitude", chapter="ch02",
             location="§2.1, eq. (15) with A = π", quantity="Field for a 60 s swing, with the factor A = π",
             computed=h_with_a, unit="A/m",
             explanation=f"4π²JA/(μ0 m T²) = {h_with_a:.1f} A/m, which '≈ 200' rounds down (one printed digit).",
-            computation="magbench.coils.oscillation_field_h"),
+            computation="magbench.dynamics.oscillation_field_h"),
         printed_check(
             printed["thesis-sim-coil-voltage"], id="thesis-sim-coil-voltage", chapter="ch02",
             location="§2.2", quantity=f"Supply voltage of a simulator coil, N = {n:.0f}, I = {i:g} A",
@@ -237,7 +234,7 @@ def simulator_field_checks():
             explanation=(f"U = RI = {voltage:.2f} V, just outside the printed digit; U depends on NI only and "
                          f"NI = {ni_printed:.0f} (the slipped eq. 16) gives {voltage * ni_printed / (n * i):.1f} V, "
                          f"like R and P computed for N = {n_printed_r:.0f}."),
-            computation="magbench.coils.winding_voltage"),
+            computation="magbench.hardware.winding_voltage"),
         printed_check(
             printed["sim-coil-power-max"], id="thesis-sim-power-at-limit", chapter="ch02",
             location="§2.4", quantity=f"Power of one coil at {i_max:g} A and {r_max:g} Ω",
@@ -254,20 +251,20 @@ def simulator_field_checks():
                          f"with {n:.0f} turns, {i:g} A, a = {a:g} m, d = {d:g} m gives {h_built:.1f} A/m, "
                          f"and the measurement lies {100 * (1 - measured / h_built):.0f} % below it. The agreement rests on "
                          "the NI slip."),
-            computation="magbench.coils.helmholtz_center_h"),
+            computation="magbench.fields.helmholtz_center_h"),
         printed_check(
             kov["kov-helmholtz-cylinder-deviation"], id="kovalenko-helmholtz-cylinder", chapter="ch02",
             location="§3.4, p. 60",
             quantity="Helmholtz pair: largest deviation in a cylinder of radius 0.1r, length 0.2r",
-            computed=100 * coils.coaxial_system_cylinder_nonuniformity(round2, *helm, 0.1, 0.2), unit="%",
+            computed=100 * fields.coaxial_system_cylinder_nonuniformity(round2, *helm, 0.1, 0.2), unit="%",
             explanation="Exact loop fields on a grid of the solid cylinder.",
-            computation="magbench.coils.coaxial_system_cylinder_nonuniformity"),
+            computation="magbench.fields.coaxial_system_cylinder_nonuniformity"),
         printed_check(
             kov["kov-square-pair-spacing"], id="kovalenko-square-pair-spacing", chapter="ch02",
             location="§3.4, p. 60", quantity="Square Helmholtz pair: spacing / side",
-            computed=float(coils.square_pair_spacing(1.0)), unit="1",
+            computed=float(fields.square_pair_spacing(1.0)), unit="1",
             explanation="Zero curvature of the axial field at the centre.",
-            computation="magbench.coils.square_pair_spacing"),
+            computation="magbench.fields.square_pair_spacing"),
         printed_check(
             kov["kov-rubens-cylinder-deviation"], id="kovalenko-rubens-cylinder", chapter="ch02",
             location="§3.4, pp. 61–62",
@@ -275,7 +272,7 @@ def simulator_field_checks():
             computed=rubens_dev, unit="%",
             explanation=(f"Five squares at 0, ±a/4, ±a/2 with ampere-turns 10 : 4 : 19; {rubens_dev:.2f} % rounds "
                          "to 1 %."),
-            computation="magbench.coils.coaxial_system_cylinder_nonuniformity"),
+            computation="magbench.fields.coaxial_system_cylinder_nonuniformity"),
         printed_check(
             kov["kov-four-coil-sphere-deviation"], id="kovalenko-four-coil-sphere", chapter="ch02",
             location="§3.4, p. 61",
@@ -284,7 +281,7 @@ def simulator_field_checks():
             explanation=(f"Equal radii r, inner coils at ±0.25r, outer at ±r, ampere-turns 7 : 3 give "
                          f"{100 * four_dev:.2f} % in a sphere of radius 2r/3; within the printed digit of 0.5 % "
                          f"only to a radius of about r/2 ({100 * half_radius_dev:.2f} % there)."),
-            computation="magbench.coils.coaxial_system_sphere_nonuniformity"),
+            computation="magbench.fields.coaxial_system_sphere_nonuniformity"),
         printed_check(
             kov["kov-four-coil-helmholtz-size"], id="kovalenko-four-coil-helmholtz-size", chapter="ch02",
             location="§3.4, p. 61",
@@ -292,7 +289,7 @@ def simulator_field_checks():
             computed=helmholtz_radius, unit="1",
             explanation=("A Helmholtz pair reaches the four-coil system's computed deviation in the sphere "
                          f"of radius 2r/3 only with radius {helmholtz_radius:.1f}r: 'twice the size' holds."),
-            computation="magbench.coils.uniform_sphere_radius"),
+            computation="magbench.fields.uniform_sphere_radius"),
     ]
 
 

@@ -1,7 +1,7 @@
 """Figures of thesis chapter 2: the Helmholtz-coil simulator of the geomagnetic field.
 
 The thesis's Figs. 5–7 are COMSOL results and its Figs. 3 and 8 a sketch and a photo;
-here every one is computed from the exact loop field of :mod:`magbench.coils`, for the
+here every one is computed from the exact loop field of :mod:`magbench.fields`, for the
 three coil spacings the thesis mentions (design d/a = 1.116, COMSOL 0.5 m, as built
 ≈ 0.51 m). The chapter-only figures show how the "uniform zone" depends on the
 tolerance band, which explanations of the measured centre field survive, and a
@@ -10,7 +10,9 @@ three-axis simulator that cancels the laboratory's field.
 
 import numpy as np
 
-from ... import coils, igrf
+from ...earth import igrf
+from ... import fields
+from ... import hardware
 from ...chapters import ch02_field_simulator
 from ...constants import MU_0
 from ...io import load_measurements
@@ -65,7 +67,7 @@ def geometries(coil_radius, design_spacing_ratio, comsol_spacing, built_spacing)
 
 
 def _h_line(points, radius, separation, current, turns):
-    return np.linalg.norm(coils.helmholtz_b(points, radius, separation, current, turns), axis=-1) / MU_0
+    return np.linalg.norm(fields.helmholtz_b(points, radius, separation, current, turns), axis=-1) / MU_0
 
 
 # --- thesis Fig. 5: field lines -----------------------------------------------------------
@@ -81,13 +83,13 @@ def compute_fig05(turns, current, coil_radius, design_spacing_ratio, comsol_spac
     pts = np.stack([xx, 0 * xx, zz], axis=-1)
     series = []
     for label, d in geometries(a, design_spacing_ratio, comsol_spacing, built_spacing):
-        h = coils.helmholtz_b(pts, a, d, current, turns) / MU_0
-        h0 = float(coils.helmholtz_center_h(current, turns, a, d))
+        h = fields.helmholtz_b(pts, a, d, current, turns) / MU_0
+        h0 = float(fields.helmholtz_center_h(current, turns, a, d))
         series.append(Series(label, {
             "x": ("m", xx), "z": ("m", zz), "H_x": ("A/m", h[..., 0]), "H_z": ("A/m", h[..., 2]),
             "|H|": ("A/m", np.linalg.norm(h, axis=-1)),
             "separation": ("m", [d]), "H_centre": ("A/m", [h0]),
-            "uniform_sphere_radius": ("m", [coils.uniform_sphere_radius(a, d, tolerance)]),
+            "uniform_sphere_radius": ("m", [fields.uniform_sphere_radius(a, d, tolerance)]),
         }))
     return FigureData("thesis-fig05", "", "", {}, series, extra={"shape": xx.shape, "radius": a,
                                                                  "tolerance": tolerance})
@@ -135,11 +137,11 @@ def _compute_line(figure_id, direction, turns, current, coil_radius, design_spac
     for label, d in geometries(a, design_spacing_ratio, comsol_spacing, built_spacing):
         pts = np.zeros((s.size, 3))
         pts[:, 2 if direction == "axial" else 0] = s
-        length = coils.uniform_zone_length(a, d, tolerance, direction)
+        length = fields.uniform_zone_length(a, d, tolerance, direction)
         series.append(Series(label, {
             "position": ("m", s), "|H|": ("A/m", _h_line(pts, a, d, current, turns)),
             "separation": ("m", [d]), "zone_length": ("m", [length]),
-            "H_centre": ("A/m", [float(coils.helmholtz_center_h(current, turns, a, d))]),
+            "H_centre": ("A/m", [float(fields.helmholtz_center_h(current, turns, a, d))]),
         }))
     m = _measured()
     return FigureData(figure_id, "", "", {}, series, extra={
@@ -210,7 +212,7 @@ def compute_zone_criterion(coil_radius, design_spacing_ratio, comsol_spacing, bu
     for label, d in geometries(a, design_spacing_ratio, comsol_spacing, built_spacing):
         cols = {"tolerance": ("1", tol)}
         for direction, reading in readings.items():
-            lengths = np.array([coils.uniform_zone_length(a, d, t, direction) for t in tol])
+            lengths = np.array([fields.uniform_zone_length(a, d, t, direction) for t in tol])
             cols[f"{direction}_length"] = ("m", lengths)
             # The smallest band whose zone reaches the reading (zones grow with δ, with jumps).
             j = int(np.argmax(lengths >= reading)) if np.any(lengths >= reading) else None
@@ -218,7 +220,7 @@ def compute_zone_criterion(coil_radius, design_spacing_ratio, comsol_spacing, bu
                 matches[(label, direction)] = float("nan")
             else:
                 matches[(label, direction)] = float(optimize.brentq(
-                    lambda t: coils.uniform_zone_length(a, d, t, direction) - reading, tol[j - 1], tol[j],
+                    lambda t: fields.uniform_zone_length(a, d, t, direction) - reading, tol[j - 1], tol[j],
                     xtol=1e-9))
             cols[f"{direction}_matching_tolerance"] = ("1", [matches[(label, direction)]])
         series.append(Series(label, cols))
@@ -260,8 +262,8 @@ def compute_fig08(coil_radius, built_spacing, tolerance, cube_side):
     series = [Series(f"coil at x = {sx * d / 2 * 100:+.1f} cm", {
         "x": ("m", np.full_like(t, sx * d / 2)), "y": ("m", a * np.cos(t)), "z": ("m", a * np.sin(t))})
         for sx in (-1.0, 1.0)]
-    r_u = coils.uniform_sphere_radius(a, d, tolerance)
-    worst = coils.sphere_nonuniformity(a, d, np.sqrt(3) * cube_side / 2)
+    r_u = fields.uniform_sphere_radius(a, d, tolerance)
+    worst = fields.sphere_nonuniformity(a, d, np.sqrt(3) * cube_side / 2)
     series.append(Series("uniform sphere", {"radius": ("m", [r_u]),
                                             "cube_circumsphere_nonuniformity": ("1", [worst])}))
     return FigureData("thesis-fig08", "", "", {}, series,
@@ -323,7 +325,7 @@ def coil_systems():
     Returns ``[(name, shapes, sizes, positions, relative ampere-turns)]``; circles have
     radius 1 (the largest), squares side 1.
     """
-    half_sq = float(coils.square_pair_spacing(1.0)) / 2
+    half_sq = float(fields.square_pair_spacing(1.0)) / 2
     r1 = np.sqrt(4 / 7)
     return [
         ("Helmholtz pair, d = a", ["round"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0]),
@@ -361,8 +363,8 @@ def compute_fig03(tolerance, center_h, power, winding_area, copper_resistivity):
     series = []
     for name, shapes, sizes, positions, weights in coil_systems():
         w = np.asarray(weights) / max(weights)
-        h0 = float(np.linalg.norm(coils.coaxial_system_b(np.zeros(3), shapes, sizes, positions, w))) / MU_0
-        s_unit = coils.coaxial_system_uniform_radius(shapes, sizes, positions, w, tolerance)
+        h0 = float(np.linalg.norm(fields.coaxial_system_b(np.zeros(3), shapes, sizes, positions, w))) / MU_0
+        s_unit = fields.coaxial_system_uniform_radius(shapes, sizes, positions, w, tolerance)
         c = float(np.sum(w**2 * _turn_lengths(shapes, sizes)))
         scale = (power * winding_area * h0**2 / (copper_resistivity * center_h**2 * c)) ** (1 / 3)
         series.append(Series(name, {
@@ -423,7 +425,7 @@ def plot_fig03(data):
 def _thesis_design_power(p):
     """Power of the thesis's design pair at 250 A/m with eq. (16)'s ampere-turns [W]."""
     a = p["sim_coil_radius"]
-    ni = float(coils.helmholtz_ampere_turns(p["sim_design_h"], a, p["sim_spacing_ratio"] * a))
+    ni = float(fields.helmholtz_ampere_turns(p["sim_design_h"], a, p["sim_spacing_ratio"] * a))
     area = p["sim_turns"] * np.pi * p["sim_wire_diameter"] ** 2 / 4
     return 2 * p["copper_resistivity"] * 2 * np.pi * a * ni**2 / area
 
@@ -457,12 +459,12 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
     ``tolerance_h`` or the constraint falls outside its allowed range.
     """
     a, d, n, i = coil_radius, built_spacing, turns, current
-    h_model = float(coils.helmholtz_center_h(i, n, a, d))
+    h_model = float(fields.helmholtz_center_h(i, n, a, d))
     frac = measured_center_h / h_model
     r_lo, r_hi = resistance_range
 
     def resistance(radius, n_turns):
-        return float(coils.winding_resistance(radius, n_turns, wire_diameter, copper_resistivity))
+        return float(hardware.winding_resistance(radius, n_turns, wire_diameter, copper_resistivity))
 
     def row(id_, text, predicted=np.nan, needed=np.nan, unit="", constraint=np.nan, c_unit="",
             allowed=None):
@@ -475,15 +477,15 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
 
     r_turn = resistance(a, 1.0)
     n_eff = n * frac
-    a_eff = coils.pair_radius_for_center_h(measured_center_h, n * i, d)
-    reversed_h = float(np.linalg.norm(coils.coaxial_system_b(
+    a_eff = fields.pair_radius_for_center_h(measured_center_h, n * i, d)
+    reversed_h = float(np.linalg.norm(fields.coaxial_system_b(
         np.zeros(3), ["round"] * 2, [a, a], [-d / 2, d / 2], [n * i, -n * i]))) / MU_0
     return [
         row("exact", "exact field of the pair as built", predicted=h_model),
         row("fewer-turns", "fewer effective turns per coil", needed=n_eff, unit="turns",
             constraint=resistance(a, n_eff), c_unit="ohm", allowed=(r_lo, r_hi)),
         row("resistance-turns", "the fewest turns the measured resistance allows",
-            predicted=float(coils.helmholtz_center_h(i, r_lo / r_turn, a, d)), needed=r_lo / r_turn,
+            predicted=float(fields.helmholtz_center_h(i, r_lo / r_turn, a, d)), needed=r_lo / r_turn,
             unit="turns"),
         row("lower-current", "a lower current than the stated one", needed=i * frac, unit="A"),
         row("larger-radius", "larger coils", needed=a_eff, unit="m", constraint=resistance(a_eff, n),
@@ -491,10 +493,10 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
         row("one-coil-off", "one coil unpowered", predicted=h_model / 2),
         row("one-coil-reversed", "one coil reversed", predicted=reversed_h),
         row("earth-field", "the Earth's field against the coils' (at most)", predicted=h_model - earth_h),
-        row("probe-axial", "probe displaced along the axis", needed=coils.pair_distance_to_h(frac, a, d, "axial"),
+        row("probe-axial", "probe displaced along the axis", needed=fields.pair_distance_to_h(frac, a, d, "axial"),
             unit="m", constraint=d / 2, c_unit="m (coil plane)"),
         row("probe-transverse", "probe displaced across the axis",
-            needed=coils.pair_distance_to_h(frac, a, d, "transverse"), unit="m", constraint=a,
+            needed=fields.pair_distance_to_h(frac, a, d, "transverse"), unit="m", constraint=a,
             c_unit="m (coil radius)"),
         row("probe-tilt", "single-axis probe tilted from the coil axis", needed=float(np.degrees(np.arccos(frac))),
             unit="deg"),
@@ -523,10 +525,10 @@ def compute_hypotheses(turns, current, coil_radius, built_spacing, wire_diameter
     axial[:, 2] = s
     across = np.zeros((s.size, 3))
     across[:, 0] = s
-    r_turn = float(coils.winding_resistance(a, 1.0, wire_diameter, copper_resistivity))
+    r_turn = float(hardware.winding_resistance(a, 1.0, wire_diameter, copper_resistivity))
     series = [
         Series("centre field against turns", {
-            "turns": ("1", n_axis), "H_centre": ("A/m", coils.helmholtz_center_h(current, n_axis, a, d))}),
+            "turns": ("1", n_axis), "H_centre": ("A/m", fields.helmholtz_center_h(current, n_axis, a, d))}),
         Series("|H| against probe offset", {
             "offset": ("m", s), "axial": ("A/m", _h_line(axial, a, d, current, turns)),
             "transverse": ("A/m", _h_line(across, a, d, current, turns))}),
@@ -609,7 +611,7 @@ def _vector_uniform_radius(field, target, reference, tolerance, s_max):
     """First radius at which |B − target| on a sphere reaches tolerance·reference [m]."""
     from scipy import optimize
 
-    dirs = coils._DIRS
+    dirs = fields.SPHERE_DIRECTIONS
 
     def dev(s):
         b = field(s * dirs)
@@ -640,10 +642,10 @@ def compute_three_axis(radius_north, radius_east, radius_down, turns, target_h_n
              ("cancel the Earth's field", np.zeros(3))]
     series = []
     for label, target in cases:
-        i = coils.three_axis_pair_currents(target, background, radii, radii, turns)
+        i = fields.three_axis_pair_currents(target, background, radii, radii, turns)
 
         def field(pts, i=i):
-            return background + coils.three_axis_pair_b(pts, i, radii, radii, turns)
+            return background + fields.three_axis_pair_b(pts, i, radii, radii, turns)
 
         reference = float(np.linalg.norm(target)) or float(np.linalg.norm(background))
         r_u = _vector_uniform_radius(field, target, reference, tolerance, 0.99 * float(radii.min()))

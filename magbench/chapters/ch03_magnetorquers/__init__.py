@@ -6,6 +6,7 @@ thesis eq. (32), the built coils beside their measurement, Kovalenko's actuator 
 
 import numpy as np
 
+from ... import hardware
 from ...compare import make_row
 from ...io import load_measurements, load_parameter_set, load_printed
 from ...errata import kovalenko_page, printed_check, source_check
@@ -38,7 +39,6 @@ def magnetorquer_rows(params=None):
     params : dict, optional
         Chapter-3 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
     """
-    from ... import magnetorquer as mtq
     from ...io import load_wire_table
 
     p = params or chapter_parameters("ch03")
@@ -49,13 +49,13 @@ def magnetorquer_rows(params=None):
     d_tol = table.tolerance[int(np.argmin(np.abs(np.array(table.nominal_diameter) - d)))]
 
     def resistance(diameter):
-        return float(mtq.coil_resistance(n, side, mtq.wire_area(diameter), rho, "square"))
+        return float(hardware.coil_resistance(n, side, hardware.wire_area(diameter), rho, "square"))
 
     r_model, r_meas = resistance(d), built["mtq-resistance"].value
     r_spread = max(abs(resistance(d - d_tol) - r_model), abs(resistance(d + d_tol) - r_model))
     src = "thesis"
-    square = mtq.turn_area(side, "square")
-    s_design = mtq.wire_area_for_moment(p["mtq_moment"], u, side, rho)
+    square = hardware.turn_area(side, "square")
+    s_design = hardware.wire_area_for_moment(p["mtq_moment"], u, side, rho)
     return [
         make_row("mtq-resistance", "Resistance of a built magnetorquer (0.2 mm wire, N = 240)",
                  f"{src} §3.3 (measured, ≈ 55 Ω)", r_meas, r_model, r_spread + 0.5,
@@ -65,40 +65,39 @@ def magnetorquer_rows(params=None):
                  printed["mtq-resistance-computed"].resolution, unit="ohm"),
         make_row("mtq-moment", "Dipole moment of the built coil at 12 V (eq. 20)",
                  f"{src} §3.3 (printed)", printed["mtq-moment"].value,
-                 mtq.moment_from_voltage(u, side, mtq.wire_area(d), rho), printed["mtq-moment"].resolution,
+                 hardware.moment_from_voltage(u, side, hardware.wire_area(d), rho), printed["mtq-moment"].resolution,
                  unit="A m^2",
                  note=f"with the measured resistance: {u / r_meas * n * float(square):.3f} A·m²"),
         make_row("mtq-power", "Joule power of the built coil at 12 V (measured resistance)",
                  "thesis §3.2 (the design's 2 W)", p["mtq_max_power"],
-                 mtq.joule_power(u, r_meas), 0.5, unit="W"),
+                 hardware.joule_power(u, r_meas), 0.5, unit="W"),
         make_row("mtq-current-for-moment", "Coil current for 0.4 A·m² (square, N = 240)",
                  "thesis §4.1 (printed)", printed["thesis-mtq-current-024"].value,
-                 mtq.current_for_moment(p["mtq_moment"], n, square),
+                 hardware.current_for_moment(p["mtq_moment"], n, square),
                  printed["thesis-mtq-current-024"].resolution, unit="A"),
         make_row("mtq-winding-length", "Single-layer winding length N·√S_r at N = 240",
                  "thesis §3.2 (printed, ≈ 0.1 m)", printed["thesis-mtq-winding-length"].value,
-                 mtq.winding_length(n, s_design), printed["thesis-mtq-winding-length"].resolution, unit="m"),
+                 hardware.winding_length(n, s_design), printed["thesis-mtq-winding-length"].resolution, unit="m"),
     ]
 
 
 def magnetorquer_checks():
     """Thesis §3 (the magnetorquers) and Kovalenko's actuator examples: the printed
     values that do not reproduce (chapter 3 of the book walks through them)."""
-    from ... import magnetorquer as mtq
 
     p = load_parameter_set("thesis")
     rho, u, side = p["copper_resistivity"].value_si, p["mtq_voltage"].value_si, p["mtq_side"].value_si
     m_req, n = p["mtq_moment"].value_si, p["mtq_turns"].value_si
     built, printed = load_measurements("thesis"), load_printed("thesis")
-    s_built = mtq.wire_area(built["mtq-wire-diameter"].value)
-    s_design = mtq.wire_area_for_moment(m_req, u, side, rho)
-    m_built = float(mtq.moment_from_voltage(u, side, s_built, rho))
-    r_square = float(mtq.coil_resistance(n, side, s_built, rho, "square"))
-    m_mixed = u / r_square * n * float(mtq.turn_area(side, "round"))      # square-turn R, round-turn area
-    i_for_m = float(mtq.current_for_moment(m_req, n, mtq.turn_area(side, "square")))
-    length = float(mtq.winding_length(n, s_design))
-    d_design, d_printed_area = float(mtq.wire_diameter(s_design)), float(mtq.wire_diameter(printed["thesis-mtq-wire-area"].value))
-    kov_torque = float(mtq.magnet_torque_per_mass(1.4, 0.5e-4, 7.5e3))
+    s_built = hardware.wire_area(built["mtq-wire-diameter"].value)
+    s_design = hardware.wire_area_for_moment(m_req, u, side, rho)
+    m_built = float(hardware.moment_from_voltage(u, side, s_built, rho))
+    r_square = float(hardware.coil_resistance(n, side, s_built, rho, "square"))
+    m_mixed = u / r_square * n * float(hardware.turn_area(side, "round"))      # square-turn R, round-turn area
+    i_for_m = float(hardware.current_for_moment(m_req, n, hardware.turn_area(side, "square")))
+    length = float(hardware.winding_length(n, s_design))
+    d_design, d_printed_area = float(hardware.wire_diameter(s_design)), float(hardware.wire_diameter(printed["thesis-mtq-wire-area"].value))
+    kov_torque = float(hardware.magnet_torque_per_mass(1.4, 0.5e-4, 7.5e3))
     return [
         source_check(
             id="thesis-mtq-built-moment", chapter="ch03", source="thesis",
@@ -108,7 +107,7 @@ def magnetorquer_checks():
             explanation=(f"Eq. (20) with the {built['mtq-wire-diameter'].value * 1e3:g} mm wire gives {m_built:.3f} A·m² "
                          f"for round and square turns alike; {m_mixed:.2f} follows from mixing the square-turn "
                          f"resistance ({r_square:.1f} Ω) with the round-turn area πl²/4."),
-            computation="magbench.magnetorquer.moment_from_voltage"),
+            computation="magbench.hardware.moment_from_voltage"),
         source_check(
             id="thesis-mtq-current-for-moment", chapter="ch03", source="thesis",
             location="§4.1", quantity="Coil current for 0.4 A·m² (m = I S N, square, N = 240)",
@@ -116,7 +115,7 @@ def magnetorquer_checks():
             tolerance=printed["thesis-mtq-current-024"].resolution, unit="A",
             explanation=(f"I = m/(N l²) = {i_for_m:.3f} A; §4.1 then says "
                          f"{printed['thesis-mtq-current-025'].value:g} A, which fits neither."),
-            computation="magbench.magnetorquer.current_for_moment"),
+            computation="magbench.hardware.current_for_moment"),
         source_check(
             id="thesis-mtq-winding-length", chapter="ch03", source="thesis",
             location="§3.2", quantity="Single-layer winding length N·√S_r at N = 240",
@@ -124,7 +123,7 @@ def magnetorquer_checks():
             tolerance=printed["thesis-mtq-winding-length"].resolution, unit="m",
             explanation=(f"N = L/√S_r (the thesis's own relation) gives L = {length:.3f} m, not "
                          f"≈ {printed['thesis-mtq-winding-length'].value:g} m."),
-            computation="magbench.magnetorquer.winding_length"),
+            computation="magbench.hardware.winding_length"),
         source_check(
             id="thesis-mtq-wire-area", chapter="ch03", source="thesis",
             location="§3.2", quantity="Conductor cross-section S_r = 4ρm/(Ul) (eq. 21)",
@@ -133,7 +132,7 @@ def magnetorquer_checks():
             explanation=(f"Eq. (21) gives {s_design * 1e8:.3f}·10⁻⁸ m², printed rounded up; the printed wire "
                          f"diameter {printed['thesis-mtq-wire-diameter'].value_as_printed:g} mm follows from "
                          f"{s_design * 1e8:.3f} ({d_design * 1e3:.3f} mm; 2.34 would give {d_printed_area * 1e3:.3f} mm)."),
-            computation="magbench.magnetorquer.wire_area_for_moment"),
+            computation="magbench.hardware.wire_area_for_moment"),
         source_check(
             id="kovalenko-e02-torque-per-mass", chapter="ch03", source="kovalenko",
             location="eq. (1.7), p. 30",
@@ -142,7 +141,7 @@ def magnetorquer_checks():
             tolerance=load_printed("kovalenko")["kov-magnet-torque-per-mass"].resolution, unit="N m/kg",
             explanation=(f"B_r B/(μ0 γ) = {kov_torque * 1e2:.3f}·10⁻² N·m/kg, printed rounded up; "
                          f"{load_printed('kovalenko')['kov-magnet-mass-per-torque'].value:g} kg per N·m does reproduce."),
-            computation="magbench.magnetorquer.magnet_torque_per_mass"),
+            computation="magbench.hardware.magnet_torque_per_mass"),
     ]
 
 
@@ -153,23 +152,22 @@ def magnetorquer_design_checks():
     whole chain; those that do not are the errata of :func:`magnetorquer_checks` and the
     built coil's power against the 2 W limit the thesis set itself.
     """
-    from ... import magnetorquer as mtq
 
     p = load_parameter_set("thesis")
     rho, gamma = p["copper_resistivity"].value_si, p["copper_density"].value_si
     u, side, m_req = p["mtq_voltage"].value_si, p["mtq_side"].value_si, p["mtq_moment"].value_si
     w_max, m_max, n = p["mtq_max_power"].value_si, p["mtq_max_mass"].value_si, p["mtq_turns"].value_si
     built, printed = load_measurements("thesis"), load_printed("thesis")
-    s_built = mtq.wire_area(built["mtq-wire-diameter"].value)
-    s_design = mtq.wire_area_for_moment(m_req, u, side, rho)
-    lo, hi = mtq.turns_per_volt_bounds(m_req, side, w_max, m_max, rho, gamma, "square")
-    r_built = float(mtq.coil_resistance(n, side, s_built, rho, "square"))
-    r_round = float(mtq.coil_resistance(n, side, s_built, rho, "round"))
+    s_built = hardware.wire_area(built["mtq-wire-diameter"].value)
+    s_design = hardware.wire_area_for_moment(m_req, u, side, rho)
+    lo, hi = hardware.turns_per_volt_bounds(m_req, side, w_max, m_max, rho, gamma, "square")
+    r_built = float(hardware.coil_resistance(n, side, s_built, rho, "square"))
+    r_round = float(hardware.coil_resistance(n, side, s_built, rho, "round"))
     r_meas = built["mtq-resistance"].value
-    mass_coefficient = float(mtq.coil_mass_for_moment(m_req, 1.0, 1.0, rho, gamma, "square"))
-    power_coefficient = float(mtq.joule_power_for_moment(m_req, 1.0, 1.0, side, "square"))
-    mass_round = float(mtq.coil_mass_for_moment(m_req, u, n, rho, gamma, "round"))
-    p_built = float(mtq.joule_power(u, r_built))
+    mass_coefficient = float(hardware.coil_mass_for_moment(m_req, 1.0, 1.0, rho, gamma, "square"))
+    power_coefficient = float(hardware.joule_power_for_moment(m_req, 1.0, 1.0, side, "square"))
+    mass_round = float(hardware.coil_mass_for_moment(m_req, u, n, rho, gamma, "round"))
+    p_built = float(hardware.joule_power(u, r_built))
     # The fewest turns that keep the built wire within the power limit: W = U²/R, R ∝ N.
     n_for_limit = int(np.ceil(n * (u**2 / w_max) / r_built))
     sq = f"square turn of side l = {side:g} m (eqs. 28–31)"
@@ -178,7 +176,7 @@ def magnetorquer_design_checks():
         return printed_check(printed[row], id=id, chapter="ch03", location=location,
                                         quantity=quantity, computed=computed, unit=unit, scale=scale,
                                         explanation=explanation,
-                                        computation=f"magbench.magnetorquer.{computation}")
+                                        computation=f"magbench.hardware.{computation}")
 
     return [
         check("thesis-mtq-rho-rho", "thesis-mtq-rho-rho", "§3.2, eq. (32)", rho * gamma, "ohm kg/m^2",
@@ -197,13 +195,13 @@ def magnetorquer_design_checks():
               f"{hi * u:.1f}: the thesis rounded 16ρρ̃m = {mass_coefficient * 1e3:.3f}·10⁻³ to 10⁻³.",
               "turns_per_volt_bounds", quantity=f"Most turns for M ≤ {m_max:g} kg at {u:g} V"),
         check("thesis-mtq-design-mass", "thesis-mtq-design-mass", "§3.2",
-              mtq.coil_mass_for_moment(m_req, u, n, rho, gamma, "square"), "kg",
+              hardware.coil_mass_for_moment(m_req, u, n, rho, gamma, "square"), "kg",
               f"Eq. (29), {sq}; a round turn would give {mass_round:.4f} kg.", "coil_mass_for_moment",
               quantity=f"Conductor mass at N = {n:.0f}"),
         check("thesis-mtq-design-power", "thesis-mtq-design-power", "§3.2",
-              mtq.joule_power_for_moment(m_req, u, n, side, "square"), "W", "Eq. (28).",
+              hardware.joule_power_for_moment(m_req, u, n, side, "square"), "W", "Eq. (28).",
               "joule_power_for_moment", quantity=f"Joule power at N = {n:.0f}"),
-        check("thesis-mtq-wire-diameter", "thesis-mtq-wire-diameter", "§3.2", mtq.wire_diameter(s_design), "m",
+        check("thesis-mtq-wire-diameter", "thesis-mtq-wire-diameter", "§3.2", hardware.wire_diameter(s_design), "m",
               f"√(4S_r/π) with S_r = {s_design * 1e8:.3f}·10⁻⁸ m².", "wire_diameter"),
         check("thesis-mtq-resistance", "mtq-resistance-computed", "§3.3", r_built, "ohm",
               f"N·ρ·4l/S_r with the {sq}; {r_round:.1f} Ω if the turn were round.", "coil_resistance",
@@ -219,8 +217,8 @@ def magnetorquer_design_checks():
               "joule_power",
               quantity=f"Joule power of the built coil at {u:g} V, against the design's {w_max:g} W"),
         check("thesis-mtq-current-025", "thesis-mtq-current-025", "§4.1",
-              mtq.current_for_moment(m_req, n, mtq.turn_area(side, "square")), "A",
-              (f"I = m/(N l²) = {float(mtq.current_for_moment(m_req, n, mtq.turn_area(side, 'square'))):.3f} A; "
+              hardware.current_for_moment(m_req, n, hardware.turn_area(side, "square")), "A",
+              (f"I = m/(N l²) = {float(hardware.current_for_moment(m_req, n, hardware.turn_area(side, 'square'))):.3f} A; "
                f"§4.1 says {printed['thesis-mtq-current-024'].value:g} A a few lines earlier for the same moment."),
               "current_for_moment", quantity=f"Coil current for {m_req:g} A·m² (second value)"),
     ]
@@ -228,30 +226,28 @@ def magnetorquer_design_checks():
 
 def d_mm(area):
     """Wire diameter [mm, 3 decimals] of a conductor cross-section [m²], for explanations."""
-    from ... import magnetorquer as mtq
 
-    return f"{float(mtq.wire_diameter(area)) * 1e3:.3f}"
+    return f"{float(hardware.wire_diameter(area)) * 1e3:.3f}"
 
 
 def kovalenko_actuator_checks():
     """Kovalenko's (1975) worked examples on magnets and cored rods (his §1.3, ch. 9, 10, 12)."""
-    from ... import magnetorquer as mtq
 
     kov = load_printed("kovalenko")
     p = load_parameter_set("thesis")
     j_al, p0 = p["alnico_max_magnetization"].value_si, p["alnico_elongation"].value_si
-    length1, diameter1, _ = mtq.permanent_magnet_min_mass(1.0, j_al, p0, 1.0)
+    length1, diameter1, _ = hardware.permanent_magnet_min_mass(1.0, j_al, p0, 1.0)
     table5_p = kov["kov-table5-p75"].value
-    calc = 4 * np.pi * float(mtq.rod_demagnetizing_factor(table5_p))
+    calc = 4 * np.pi * float(hardware.rod_demagnetizing_factor(table5_p))
     measured40, computed40 = kov["kov-table5-measured-p40"].value, kov["kov-table5-computed-p40"].value
-    mass_per_torque = float(mtq.magnet_mass_for_torque(1.0, 1.4, 0.5e-4, 7.5e3))
-    transit = float(mtq.rod_demagnetizing_factor(248.0))
+    mass_per_torque = float(hardware.magnet_mass_for_torque(1.0, 1.4, 0.5e-4, 7.5e3))
+    transit = float(hardware.rod_demagnetizing_factor(248.0))
 
     def check(id, row, quantity, computed, unit, explanation, computation, scale=1.0):
         r = kov[row]
         return printed_check(r, id=id, chapter="ch03", location=f"§{r.section}, p. {kovalenko_page(r.seed_line)}",
                                         quantity=quantity, computed=computed, unit=unit, scale=scale,
-                                        explanation=explanation, computation=f"magbench.magnetorquer.{computation}")
+                                        explanation=explanation, computation=f"magbench.hardware.{computation}")
 
     return [
         check("kovalenko-e02-mass-per-torque", "kov-magnet-mass-per-torque",

@@ -4,7 +4,7 @@ import math
 
 import numpy as np
 
-from ... import magnetorquer as mtq
+from ... import hardware
 from ...constants import MU_0
 from ...io import load_wire_table
 from . import CHAPTER
@@ -137,29 +137,29 @@ def compute_design_space(mtq_moment, mtq_voltage, mtq_side, mtq_max_power, mtq_m
                          copper_resistivity, copper_density):
     """W(N), M(N) for the eq. (21) wire; feasible N for every IEC wire (square turn)."""
     m, u, l, rho, g = mtq_moment, mtq_voltage, mtq_side, copper_resistivity, copper_density
-    s_design = float(mtq.wire_area_for_moment(m, u, l, rho))
+    s_design = float(hardware.wire_area_for_moment(m, u, l, rho))
     n = np.arange(100, 1501)
-    power = mtq.joule_power_for_moment(m, u, n, l, "square")
-    mass = mtq.coil_mass_for_moment(m, u, n, rho, g, "square")
-    lo, hi = mtq.turns_per_volt_bounds(m, l, mtq_max_power, mtq_max_mass, rho, g, "square")
+    power = hardware.joule_power_for_moment(m, u, n, l, "square")
+    mass = hardware.coil_mass_for_moment(m, u, n, rho, g, "square")
+    lo, hi = hardware.turns_per_volt_bounds(m, l, mtq_max_power, mtq_max_mass, rho, g, "square")
     d, od, _ = _wire_sizes()
     perim, s_r = 4 * l, np.pi * d**2 / 4
     r_turn = rho * perim / s_r
     wires = {
         "wire_diameter": ("mm", d * 1e3),
-        "moment": ("A m^2", mtq.moment_from_voltage(u, l, s_r, rho)),
+        "moment": ("A m^2", hardware.moment_from_voltage(u, l, s_r, rho)),
         "n_min_power": ("1", np.ceil(u**2 / (r_turn * mtq_max_power))),
         "n_max_mass": ("1", np.floor(mtq_max_mass / (g * perim * s_r))),
         "n_max_single_layer": ("1", np.floor(l / od)),
     }
-    res = mtq.design_magnetorquer(m, u, l, "square", mtq_max_power, mtq_max_mass, d, rho, g,
+    res = hardware.design_magnetorquer(m, u, l, "square", mtq_max_power, mtq_max_mass, d, rho, g,
                                   require_fit=True, overall_diameters=od)
     best = res["min_mass"] or {}
     return FigureData("ch03-design-space", "", "", {}, [
         Series("eq. (21) wire", {"turns": ("1", n), "power": ("W", power), "mass": ("kg", mass)}),
         Series("IEC 60317 wires", wires)],
-        extra={"n_lo": float(lo * u), "n_hi": float(hi * u), "d_design": float(mtq.wire_diameter(s_design)),
-               "built_power": float(u**2 / mtq.coil_resistance(240, l, mtq.wire_area(0.2e-3), rho, "square")),
+        extra={"n_lo": float(lo * u), "n_hi": float(hi * u), "d_design": float(hardware.wire_diameter(s_design)),
+               "built_power": float(u**2 / hardware.coil_resistance(240, l, hardware.wire_area(0.2e-3), rho, "square")),
                "best": best, "moment": m, "max_power": mtq_max_power, "max_mass": mtq_max_mass})
 
 
@@ -220,13 +220,13 @@ def compute_wm_product(mtq_moment, mtq_side, mtq_voltage, copper_resistivity, co
     cu = copper_resistivity * copper_density
     # only the product γρ enters M·W (eq. 26/30), so the density argument is 1
     product = {"side": ("m", side),
-               "copper": ("kg W", mtq.mass_power_product(mtq_moment, side, cu, 1.0)),
-               "aluminium": ("kg W", mtq.mass_power_product(mtq_moment, side, aluminium_gamma_rho, 1.0))}
+               "copper": ("kg W", hardware.mass_power_product(mtq_moment, side, cu, 1.0)),
+               "aluminium": ("kg W", hardware.mass_power_product(mtq_moment, side, aluminium_gamma_rho, 1.0))}
     n = turns_per_volt * mtq_voltage
     shapes = {"side": ("m", side)}
-    for shape in mtq.SHAPES:
-        shapes[f"power_{shape}"] = ("W", mtq.joule_power_for_moment(mtq_moment, mtq_voltage, n, side, shape))
-        shapes[f"mass_{shape}"] = ("kg", mtq.coil_mass_for_moment(mtq_moment, mtq_voltage, n, copper_resistivity,
+    for shape in hardware.SHAPES:
+        shapes[f"power_{shape}"] = ("W", hardware.joule_power_for_moment(mtq_moment, mtq_voltage, n, side, shape))
+        shapes[f"mass_{shape}"] = ("kg", hardware.coil_mass_for_moment(mtq_moment, mtq_voltage, n, copper_resistivity,
                                                                   copper_density, shape) * np.ones_like(side))
     return FigureData("ch03-wm-product", "", "", {},
                       [Series("mass x power", product), Series("shape at fixed N/U", shapes)],
@@ -286,13 +286,13 @@ def compute_actuators(mtq_moment, mtq_voltage, mtq_side, mtq_max_power, mtq_max_
     """Mass, power and size of an air-core coil, a rod electromagnet and permanent magnets."""
     m, u, rho, g = mtq_moment, mtq_voltage, copper_resistivity, copper_density
     d, od, _ = _wire_sizes()
-    coil = mtq.design_magnetorquer(m, u, mtq_side, "square", mtq_max_power, mtq_max_mass, d, rho, g,
+    coil = hardware.design_magnetorquer(m, u, mtq_side, "square", mtq_max_power, mtq_max_mass, d, rho, g,
                                    require_fit=True, overall_diameters=od)["min_mass"]
-    em = mtq.electromagnet_design(m, em_elongation, permalloy_design_magnetization,
+    em = hardware.electromagnet_design(m, em_elongation, permalloy_design_magnetization,
                                   permalloy_design_field, core_averaging_factor, em_current_density,
                                   em_fill_factor, rho, core_density, g, u)
     # saturation check: the central magnetisation the winding's field actually produces
-    j_c = float(mtq.core_central_magnetization(em["coil_field"], em["demagnetizing_factor"],
+    j_c = float(hardware.core_central_magnetization(em["coil_field"], em["demagnetizing_factor"],
                                                permalloy_a, permalloy_b))
     em_moment = core_averaging_factor * j_c * math.pi * em["core_diameter"] ** 2 * em["length"] / 4
     j_r = magnet_remanence / MU_0
@@ -302,7 +302,7 @@ def compute_actuators(mtq_moment, mtq_voltage, mtq_side, mtq_max_power, mtq_max_
              coil["power"] if coil else np.nan, mtq_side, m if coil is None else coil["moment"], 1.0),
             ("rod electromagnet, permalloy 50Н", em["mass"], em["power"], em["length"], em_moment, 1.0)]
     for label, j, p0, gam in pm:
-        length, dia, mass = mtq.permanent_magnet_min_mass(m, j, p0, gam)
+        length, dia, mass = hardware.permanent_magnet_min_mass(m, j, p0, gam)
         rows.append((label, float(mass), 0.0, float(length), m, 0.0))
     cols = {
         "mass": ("kg", [r[1] for r in rows]), "power": ("W", [r[2] for r in rows]),

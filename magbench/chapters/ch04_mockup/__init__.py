@@ -6,7 +6,8 @@ the bench runs of thesis Figs. 19–20 beside the closed-loop model.
 
 import numpy as np
 
-from ... import attitude
+from ... import control
+from ... import dynamics
 from ...compare import make_row
 from ...errata import source_check
 from ...io import load_parameter_set
@@ -24,7 +25,7 @@ INPUTS = (
     # sensors and estimation (book/ch04-estimation.md)
     "filter_coefficient_low", "filter_coefficient_high", "filter_sample_interval",
     "gyro_residual_bias",
-    # the bench experiments (book/ch04-bench.md, magbench.bench)
+    # the bench experiments (book/ch04-bench.md, magbench.sim.bench)
     "mockup_inertia", "mtq_voltage", "mtq_turns", "mtq_side", "sim_design_h",
     "bench_field_h", "bench_background_h", "bench_background_azimuth",
     "bench_coil_resistance", "bench_moment_tolerance", "bench_pwm_levels",
@@ -38,7 +39,7 @@ INPUTS = (
 def bench_rows(params=None):
     """Chapter 4, the bench: the predicted final error band beside the thesis's 10°.
 
-    The model is a nominal run of :func:`magbench.bench.simulate_bench` (release along
+    The model is a nominal run of :func:`magbench.sim.bench.simulate_bench` (release along
     the field at rest, datasheet sensor noise seeded with ``bench_seed``) for each of
     the thesis's two targets; its value is max |ψ − ψ_des| over the last
     ``bench_error_window`` of the run. The thesis prints "10 град. (~ 0.17 рад)" (seed
@@ -50,7 +51,7 @@ def bench_rows(params=None):
     params : dict, optional
         Chapter-4 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
     """
-    from ... import bench
+    from ...sim import bench
     from ...io import measurement
 
     p = params or chapter_parameters("ch04")
@@ -79,13 +80,12 @@ PRINTED_SETS = KP_SWEEP + KD_SWEEP
 def dynamics_checks():
     """Thesis §4 (equations of motion and the PID): the sizing amplitude and the gains,
     on the thesis's own parameter set (never on a whole-book build's overrides)."""
-    from ... import control
     from ...constants import MU_0
 
     p = {name: par.value_si for name, par in load_parameter_set("thesis").items()}
     j, m = p["mockup_inertia"], p["mtq_moment"]
     b0 = MU_0 * p["sim_design_h"]
-    amplitude = attitude.amplitude_for_period(p["oscillation_period"], j, m, b0)
+    amplitude = dynamics.amplitude_for_period(p["oscillation_period"], j, m, b0)
     sets = PRINTED_SETS
     stable = sum(bool(np.all(control.closed_loop_poles(j, b0, *g).real < 0)) for g in sets)
     # Routh–Hurwitz for J s³ + B0 Kd s² + B0 Kp s + B0 Ki: stable iff Ki < B0 Kp Kd / J.
@@ -103,7 +103,7 @@ def dynamics_checks():
                          f"down the pendulum never leaves. The design swings with a {p['oscillation_period']:g} s "
                          f"period only up to {np.degrees(amplitude):.0f}°; at 180° no finite field gives "
                          f"{p['oscillation_period']:g} s."),
-            computation="magbench.attitude.amplitude_for_period"),
+            computation="magbench.dynamics.amplitude_for_period"),
         source_check(
             id="thesis-pid-gains-stable-si", chapter="ch04", source="thesis",
             location="§4.1 (Figs. 15–18)",

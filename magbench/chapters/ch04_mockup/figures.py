@@ -7,7 +7,8 @@ responses come from it.
 
 import numpy as np
 
-from ... import attitude, coils, control
+from ... import control
+from ... import dynamics
 from ...constants import MU_0
 from ..._format import format_number
 from . import CHAPTER, KD_SWEEP, KP_SWEEP, PRINTED_SETS
@@ -39,9 +40,9 @@ def compute_geometry(psi, theta, phi, cm_offset, mass, field, moment):
     """Frames, points and forces of the mock-up at one attitude (thesis Figs. 10–11)."""
     from scipy.constants import g
 
-    r = attitude.euler_313_matrix(psi, theta, phi)
+    r = dynamics.euler_313_matrix(psi, theta, phi)
     a = np.zeros(3)
-    c = attitude.thread_center_of_mass(0.0, 0.0, psi, theta, cm_offset)
+    c = dynamics.thread_center_of_mass(0.0, 0.0, psi, theta, cm_offset)
     b0 = np.array([field, 0.0, 0.0])
     m_vec = moment * r[:, 0]                       # coil 1 along x'
     torque = np.cross(m_vec, b0)
@@ -150,19 +151,19 @@ def compute_free_pendulum(inertia, field, moment, initial_angle, initial_angle_a
 
     if not 1.0 <= duration <= 3600.0:
         raise ValueError(f"duration must lie in [1, 3600] s, got {duration!r}")
-    plant = attitude.Mockup(inertia, field, moment)
+    plant = dynamics.Mockup(inertia, field, moment)
     t = np.linspace(0.0, duration, 3001)
     series = []
     for label, psi0 in (("ψ0 = π/2 (as printed, thesis §4.1)", initial_angle),
                         ("ψ0 = π/4 (as printed, thesis §4.1)", initial_angle_alt)):
-        sol = solve_ivp(attitude.pendulum_rhs, (0.0, duration), [psi0, 0.0], args=(plant,), t_eval=t,
+        sol = solve_ivp(dynamics.pendulum_rhs, (0.0, duration), [psi0, 0.0], args=(plant,), t_eval=t,
                         rtol=1e-10, atol=1e-13)
-        energy = attitude.pendulum_energy(sol.y[0], sol.y[1], inertia, moment, field)
+        energy = dynamics.pendulum_energy(sol.y[0], sol.y[1], inertia, moment, field)
         series.append(Series(label, {"t": ("s", t), "psi": ("rad", sol.y[0]), "omega": ("rad/s", sol.y[1]),
                                      "energy_drift": ("1", (energy - energy[0]) / (moment * field))}))
     return FigureData("", "", "", {}, series, extra={
-        "periods": [float(attitude.pendulum_period(a, inertia, moment, field)) for a in (initial_angle, initial_angle_alt)],
-        "small_angle_period": float(attitude.small_angle_period(inertia, moment, field))})
+        "periods": [float(dynamics.pendulum_period(a, inertia, moment, field)) for a in (initial_angle, initial_angle_alt)],
+        "small_angle_period": float(dynamics.small_angle_period(inertia, moment, field))})
 
 
 def _plot_free(data, key, ylabel, title):
@@ -210,22 +211,22 @@ def compute_period_ratio(inertia, moment, field, period, amplitude_checks):
     if not 0 <= n_checks <= 20:
         raise ValueError(f"amplitude_checks must lie in [0, 20], got {amplitude_checks!r}")
     amp = np.linspace(0.0, 0.999 * np.pi, 500)
-    t0 = float(attitude.small_angle_period(inertia, moment, field))
-    ratio = attitude.pendulum_period(amp, inertia, moment, field) / t0
-    plant = attitude.Mockup(inertia, field, moment)
+    t0 = float(dynamics.small_angle_period(inertia, moment, field))
+    ratio = dynamics.pendulum_period(amp, inertia, moment, field) / t0
+    plant = dynamics.Mockup(inertia, field, moment)
     check_amp = np.linspace(0.2, 0.97 * np.pi, n_checks)
     check_ratio = []
     for a in check_amp:
         def turn(t, y, p):
             return y[1]
         turn.direction = 1.0
-        sol = solve_ivp(attitude.pendulum_rhs, (0, 50 * t0), [a, 0.0], args=(plant,), events=turn,
+        sol = solve_ivp(dynamics.pendulum_rhs, (0, 50 * t0), [a, 0.0], args=(plant,), events=turn,
                         rtol=1e-11, atol=1e-13)
         check_ratio.append(2 * sol.t_events[0][0] / t0)
-    h_exact = attitude.field_for_period(period, amp, inertia, moment) / MU_0
+    h_exact = dynamics.field_for_period(period, amp, inertia, moment) / MU_0
     # Eq. (15) as the thesis uses it is linear in its amplitude factor A (zero at A = 0).
-    h_eq15 = coils.oscillation_field_h(inertia, moment, period) * amp
-    a60 = attitude.amplitude_for_period(period, inertia, moment, field) if period > t0 else 0.0
+    h_eq15 = dynamics.oscillation_field_h(inertia, moment, period) * amp
+    a60 = dynamics.amplitude_for_period(period, inertia, moment, field) if period > t0 else 0.0
     return FigureData("", "", "", {}, [
         Series("exact / eq. (14)", {"amplitude": ("deg", np.degrees(amp)), "ratio": ("1", ratio)}),
         Series("solve_ivp", {"amplitude": ("deg", np.degrees(check_amp)), "ratio": ("1", np.array(check_ratio))}),
@@ -286,7 +287,7 @@ def build_interconnection(inertia, field, kp, ki, kd, moment_limit):
     # m_z = −u; M = (0, 0, m_z) × (cos ψ, −sin ψ, 0) = (−u sin ψ, −u cos ψ, 0).
     alloc = ct.nlsys(None, lambda t, x, u, p: [-u[0] * np.sin(u[1]), -u[0] * np.cos(u[1])],
                      inputs=["u_sat", "psi"], outputs=["M_x", "M_y"], name="allocation")
-    plant = ct.nlsys(lambda t, x, u, p: [x[1], float(attitude.two_coil_torque(x[0], u[0], u[1], field)) / inertia],
+    plant = ct.nlsys(lambda t, x, u, p: [x[1], float(dynamics.two_coil_torque(x[0], u[0], u[1], field)) / inertia],
                      lambda t, x, u, p: x, inputs=["M_x", "M_y"], outputs=["psi", "omega"],
                      states=["psi", "omega"], name="mockup")
     system = ct.interconnect([summing, pid, sat, alloc, plant], inplist=["psi_des"], outlist=["psi", "omega"],
@@ -483,7 +484,7 @@ def reading_evidence(inertia, field, moment, initial_angle, duration=300.0):
             "settling_max": max((p[2] for p in stable), default=np.nan),
             "demand_own_units": max((p[3] / s / moment for p in stable), default=np.nan),
             "demand_si": max((p[3] / moment for p in stable), default=np.nan),
-            "free_period": float(attitude.pendulum_period(initial_angle, inertia, moment, field_reading)),
+            "free_period": float(dynamics.pendulum_period(initial_angle, inertia, moment, field_reading)),
             "critical_scale_max": max(float(control.critical_gain_scale(inertia, field, *g)) for g in PRINTED_SETS),
         })
     return rows

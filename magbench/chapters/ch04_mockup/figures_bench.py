@@ -2,7 +2,7 @@
 
 The thesis's Figs. 19–20 are measured angle traces whose data were never published.
 ``thesis-fig19`` and ``thesis-fig20`` therefore show what the model of
-:mod:`magbench.bench` predicts for those runs (nominal run, and the spread of a small
+:mod:`magbench.sim.bench` predicts for those runs (nominal run, and the spread of a small
 seeded Monte Carlo), with the thesis's 10° marked, and overlay any bench log found in
 ``magbench/data/bench/`` (:mod:`magbench.io.benchlog`). ``ch04-montecarlo`` is the distribution of
 the final error over the uncertain inputs, for both targets.
@@ -10,7 +10,7 @@ the final error over the uncertain inputs, for both targets.
 
 import numpy as np
 
-from ... import bench
+from ...sim import bench
 from ...io import benchlog
 from ...io import load_parameter_set, measurement
 from . import CHAPTER
@@ -18,7 +18,7 @@ from .._base import chapter_parameters
 from ...rotations import wrap_angle
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 
-SOURCE = "Bui (2016), thesis §4.4, Figs. 19–20; model: magbench.bench"
+SOURCE = "Bui (2016), thesis §4.4, Figs. 19–20; model: magbench.sim.bench"
 DEG = np.pi / 180.0
 
 #: Chapter-4 inputs the bench figures take as parameters (all of the bench's).

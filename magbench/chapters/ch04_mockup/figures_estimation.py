@@ -5,7 +5,8 @@ from functools import lru_cache
 
 import numpy as np
 
-from ... import estimation, sensors
+from ... import estimation
+from ...hardware import sensors
 from ...io import broad
 from ...constants import MU_0
 from . import CHAPTER
