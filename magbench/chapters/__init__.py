@@ -7,7 +7,7 @@ is a new module and one line in :data:`CHAPTERS`; the figure registry,
 list and need no other change.
 """
 
-from . import ch01_earth_field, ch02_field_simulator, ch03_magnetorquers, ch04_mockup
+from . import ch01_earth_field, ch02_field_simulator, ch03_magnetorquers, ch04_mockup, ch05_detumbling
 from ._base import OVERRIDES_ENV, Chapter, chapter_parameters, read_overrides
 
 __all__ = ["CHAPTERS", "Chapter", "OVERRIDES_ENV", "chapter", "chapter_parameters", "read_overrides",
@@ -19,6 +19,7 @@ CHAPTERS = [
     ch02_field_simulator.CHAPTER,
     ch03_magnetorquers.CHAPTER,
     ch04_mockup.CHAPTER,
+    ch05_detumbling.CHAPTER,
 ]
 
 

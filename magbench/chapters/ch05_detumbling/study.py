@@ -222,7 +222,7 @@ def kovalenko_650_time(inertia_, gain, mean_square, initial_rate, final_rate):
 
 
 @lru_cache(maxsize=4)
-def gain_sweep(params, ratios=(0.1, 0.3, 1.0, 3.0, 10.0, 30.0), members=8, initial_rate=10.0 * DEG,
+def gain_sweep(params, ratios=(0.3, 0.5, 1.0, 2.0, 3.0, 5.0, 10.0, 20.0), members=8, initial_rate=10.0 * DEG,
                duration=12000.0):
     """Median detumble time (|ω₀| → threshold) against k/k* for the projected law, the 3U
     (J = SamSat's) and a cube with J = J_max on every axis, on the envelope orbit.
