@@ -120,7 +120,7 @@ def detumbling_checks():
 
     printed = load_printed("samsat")
     key = _source_key()
-    d = study.duty_study(key)
+    d = study.duty_study(key, ("model",))
     grid = d["rates"] / np.pi * 180.0
     advantage = 1.0 - d["times"]["continuous"] / d["times"]["model"]           # (W, members)
     third = max(1, grid.size // 3)
