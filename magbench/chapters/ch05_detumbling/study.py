@@ -346,7 +346,7 @@ def triad_geometry(field_sigma, sun_sigma, angles=tuple(np.arange(2.0, 180.0, 4.
 
 def triad_vs_align_vectors(samples=2000, seed=11):
     """Largest difference between :func:`triad_attitude` and scipy's ``align_vectors``
-    with weights [inf, 1] over noisy pairs, and the two timings per attitude [s]."""
+    with weights [inf, 1] over noisy pairs, and the two timings for all ``samples`` [s]."""
     import time
 
     rng = np.random.default_rng(seed)
@@ -357,9 +357,12 @@ def triad_vs_align_vectors(samples=2000, seed=11):
     s_ref /= np.linalg.norm(s_ref, axis=-1, keepdims=True)
     h_b = _perturb(truth.inv().apply(h_ref), 0.01, rng)
     s_b = _perturb(truth.inv().apply(s_ref), 0.05, rng)
-    t0 = time.perf_counter()
-    ours = triad_attitude(h_b, s_b, h_ref, s_ref)
-    t_ours = time.perf_counter() - t0
+    runs = []
+    for _ in range(5):           # the vectorised call takes milliseconds: the median of five
+        t0 = time.perf_counter()
+        ours = triad_attitude(h_b, s_b, h_ref, s_ref)
+        runs.append(time.perf_counter() - t0)
+    t_ours = float(np.median(runs))
     t0 = time.perf_counter()
     peer = np.array([Rotation.align_vectors([h_b[i], s_b[i]], [h_ref[i], s_ref[i]], weights=[np.inf, 1])[0]
                      .as_matrix() for i in range(samples)])
