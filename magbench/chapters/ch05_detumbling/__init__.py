@@ -23,6 +23,8 @@ INPUTS = (
     # the spacecraft and its orbit
     "inertia_x", "inertia_y", "inertia_z", "orbit_altitude", "orbit_inclination", "epoch", "earth_radius",
     "dipole_g10", "dipole_g11", "dipole_h11", "earth_rotation_rate",
+    # the aerodynamic-torque estimate
+    "air_density", "drag_coefficient", "cross_section_area", "pressure_center_offset",
     # the law, its gain rule and its modes (SS Figs. 1–2)
     "max_dipole", "initial_rate_x", "initial_rate_y", "initial_rate_z", "fig2_rate_min", "fig2_rate_max",
     "fig2_rate_step", "on_time", "off_time", "detumble_threshold", "fig2_members", "fig2_seed",

@@ -25,7 +25,9 @@ _UNITS = {"inertia_x": "kg m^2", "inertia_y": "kg m^2", "inertia_z": "kg m^2", "
           "field_model_error": "T", "field_sigma": "rad", "sun_sigma": "rad", "envelope_rate_low": "rad/s",
           "envelope_rate_high": "rad/s", "envelope_altitude": "m", "envelope_inclination": "rad",
           "envelope_dipole_field": "T", "envelope_dipole_tilt": "rad", "envelope_gain": "A m^2 s/T",
-          "envelope_members": "1", "envelope_seed": "1", "envelope_duration": "s", "integration_step": "s"}
+          "envelope_members": "1", "envelope_seed": "1", "envelope_duration": "s", "integration_step": "s",
+          "air_density": "kg/m^3", "drag_coefficient": "1", "cross_section_area": "m^2",
+          "pressure_center_offset": "m"}
 
 
 def _defaults():
