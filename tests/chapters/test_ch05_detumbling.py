@@ -205,3 +205,20 @@ def test_printed_value(printed_check):
 
 def test_errata_match_expectation():
     assert {e.id for e in errata(CHAPTER_KEY)} == set(EXPECTED_ERRATA)
+
+
+@pytest.mark.parametrize("mode", ["continuous", "duty"])
+def test_chained_runs_continue_one_run(mode):
+    """Segments carry the orbit phase, the pole's longitude and (for the duty cycle, 1700 s =
+    100 cycles) the cycle's phase: at a fixed step they reproduce one run to round-off."""
+    p = dict(KEY)
+    orbit = study.samsat_orbit(p)
+    q = np.array([[1.0, 0.0, 0.0, 0.0], [0.5, 0.5, 0.5, 0.5]])
+    w = np.radians([[0.1, 10.0, 10.0], [3.0, -4.0, 2.0]])
+    kw = dict(gain=1.7e4, max_dipole=0.2, mode=mode)
+    t, r = study.chained_detumble(study.inertia(p), orbit, q, w, 3400.0, segment=1700.0, largest_step=1.0,
+                                  rotation_per_step=10.0, **kw)
+    one = study.simulate_detumble(study.inertia(p), orbit, q, w, 3400.0, step=1.0, **kw)
+    assert_allclose(t, one.time)
+    # Round-off only: the orbit phase is carried as u0 + n·T instead of n·t (≈1e-13 rad).
+    assert_allclose(r, one.rate, rtol=1e-8)
