@@ -10,6 +10,7 @@ another source or we chose it, and the figures are reconstructions.
 
 import numpy as np
 
+from ..._format import format_number
 from ...compare import make_row
 from ...constants import MU_0
 from ...errata import printed_check, source_check
@@ -134,7 +135,7 @@ def detumbling_checks():
     return [
         printed_check(
             printed["samsat-fig2-gain-small"], id="samsat-fig2-gain-small", chapter="ch05",
-            location="Rate damping, Fig. 2 (seed line 261)",
+            location="§ Rate damping, on Fig. 2",
             quantity=f"Time the continuous mode saves against the discrete mode (16 s on / 1 s off), w = {lows} °/s",
             computed=small, unit="%",
             explanation=(f"With on-board models ('model' estimator) the discrete mode loses only its off-time: the "
@@ -145,7 +146,7 @@ def detumbling_checks():
             computation="magbench.sim.simulate_detumble"),
         printed_check(
             printed["samsat-fig2-gain-large"], id="samsat-fig2-gain-large", chapter="ch05",
-            location="Rate damping, Fig. 2 (seed line 261)",
+            location="§ Rate damping, on Fig. 2",
             quantity=f"Time the continuous mode saves against the discrete mode, w = {highs} °/s",
             computed=large, unit="%",
             explanation=(f"{large:.1f} % at w = {highs} °/s with the 'model' estimator: within the printed "
@@ -154,7 +155,7 @@ def detumbling_checks():
             computation="magbench.sim.simulate_detumble"),
         printed_check(
             printed["samsat-fig2-rate-max"], id="samsat-fig2-rate-max", chapter="ch05",
-            location="Rate damping, Fig. 2 (seed line 267)",
+            location="§ Rate damping, Fig. 2 (axis)",
             quantity="Largest initial rate of Fig. 2's axis at which the discrete mode damps ('model' estimator)",
             computed=float(np.max(damped)) if damped.size else 0.0, unit="deg/s",
             explanation=(f"The discrete mode with on-board models damps every rate of the axis up to "
@@ -192,7 +193,7 @@ def formula_checks():
     return [
         source_check(
             id="samsat-kinematics-orbital-term", chapter="ch05", source="samsat",
-            location="Kinematics, seed lines 213–223",
+            location="§ Kinematics",
             quantity=("ω_x from the kinematic equations (α = 40°, φ = 25°, γ = 60°, rates 1, −2, 3 °/s, "
                       f"ω0 = {n / deg:.4f} °/s)"),
             printed=float(printed_w[0] / deg), computed=float(true_w[0] / deg), tolerance=1e-9, unit="deg/s",
@@ -204,21 +205,21 @@ def formula_checks():
             computation="magbench.dynamics.aerodynamic_body_rates"),
         source_check(
             id="samsat-dipole-projections", chapter="ch05", source="samsat",
-            location="Rate damping, seed lines 233–235",
+            location="§ Rate damping, the dipole's projections",
             quantity="Cosine between the printed 'projections of the dipole moment' and the dipole −kḢ",
             printed=1.0, computed=cosine, tolerance=1e-9, unit="1",
             explanation=(f"The printed components −k(Ḣ_y H_z − Ḣ_z H_y), … are those of −k(Ḣ × H) = L × H, a "
-                         f"torque (up to μ0), perpendicular to the dipole L = −kḢ (cosine {cosine:.1e} at the "
-                         "default rates): the dipole the coils must carry is −kḢ itself (seed lines 225–229)."),
+                         f"torque (up to μ0), perpendicular to the dipole L = −kḢ (cosine {format_number(cosine, 2)} at the "
+                         "default rates): the dipole the coils must carry is −kḢ itself, as the paper's law says."),
             computation="magbench.control.bdot_dipole"),
         source_check(
             id="samsat-torque-mu0", chapter="ch05", source="samsat",
-            location="Rate damping, seed lines 233–235",
+            location="§ Rate damping, the dipole's projections",
             quantity="x-component of the control torque L × B, from the printed expression read as a torque [N·m]",
             printed=float(projection[0]), computed=float(torque[0]), tolerance=1e-6 * abs(float(torque[0])),
             unit="N m",
             explanation=(f"Read as a torque, −k(Ḣ × H) lacks μ0: in SI the torque is μ0 L × H = L × B = "
-                         f"{torque[0]:.3e} N·m, the printed expression gives {projection[0]:.3e} "
+                         f"{format_number(torque[0], 4)} N·m, the printed expression gives {format_number(projection[0], 4)} "
                          "(k in m³·s, H in A/m): a factor 1/μ0 too large."),
             computation="magbench.dynamics.magnetic_torque_from_h"),
         printed_check(

@@ -375,6 +375,6 @@ register(FigureSpec("ch05-gain-sweep", "Projected B-dot: median detumble time ag
 register(FigureSpec("ch05-triad-geometry", "TRIAD's error against the field–Sun angle", f"{SOURCE}, Attitude "
                     "determination; Shuster & Oh (1981)", compute_triad_geometry, plot_triad_geometry,
                     _parameters("field_sigma", "sun_sigma")))
-register(FigureSpec("ch05-triad-rejection", "TRIAD with and without the modulus tests", f"{SOURCE}, seed lines 71–107",
+register(FigureSpec("ch05-triad-rejection", "TRIAD with and without the modulus tests", f"{SOURCE}, Attitude determination (the rejection tests)",
                     compute_triad_rejection, plot_triad_rejection,
                     _parameters(*_ORBIT, "rejection_margin", "magnetometer_noise", "field_model_error")))
