@@ -132,6 +132,73 @@ def _coil_wires(name, enamel):
     return list(t.nominal_diameter), list(t.max_overall_diameter), label
 
 
+def _limit_explanation(kind, numbers, max_power, max_mass, moment, voltage):
+    """A sentence saying why no design exists, from the numbers of
+    :func:`magbench.hardware.binding_limit` (thesis §3.2, eqs. (20), (26)/(30)).
+
+    Parameters
+    ----------
+    kind : str
+        The binding limit, as :func:`binding_limit` returns it [-].
+    numbers : dict
+        Its numbers, as :func:`binding_limit` returns them (SI) [-].
+    max_power, max_mass, moment, voltage : float
+        The limits [W], [kg], the required moment [A·m²] and the supply [V].
+
+    Returns
+    -------
+    str
+        The explanation.
+    """
+    w_max, m_max, m_req, u = max_power, max_mass, moment, voltage
+    if kind == "moment":
+        return (
+            f"moment: no wire reaches {m_req:.4g} A·m² at {u:.4g} V. By eq. (20) the thickest "
+            f"wire, d = {numbers['thickest_wire'] * 1e3:.4g} mm, gives {numbers['thickest_wire_moment']:.4g} A·m² "
+            f"whatever the turns; eq. (21) needs S_r >= {numbers['wire_area_needed']:.4g} m² (d >= "
+            f"{numbers['wire_diameter_needed'] * 1e3:.4g} mm) or a higher voltage"
+        )
+    if kind == "power and mass":
+        return (
+            f"power and mass together: with the thinnest adequate wire, d = {numbers['wire'] * 1e3:.4g} mm "
+            f"(moment {numbers['wire_moment']:.4g} A·m²), W <= {w_max:.4g} W needs N >= {numbers['turns_for_power']} "
+            f"but M <= {m_max:.4g} kg allows N <= {numbers['turns_for_mass']}. Their product, eq. (26)/(30), "
+            f"M·W = 16ρρ̃m²/l² = {numbers['mass_power_product']:.4g} kg·W whatever N and U, exceeds "
+            f"max_mass·max_power = {numbers['budget_product']:.4g} kg·W; raise a limit, enlarge the "
+            f"coil or use a thinner wire closer to the required moment"
+        )
+    if kind == "integer turns":
+        return (
+            f"integer turns: for d = {numbers['wire'] * 1e3:.4g} mm the limits allow "
+            f"{numbers['exact_turns_for_power']:.6g} <= N <= {numbers['exact_turns_for_mass']:.6g}, "
+            f"which holds no integer"
+        )
+    return (
+        f"winding fit: designs meet the moment, power and mass limits, but none fits in "
+        f"{numbers['max_layers']} layer(s) over {numbers['winding_length']:.4g} m at the wires' pitch "
+        f"(enamel included)"
+    )
+
+
+def design_explanation(result, max_power, max_mass, moment, voltage):
+    """What ``design-coil`` says of a :func:`magbench.hardware.design_magnetorquer` result:
+    the best designs when there are any, else why none exists.
+
+    Parameters
+    ----------
+    result : dict
+        The solver's result.
+    max_power, max_mass, moment, voltage : float
+        The limits [W], [kg], the required moment [A·m²] and the supply [V].
+    """
+    if result["feasible"]:
+        low_w, low_m = result["min_power"], result["min_mass"]
+        return (f"{result['turns'].size} feasible designs; least power {low_w['power']:.4g} W at "
+                f"N = {low_w['turns']}, d = {low_w['wire_diameter'] * 1e3:.4g} mm; least mass "
+                f"{low_m['mass'] * 1e3:.4g} g at N = {low_m['turns']}, d = {low_m['wire_diameter'] * 1e3:.4g} mm")
+    return _limit_explanation(result["binding_limit"], result["limit_numbers"], max_power, max_mass, moment, voltage)
+
+
 def _cmd_design_coil(args):
     from .io import load_parameter_set
     from .hardware import design_magnetorquer
@@ -151,6 +218,7 @@ def _cmd_design_coil(args):
         print(f"magbench design-coil: {flag + ': ' if flag else ''}{message}", file=sys.stderr)
         return 2
     best = res["min_mass" if args.minimise == "mass" else "min_power"]
+    explanation = design_explanation(res, args.max_power, args.max_mass, args.moment, args.voltage)
     if args.json:
         designs = [{k: res[k][i].item() for k in _DESIGN_KEYS} for i in range(res["turns"].size)]
         print(json.dumps({
@@ -161,7 +229,7 @@ def _cmd_design_coil(args):
                        "max_layers": args.max_layers},
             "wire_table": args.wire_table, "wire_table_note": label, "minimise": args.minimise,
             "feasible": res["feasible"], "binding_limit": res["binding_limit"],
-            "explanation": res["explanation"], "recommended": best,
+            "explanation": explanation, "recommended": best,
             "min_power": res["min_power"], "min_mass": res["min_mass"], "designs": designs,
         }, indent=1))
         return 0 if res["feasible"] else 1
@@ -170,7 +238,7 @@ def _cmd_design_coil(args):
     print(f"Wires: {label}")
     if not res["feasible"]:
         print(f"No feasible design. Binding limit: {res['binding_limit']}.")
-        print(res["explanation"])
+        print(explanation)
         return 1
     header = ("d [mm]", "pitch [mm]", "turns", "R [ohm]", "I [mA]", "W [W]", "M [g]", "m [A m^2]")
     table = [header]

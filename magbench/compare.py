@@ -139,7 +139,7 @@ def make_row(id, quantity, source, measured, model, tolerance, *, unit, uncertai
 #: independent reference (a model fitted to measurements, such as IGRF), the source's
 #: own simulation, or a value the source printed as its design or calculation.
 ROW_KINDS = {
-    "measurement": "measured by a person (on the bench or the coils)",
+    "measurement": "measured by a person (on the bench, the coils or in flight)",
     "reference": "independent reference (IGRF-14, fitted to observatory and satellite data)",
     "simulation": "the source's own simulation (COMSOL)",
     "printed": "printed design or calculated value of the source",

@@ -15,7 +15,11 @@ PHYSICS = ["magbench.fields", "magbench.hardware", "magbench.dynamics", "magbenc
            "magbench.estimation", "magbench.control", "magbench.units", "magbench.sensors",
            "magbench.bench", "magbench.earth.circular_orbit", "magbench.dynamics.rigid_body",
            "magbench.dynamics.aerodynamic_angles", "magbench.control.bdot", "magbench.estimation.triad",
-           "magbench.sim.detumble"]
+           "magbench.sim.detumble", "magbench.earth.field_cone", "magbench.hardware.hysteresis",
+           "magbench.dynamics.axisymmetric", "magbench.dynamics.torques", "magbench.sim.passive",
+           "magbench.estimation.decay_fit",
+           "magbench.dynamics.gyrostat", "magbench.control.spin",
+           "magbench.control.floquet", "magbench.sim.spinning"]
 #: A line a reader can look up, in any of the five sources (the thesis, Kovalenko, the
 #: SamSat-218D paper, the rotor slides, the TNS-0 preprint), or an explicit "not in".
 SOURCE_LINE = re.compile(r"Thesis (eqs?\.|§)|Not in the (thesis|sources)|Kovalenko \(1975\)"
@@ -74,14 +78,20 @@ FAMILIES = ["magbench.fields", "magbench.earth", "magbench.hardware", "magbench.
             "magbench.estimation", "magbench.rotations", "magbench.sim.bench", "magbench.sim.pid_loop",
             "magbench.sim.integrate", "magbench.sim.result", "magbench.earth.circular_orbit",
             "magbench.dynamics.rigid_body", "magbench.dynamics.aerodynamic_angles", "magbench.control.bdot",
-            "magbench.estimation.triad", "magbench.sim.detumble"]
+            "magbench.estimation.triad", "magbench.sim.detumble", "magbench.earth.field_cone",
+            "magbench.hardware.hysteresis", "magbench.dynamics.axisymmetric", "magbench.sim.passive",
+            "magbench.estimation.decay_fit",
+            "magbench.dynamics.gyrostat",
+            "magbench.control.spin", "magbench.control.floquet", "magbench.sim.spinning"]
 #: Exceptions to the glossary, each a name fixed by a contract other tools use: chapter 5's
 #: contract (shared/reference/bdot_triad.md §9) calls the angular-velocity *vector* ``omega``
 #: (``rate`` is its magnitude there, as elsewhere in the book). Only these exact places.
 GLOSSARY_CONTRACT = {"magbench.dynamics.rigid_body.quaternion_rate(omega)",
                      "magbench.dynamics.rigid_body.euler_rates(omega)",
                      "magbench.dynamics.quaternion_rate(omega)", "magbench.dynamics.euler_rates(omega)",
-                     "magbench.sim.detumble.DetumbleRun.omega"}
+                     "magbench.sim.detumble.DetumbleRun.omega",
+                     # chapter 6's contract (shared/reference/rotor_spin.md §15): the run's body rate vectors
+                     "magbench.sim.spinning.RotorRun.omega"}
 
 
 def _public_words():

@@ -1,6 +1,9 @@
 """The figure registry and the command line (contract shapes)."""
 
 import json
+import os
+import subprocess
+import sys
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -65,3 +68,32 @@ def test_cli_figures_and_compare(capsys):
     assert main(["compare", "--json"]) == 0
     rows = json.loads(capsys.readouterr().out)
     assert rows and {"id", "verdict", "tolerance"} <= set(rows[0])
+
+
+def test_listing_figures_reads_no_file():
+    """Registering and listing every figure opens no data file: defaults are read on first use."""
+    code = (
+        "import sys\n"
+        "opened = []\n"
+        "def hook(event, args):\n"
+        "    if event == 'open' and isinstance(args[0], str) and '/magbench/' in args[0] \\\n"
+        "            and not args[0].endswith(('.py', '.pyc', '.so')):\n"
+        "        opened.append(args[0])\n"
+        "sys.addaudithook(hook)\n"
+        "from magbench import figures\n"
+        "ids = figures.figure_ids()\n"
+        "assert len(ids) >= 38, ids\n"
+        "print(sorted(set(opened)))\n"
+        "sys.exit(1 if opened else 0)\n"
+        "figures.get_spec(ids[0]).parameters\n")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                            env={**os.environ, "MPLBACKEND": "Agg"})
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_a_figures_defaults_are_read_on_first_use():
+    from magbench import figures
+
+    spec = figures.get_spec("thesis-fig05")
+    assert spec.parameters is spec.parameters          # read once, then cached
+    assert all(isinstance(p, figures.FigureParameter) for p in spec.parameters.values())

@@ -38,3 +38,32 @@ def test_bad_overrides(tmp_path, text, match):
 def test_unknown_chapter():
     with pytest.raises(KeyError, match="ch01"):
         chapter_parameters("ch42")
+
+
+def _parameter_cell_names(page):
+    """Names assigned in a page's cell tagged ``parameters`` (``_``-prefixed helpers aside)."""
+    import ast
+    import re
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parent.parent / f"{page}.md").read_text(encoding="utf-8")
+    cell = re.search(r"```\{code-cell\}[^\n]*\n:tags: \[[^\]]*parameters[^\]]*\]\n(.*?)```", text, re.S)
+    if cell is None:
+        return None
+    tree = ast.parse(cell.group(1))
+    return {t.id for node in tree.body if isinstance(node, ast.Assign) for t in node.targets
+            if isinstance(t, ast.Name) and not t.id.startswith("_")}
+
+
+def test_parameters_cells_name_exactly_the_chapters_inputs():
+    """A reader (or papermill) overrides a chapter through its parameters cells: together
+    they must name every input of the chapter, and nothing else."""
+    from magbench.chapters import CHAPTERS
+
+    for spec in CHAPTERS:
+        cells = {page: _parameter_cell_names(page) for page in spec.pages}
+        assert cells[spec.pages[0]] is not None, f"{spec.pages[0]} has no parameters cell"
+        named = set().union(*(names for names in cells.values() if names))
+        for page, names in cells.items():
+            assert names is None or names <= set(spec.inputs), (page, sorted(names - set(spec.inputs)))
+        assert named == set(spec.inputs), (spec.key, sorted(set(spec.inputs) - named))

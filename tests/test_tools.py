@@ -153,3 +153,17 @@ def test_browser_check_names_each_defect(tmp_path):
     for defect in ("image did not load: missing.png", "equation not typeset", "table wider than the column",
                    "JavaScript error", "HTTP 404"):
         assert defect in problems, defect
+
+
+def test_book_check_names_a_chapter_missing_from_the_generated_parts():
+    """The errata page and the landing page's chapter table are generated from CHAPTERS;
+    the book check fails when a chapter with errata has no table there, or the landing
+    table does not link a chapter."""
+    check = _load("check_book").check_chapter_parts
+    errata = '<table id="errata-ch01"></table><table id="errata-ch02"></table>'
+    intro = '<table class="x" id="chapters-table"><a href="book/ch01-earth-field.html#ch01">1</a></table>'
+    assert check(errata, intro, ["ch01", "ch02"], ["ch01"]) == []
+    problems = check(errata, intro, ["ch01", "ch03"], ["ch01", "ch02"])
+    assert problems == ["errata page has no table errata-ch03 for its chapter's errata",
+                        "landing page's chapter table does not link ch02"]
+    assert check(errata, "<p>no table</p>", [], ["ch01"]) == ["landing page has no chapters-table"]

@@ -146,6 +146,20 @@ def _download_problems(name, soup, page_path, html_dir, expect_images):
     return []
 
 
+def check_chapter_parts(errata_html, intro_html, errata_keys, chapter_keys):
+    """Problems of the pages that walk CHAPTERS: the errata page must show a table for each
+    chapter with errata (labelled ``errata-<key>``) and the landing page's chapter table
+    must link every chapter."""
+    problems = [f"errata page has no table errata-{key} for its chapter's errata"
+                for key in errata_keys if f'id="errata-{key}"' not in errata_html]
+    table = re.search(r'<table[^>]*id="chapters-table".*?</table>', intro_html, re.S)
+    if table is None:
+        return problems + ["landing page has no chapters-table"]
+    problems += [f"landing page's chapter table does not link {key}" for key in chapter_keys
+                 if f'href="book/{key}' not in table.group(0) and f'#{key}"' not in table.group(0)]
+    return problems
+
+
 def main(html_dir):
     html = Path(html_dir)
     problems = []
@@ -161,6 +175,13 @@ def main(html_dir):
         shown.update(page_shown)
         lines.append(f"  {name:32s} {counts['figures']:3d} figures  {counts['equations']:4d} equations  "
                      f"{counts['tables']:3d} tables")
+    from magbench import chapters
+
+    errata_page, intro_page = html / "book" / "errata.html", html / "book" / "intro.html"
+    if errata_page.is_file() and intro_page.is_file():
+        problems += check_chapter_parts(errata_page.read_text(encoding="utf-8"), intro_page.read_text(encoding="utf-8"),
+                                        sorted({e.chapter for e in chapters.errata()}),
+                                        [c.key for c in chapters.CHAPTERS])
     reports = list((html / "reports").glob("**/*.err.log")) if (html / "reports").exists() else []
     problems += [f"execution failure logged in {r}" for r in reports]
     for figure_id in figures.figure_ids():

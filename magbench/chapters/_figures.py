@@ -57,14 +57,29 @@ class FigureData:
 
 @dataclass(frozen=True)
 class FigureSpec:
-    """A registered figure."""
+    """A registered figure.
+
+    ``parameter_table`` is the figure's inputs, ``{name: FigureParameter}``, or a
+    function returning it: the defaults come from data files, so registering (and
+    listing) figures reads none; :attr:`parameters` reads them on first use.
+    """
 
     id: str
     title: str
     source: str
     compute: object
     plot: object
-    parameters: dict     # name -> FigureParameter
+    parameter_table: object     # dict name -> FigureParameter, or a function returning it
+
+    @property
+    def parameters(self):
+        """The figure's inputs, ``{name: FigureParameter}`` (SI defaults)."""
+        table = self.parameter_table
+        if callable(table):
+            if self.id not in _PARAMETERS:
+                _PARAMETERS[self.id] = table()
+            return _PARAMETERS[self.id]
+        return table
 
     @property
     def function_name(self):
@@ -75,6 +90,7 @@ class FigureSpec:
 #: Figure id -> FigureSpec, filled on first use by the figure modules each chapter names
 #: (:func:`magbench.chapters.figure_modules`).
 REGISTRY = {}
+_PARAMETERS = {}
 
 
 def register(spec):

@@ -1,5 +1,5 @@
 """The Earth's field: the centred dipole and geomagnetic coordinates, the field along an
-orbit (and a circular orbit with the dipole field along it), and the IGRF-14 model (through ppigrf). Pure functions of numpy arrays, SI.
+orbit (and a circular orbit with the dipole field along it, the cone its direction sweeps), and the IGRF-14 model (through ppigrf). Pure functions of numpy arrays, SI.
 
 Re-exports the public names of its modules.
 """
@@ -10,6 +10,8 @@ from .dipole import (dipole_b, dipole_equatorial_b, dipole_from_gauss_coefficien
                      dipole_inclination, dipole_mean_surface_b, dipole_rms_surface_b, dipole_total_b,
                      dipole_vertical_b, earth_dipole_moment_vector, lowes_spectrum)
 from .orbit import orbital_dipole_b
+from .field_cone import (cone_field_direction, field_cone_axis, field_cone_deviation, field_cone_half_angle,
+                         orbit_field_direction)
 from .igrf import (IgrfDipole, IgrfField, decimal_year_to_datetime, igrf_dipole, igrf_field,
                    igrf_gauss_coefficients, igrf_mean_surface_b)
 
@@ -18,4 +20,5 @@ __all__ = ["geomagnetic_latitude", "geomagnetic_longitude", "dipole_equatorial_b
            "earth_dipole_moment_vector", "dipole_from_gauss_coefficients", "dipole_mean_surface_b",
            "dipole_rms_surface_b", "lowes_spectrum", "orbital_dipole_b", "IgrfDipole", "IgrfField",
            "decimal_year_to_datetime", "igrf_dipole", "igrf_field", "igrf_mean_surface_b",
-           "igrf_gauss_coefficients", "CircularOrbit"]
+           "igrf_gauss_coefficients", "CircularOrbit", "field_cone_half_angle", "field_cone_axis",
+           "orbit_field_direction", "cone_field_direction", "field_cone_deviation"]

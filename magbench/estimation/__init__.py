@@ -4,9 +4,11 @@ Thesis §4.2, eq. (39): the complementary filter that blends the integrated gyro
 with an absolute angle from another sensor (:mod:`.complementary`). Further estimators
 build on it: 3-D tilt from gyro and accelerometer (:mod:`.tilt`) and heading from the
 magnetometer (:mod:`.heading`), and two-vector attitude on orbit (:mod:`.triad`,
-SamSat-218D). Re-exports the public functions of its modules.
+SamSat-218D), and linear vs exponential decay fits (:mod:`.decay_fit`, TNS-0 Fig. 14).
+Re-exports the public functions of its modules.
 """
 
+from .decay_fit import DecayFit, corrected_aic, fit_exponential_decay, fit_linear_decay
 from .complementary import complementary_filter, complementary_filter_step, complementary_time_constant
 from .heading import magnetometer_heading
 from .triad import (magnitude_consistent, samsat_triad_frame, triad_attitude, triad_covariance,
@@ -17,5 +19,6 @@ __all__ = [
     "complementary_filter", "complementary_filter_step", "complementary_time_constant",
     "accelerometer_tilt", "strapdown_orientation", "rest_gyro_bias", "complementary_tilt",
     "magnetometer_heading", "triad_attitude", "samsat_triad_frame", "triad_covariance",
-    "magnitude_consistent", "vectors_well_separated",
+    "magnitude_consistent", "vectors_well_separated", "DecayFit", "fit_linear_decay", "fit_exponential_decay",
+    "corrected_aic",
 ]

@@ -142,14 +142,14 @@ def three_axis_pair_currents(target_b, background_b, radii, separations, turns, 
     return np.linalg.solve(coupling, target - background)
 
 
-_SHAPES = ("circle", "square")
+_SHAPES = ("round", "square")
 
 
 def _system(shapes, sizes, positions, ampere_turns):
     shapes = list(shapes)
     bad = [s for s in shapes if s not in _SHAPES]
     if bad:
-        raise ValueError(f"shapes must be 'circle' or 'square', got {bad[0]!r}")
+        raise ValueError(f"shapes must be 'round' or 'square', got {bad[0]!r}")
     sz = as_positive("sizes", sizes, unit="m")
     pos = as_finite("positions", positions)
     ni = as_finite("ampere_turns", ampere_turns)
@@ -167,10 +167,10 @@ def coaxial_system_b(points, shapes, sizes, positions, ampere_turns):
     ----------
     points : array_like, shape (..., 3)
         Observation points [m].
-    shapes : sequence of {"circle", "square"}
+    shapes : sequence of {"round", "square"}
         Shape of each coil [-].
     sizes : array_like, shape (n,)
-        Radius of each circle, side of each square [m], > 0.
+        Radius of each round coil, side of each square [m], > 0.
     positions : array_like, shape (n,)
         z of each coil's plane [m].
     ampere_turns : array_like, shape (n,)
@@ -190,7 +190,7 @@ def coaxial_system_b(points, shapes, sizes, positions, ampere_turns):
 
     Examples
     --------
-    >>> b = coaxial_system_b([0.0, 0.0, 0.0], ["circle", "circle"], [0.5, 0.5], [-0.25, 0.25], [253.0, 253.0])
+    >>> b = coaxial_system_b([0.0, 0.0, 0.0], ["round", "round"], [0.5, 0.5], [-0.25, 0.25], [253.0, 253.0])
     >>> from magbench.constants import MU_0
     >>> round(float(b[2] / MU_0), 1)
     362.1
@@ -202,7 +202,7 @@ def coaxial_system_b(points, shapes, sizes, positions, ampere_turns):
     for shape, size, z0, w in zip(shapes, sz, pos, ni):
         if w == 0.0:
             continue
-        if shape == "circle":
+        if shape == "round":
             out += loop_b_posed(p, size, w, 1, z0 * z, z)
         else:
             out += square_loop_b(p, size, w, 1, z0 * z, z)
@@ -239,10 +239,10 @@ def coaxial_system_sphere_nonuniformity(shapes, sizes, positions, ampere_turns, 
 
     Parameters
     ----------
-    shapes : sequence of {"circle", "square"}
+    shapes : sequence of {"round", "square"}
         Shape of each coil [-].
     sizes : array_like, shape (n,)
-        Radius of each circle, side of each square [m], > 0.
+        Radius of each round coil, side of each square [m], > 0.
     positions : array_like, shape (n,)
         z of each coil's plane [m].
     ampere_turns : array_like, shape (n,)
@@ -263,7 +263,7 @@ def coaxial_system_sphere_nonuniformity(shapes, sizes, positions, ampere_turns, 
 
     Examples
     --------
-    >>> dev = coaxial_system_sphere_nonuniformity(["circle"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0], 1 / 3)
+    >>> dev = coaxial_system_sphere_nonuniformity(["round"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0], 1 / 3)
     >>> round(100 * dev, 2)     # the Helmholtz pair: 1.26 % in a sphere of radius r/3
     1.26
     """
@@ -280,10 +280,10 @@ def coaxial_system_cylinder_nonuniformity(shapes, sizes, positions, ampere_turns
 
     Parameters
     ----------
-    shapes : sequence of {"circle", "square"}
+    shapes : sequence of {"round", "square"}
         Shape of each coil [-].
     sizes : array_like, shape (n,)
-        Radius of each circle, side of each square [m], > 0.
+        Radius of each round coil, side of each square [m], > 0.
     positions : array_like, shape (n,)
         z of each coil's plane [m].
     ampere_turns : array_like, shape (n,)
@@ -307,7 +307,7 @@ def coaxial_system_cylinder_nonuniformity(shapes, sizes, positions, ampere_turns
 
     Examples
     --------
-    >>> dev = coaxial_system_cylinder_nonuniformity(["circle"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0], 0.1, 0.2)
+    >>> dev = coaxial_system_cylinder_nonuniformity(["round"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0], 0.1, 0.2)
     >>> round(100 * dev, 4)
     0.0186
     """
@@ -325,10 +325,10 @@ def coaxial_system_uniform_radius(shapes, sizes, positions, ampere_turns, tolera
 
     Parameters
     ----------
-    shapes : sequence of {"circle", "square"}
+    shapes : sequence of {"round", "square"}
         Shape of each coil [-].
     sizes : array_like, shape (n,)
-        Radius of each circle, side of each square [m], > 0.
+        Radius of each round coil, side of each square [m], > 0.
     positions : array_like, shape (n,)
         z of each coil's plane [m].
     ampere_turns : array_like, shape (n,)
@@ -350,7 +350,7 @@ def coaxial_system_uniform_radius(shapes, sizes, positions, ampere_turns, tolera
 
     Examples
     --------
-    >>> r = coaxial_system_uniform_radius(["circle"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0], 0.01)
+    >>> r = coaxial_system_uniform_radius(["round"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0], 0.01)
     >>> round(r, 3)
     0.314
     """
@@ -359,9 +359,9 @@ def coaxial_system_uniform_radius(shapes, sizes, positions, ampere_turns, tolera
     if tol >= 1.0:
         raise ValueError(f"tolerance must lie in (0, 1), got {tol!r}")
     shapes_, sz, pos, _ = system
-    # The nearest wire: a circle's wire is at distance hypot(r, z); a square's sides at
+    # The nearest wire: a round coil's wire is at distance hypot(r, z); a square's sides at
     # hypot(side/2, z). Stop short of it.
-    half = np.array([size if sh == "circle" else size / 2.0 for sh, size in zip(shapes_, sz)])
+    half = np.array([size if sh == "round" else size / 2.0 for sh, size in zip(shapes_, sz)])
     s_max = 0.999 * float(np.min(np.hypot(half, pos)))
 
     def dev(s):

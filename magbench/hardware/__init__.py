@@ -1,5 +1,5 @@
 """Hardware that makes or measures a field: turns and wires, air-core magnetorquers and
-their design space, windings, cored rods and electromagnets, permanent magnets, and the
+their design space, windings, cored rods and electromagnets, permanent magnets, hysteresis rods, and the
 sensors (datasheet error models).
 
 Pure functions of numpy arrays, SI. Re-exports the public functions of its modules.
@@ -9,7 +9,7 @@ from .sensors import (HMC5883L_MAX_OUTPUT_RATE, HMC5883L_NOISE_FLOOR, MPU6050_AC
                       MPU6050_ACCEL_ZERO_G_TOLERANCE, MPU6050_DLPF_BANDWIDTH, MPU6050_GYRO_NOISE_DENSITY,
                       MPU6050_GYRO_TOTAL_RMS_NOISE, MPU6050_GYRO_ZRO_TOLERANCE, accelerometer_readings,
                       gyro_readings, magnetometer_readings, noise_std_from_density)
-from .turn import SHAPES, awg_diameter, turn_area, turn_length, wire_area, wire_diameter
+from .turn import SHAPES, Turn, awg_diameter, turn_area, turn_length, wire_area, wire_diameter
 from .magnetorquer import (coil_current, coil_mass, coil_mass_for_moment, coil_resistance,
                            current_for_moment, dipole_moment, joule_power, joule_power_for_moment,
                            joule_power_for_winding_length, mass_power_product,
@@ -17,20 +17,23 @@ from .magnetorquer import (coil_current, coil_mass, coil_mass_for_moment, coil_r
                            turn_resistance, turns_from_resistance, turns_from_winding_length,
                            turns_per_volt_bounds, winding_density, winding_length,
                            wire_area_for_moment, wire_diameter_from_resistance)
-from .coil_design import binding_limit, coil_designs, design_explanation, design_magnetorquer
+from .coil_design import binding_limit, coil_designs, design_magnetorquer
 from .cores import (core_central_magnetization, effective_permeability, electromagnet_design,
                     field_for_magnetization, magnetization_curve, rod_demagnetizing_factor)
 from .magnets import (magnet_mass_for_torque, magnet_moment_per_mass, magnet_torque_per_mass,
                       permanent_magnet_min_mass)
+from .hysteresis import (hysteresis_damping_torque, hysteresis_loop_energy, hysteresis_response,
+                         hysteresis_slope, limb_induction, limiting_loop_energy, rod_cycle_energy)
 from .winding import winding_mass, winding_power, winding_resistance, winding_voltage
 
-__all__ = ["SHAPES", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
+__all__ = ["limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
+           "rod_cycle_energy", "limiting_loop_energy", "hysteresis_damping_torque", "SHAPES", "Turn", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
            "dipole_moment", "current_for_moment", "coil_current", "turn_resistance", "coil_resistance",
            "moment_from_voltage", "wire_area_for_moment", "joule_power", "joule_power_for_moment",
            "turns_from_winding_length", "winding_length", "joule_power_for_winding_length", "coil_mass",
            "coil_mass_for_moment", "mass_power_product", "winding_density", "mass_power_product_kovalenko",
            "supply_voltage", "turns_per_volt_bounds", "turns_from_resistance",
-           "wire_diameter_from_resistance", "coil_designs", "binding_limit", "design_explanation",
+           "wire_diameter_from_resistance", "coil_designs", "binding_limit",
            "design_magnetorquer", "rod_demagnetizing_factor", "effective_permeability",
            "magnetization_curve", "field_for_magnetization", "core_central_magnetization",
            "electromagnet_design", "magnet_torque_per_mass", "magnet_mass_for_torque",

@@ -12,7 +12,7 @@ from .._validate import as_nonnegative, as_positive
 from .magnetorquer import _RTOL
 from .turn import _check_shape, turn_area, turn_length
 
-__all__ = ["coil_designs", "binding_limit", "design_explanation", "design_magnetorquer"]
+__all__ = ["coil_designs", "binding_limit", "design_magnetorquer"]
 
 
 # Largest number of (turns, wire) rows the design solver will enumerate.
@@ -195,56 +195,6 @@ def _limit(checked, adequate, any_power_mass, max_layers):
     return "winding fit", {"max_layers": max_layers, "winding_length": length_avail}
 
 
-def design_explanation(kind, numbers, max_power, max_mass, moment, voltage):
-    """A sentence saying why no design exists (the CLI and the book print it).
-
-    Not in the sources: the wording of the solver's verdict, from the numbers of
-    :func:`binding_limit` (thesis §3.2, eqs. (20), (26)/(30)).
-
-    Parameters
-    ----------
-    kind : str
-        The binding limit, as :func:`binding_limit` returns it [-].
-    numbers : dict
-        Its numbers, as :func:`binding_limit` returns them (SI) [-].
-    max_power, max_mass, moment, voltage : float
-        The limits [W], [kg], the required moment [A·m²] and the supply [V].
-
-    Returns
-    -------
-    str
-        The explanation.
-    """
-    w_max, m_max, m_req, u = max_power, max_mass, moment, voltage
-    if kind == "moment":
-        return (
-            f"moment: no wire reaches {m_req:.4g} A·m² at {u:.4g} V. By eq. (20) the thickest "
-            f"wire, d = {numbers['thickest_wire'] * 1e3:.4g} mm, gives {numbers['thickest_wire_moment']:.4g} A·m² "
-            f"whatever the turns; eq. (21) needs S_r >= {numbers['wire_area_needed']:.4g} m² (d >= "
-            f"{numbers['wire_diameter_needed'] * 1e3:.4g} mm) or a higher voltage"
-        )
-    if kind == "power and mass":
-        return (
-            f"power and mass together: with the thinnest adequate wire, d = {numbers['wire'] * 1e3:.4g} mm "
-            f"(moment {numbers['wire_moment']:.4g} A·m²), W <= {w_max:.4g} W needs N >= {numbers['turns_for_power']} "
-            f"but M <= {m_max:.4g} kg allows N <= {numbers['turns_for_mass']}. Their product, eq. (26)/(30), "
-            f"M·W = 16ρρ̃m²/l² = {numbers['mass_power_product']:.4g} kg·W whatever N and U, exceeds "
-            f"max_mass·max_power = {numbers['budget_product']:.4g} kg·W; raise a limit, enlarge the "
-            f"coil or use a thinner wire closer to the required moment"
-        )
-    if kind == "integer turns":
-        return (
-            f"integer turns: for d = {numbers['wire'] * 1e3:.4g} mm the limits allow "
-            f"{numbers['exact_turns_for_power']:.6g} <= N <= {numbers['exact_turns_for_mass']:.6g}, "
-            f"which holds no integer"
-        )
-    return (
-        f"winding fit: designs meet the moment, power and mass limits, but none fits in "
-        f"{numbers['max_layers']} layer(s) over {numbers['winding_length']:.4g} m at the wires' pitch "
-        f"(enamel included)"
-    )
-
-
 def _solve(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
            enamel_thickness, winding_length, max_layers, require_fit, overall_diameters):
     checked = _design_inputs(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity,
@@ -340,7 +290,9 @@ def design_magnetorquer(
         ``"min_power"`` and ``"min_mass"``: the feasible design of least power and of
         least mass, each a dict of scalars, or None. ``"feasible"``
         (bool), ``"binding_limit"`` (None, ``"moment"``, ``"power and mass"``,
-        ``"integer turns"`` or ``"winding fit"``) and ``"explanation"`` (str).
+        ``"integer turns"`` or ``"winding fit"``) and ``"limit_numbers"`` (the numbers
+        that show it, SI, as :func:`binding_limit` returns them; None when feasible).
+        The command line words them (``magbench design-coil``).
 
     Notes
     -----
@@ -364,24 +316,14 @@ def design_magnetorquer(
     table, checked, adequate, any_power_mass = _solve(
         moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
         enamel_thickness, winding_length, max_layers, require_fit, overall_diameters)
-    m_req, u = checked[0], checked[1]
     out = dict(table)
     out["feasible"] = feasible = out["turns"].size > 0
     out["min_power"] = out["min_mass"] = None
-    out["binding_limit"] = None
+    out["binding_limit"] = out["limit_numbers"] = None
     if feasible:
         for label, col in (("min_power", "power"), ("min_mass", "mass")):
             i = int(np.argmin(out[col]))
             out[label] = {k: out[k][i].item() for k in _COLUMNS}
-        out["explanation"] = (
-            f"{out['turns'].size} feasible designs; least power "
-            f"{out['min_power']['power']:.4g} W at N = {out['min_power']['turns']}, "
-            f"d = {out['min_power']['wire_diameter'] * 1e3:.4g} mm; least mass "
-            f"{out['min_mass']['mass'] * 1e3:.4g} g at N = {out['min_mass']['turns']}, "
-            f"d = {out['min_mass']['wire_diameter'] * 1e3:.4g} mm"
-        )
         return out
-    kind, numbers = _limit(checked, adequate, any_power_mass, max_layers)
-    out["binding_limit"] = kind
-    out["explanation"] = design_explanation(kind, numbers, checked[3], checked[4], m_req, u)
+    out["binding_limit"], out["limit_numbers"] = _limit(checked, adequate, any_power_mass, max_layers)
     return out

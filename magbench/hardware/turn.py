@@ -6,11 +6,13 @@ IEC 60317 wire series (not in the sources). A turn has the characteristic size `
 of a square turn (``shape="square"``, area l², length 4l). SI throughout.
 """
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from .._validate import as_finite, as_positive
 
-__all__ = ["SHAPES", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter"]
+__all__ = ["SHAPES", "Turn", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter"]
 
 
 #: The turn shapes understood by the ``shape`` keyword.
@@ -31,6 +33,47 @@ def _area_factor(shape):
 def _length_factor(shape):
     """Turn length / l: π for a round turn, 4 for a square one."""
     return np.pi if _check_shape(shape) == "round" else 4.0
+
+
+@dataclass(frozen=True)
+class Turn:
+    """The geometry of one turn of a winding, for every coil in the book.
+
+    ``side`` is the thesis's characteristic size l: the diameter of a round turn or the
+    side of a square one [m]. Build one with :meth:`round` (from the radius, as the
+    simulator coils are given) or :meth:`square`; the winding functions
+    (:func:`magbench.hardware.winding_resistance`, …) take it for simulator coils and
+    magnetorquers alike.
+
+    Thesis eq. (19) and eqs. (28)–(31).
+    """
+
+    shape: str
+    side: float
+
+    def __post_init__(self):
+        _check_shape(self.shape)
+        object.__setattr__(self, "side", as_positive("side", self.side, unit="m"))
+
+    @classmethod
+    def round(cls, radius):
+        """A round turn of ``radius`` [m] (the coil radius a_c of thesis §2.2)."""
+        return cls("round", 2.0 * as_positive("radius", radius, unit="m"))
+
+    @classmethod
+    def square(cls, side):
+        """A square turn of ``side`` [m] (the magnetorquer's l of thesis §3.2)."""
+        return cls("square", side)
+
+    @property
+    def area(self):
+        """Enclosed area [m²]."""
+        return turn_area(self.side, self.shape)
+
+    @property
+    def length(self):
+        """Length of one turn [m]."""
+        return turn_length(self.side, self.shape)
 
 
 def turn_area(side, shape="round"):

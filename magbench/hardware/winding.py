@@ -1,23 +1,34 @@
-"""Electrics and mass of a winding of round turns: resistance, voltage, power, mass.
+"""Electrics and mass of a winding: resistance, voltage, power, mass.
 
-Thesis §2.2 (the winding formulas after eq. (16)): R = 2πaρN/S₀, U = RI, P = UI. SI
-throughout.
+Thesis §2.2 (the winding formulas after eq. (16)): R = 2πaρN/S₀, U = RI, P = UI, and
+eq. (24) for the mass. One API for every coil: the first argument is the turn's
+geometry, a :class:`~magbench.hardware.turn.Turn` (round or square: a simulator coil
+and a magnetorquer alike), or a number, read as the radius of a round turn (the
+simulator coils of chapter 2). SI throughout.
 """
 
 from .._validate import as_finite, as_positive
 from .magnetorquer import coil_mass, coil_resistance
-from .turn import wire_area
+from .turn import Turn, wire_area
+
+
+def _turn(turn):
+    """A :class:`Turn` from a Turn or the radius of a round turn [m]."""
+    if isinstance(turn, Turn):
+        return turn
+    return Turn.round(turn)
 
 __all__ = ["winding_resistance", "winding_voltage", "winding_power", "winding_mass"]
 
 
-def winding_resistance(radius, turns, wire_diameter, resistivity):
-    r"""Resistance of a circular winding.
+def winding_resistance(turn, turns, wire_diameter, resistivity):
+    r"""Resistance of a winding (simulator coil or magnetorquer).
 
     Parameters
     ----------
-    radius : array_like
-        Coil radius a_c [m], > 0.
+    turn : Turn or array_like
+        The turn's geometry (:class:`~magbench.hardware.turn.Turn`), or the coil radius
+        a_c of a round turn [m], > 0.
     turns : array_like
         Number of turns N [-], > 0.
     wire_diameter : array_like
@@ -44,19 +55,19 @@ def winding_resistance(radius, turns, wire_diameter, resistivity):
     >>> round(float(winding_resistance(0.5, 110, 0.75e-3, 0.0175e-6)), 2)
     13.69
     """
-    # A circular winding of radius a is the magnetorquer's round coil of turn diameter 2a.
-    a = as_positive("radius", radius, unit="m")
-    return coil_resistance(turns, 2.0 * a, wire_area(as_positive("wire_diameter", wire_diameter, unit="m")),
-                           resistivity, shape="round")
+    t = _turn(turn)
+    return coil_resistance(turns, t.side, wire_area(as_positive("wire_diameter", wire_diameter, unit="m")),
+                           resistivity, shape=t.shape)
 
 
-def winding_voltage(radius, turns, wire_diameter, resistivity, current):
-    r"""Supply voltage of a circular winding at a given current.
+def winding_voltage(turn, turns, wire_diameter, resistivity, current):
+    r"""Supply voltage of a winding at a given current.
 
     Parameters
     ----------
-    radius : array_like
-        Coil radius a_c [m], > 0.
+    turn : Turn or array_like
+        The turn's geometry (:class:`~magbench.hardware.turn.Turn`), or the coil radius
+        a_c of a round turn [m], > 0.
     turns : array_like
         Number of turns N [-], > 0.
     wire_diameter : array_like
@@ -82,16 +93,17 @@ def winding_voltage(radius, turns, wire_diameter, resistivity, current):
     31.5
     """
     i = as_finite("current", current)
-    return winding_resistance(radius, turns, wire_diameter, resistivity) * i
+    return winding_resistance(turn, turns, wire_diameter, resistivity) * i
 
 
-def winding_power(radius, turns, wire_diameter, resistivity, current):
-    r"""Ohmic power dissipated in a circular winding.
+def winding_power(turn, turns, wire_diameter, resistivity, current):
+    r"""Ohmic power dissipated in a winding.
 
     Parameters
     ----------
-    radius : array_like
-        Coil radius a_c [m], > 0.
+    turn : Turn or array_like
+        The turn's geometry (:class:`~magbench.hardware.turn.Turn`), or the coil radius
+        a_c of a round turn [m], > 0.
     turns : array_like
         Number of turns N [-], > 0.
     wire_diameter : array_like
@@ -117,16 +129,17 @@ def winding_power(radius, turns, wire_diameter, resistivity, current):
     72.4
     """
     i = as_finite("current", current)
-    return winding_resistance(radius, turns, wire_diameter, resistivity) * i * i
+    return winding_resistance(turn, turns, wire_diameter, resistivity) * i * i
 
 
-def winding_mass(radius, turns, wire_diameter, density):
-    r"""Conductor mass of a circular winding.
+def winding_mass(turn, turns, wire_diameter, density):
+    r"""Conductor mass of a winding.
 
     Parameters
     ----------
-    radius : array_like
-        Coil radius a_c [m], > 0.
+    turn : Turn or array_like
+        The turn's geometry (:class:`~magbench.hardware.turn.Turn`), or the coil radius
+        a_c of a round turn [m], > 0.
     turns : array_like
         Number of turns N [-], > 0.
     wire_diameter : array_like
@@ -149,6 +162,6 @@ def winding_mass(radius, turns, wire_diameter, density):
     >>> round(float(winding_mass(0.5, 110, 0.75e-3, 8.9e3)), 2)
     1.36
     """
-    a = as_positive("radius", radius, unit="m")
-    return coil_mass(turns, 2.0 * a, wire_area(as_positive("wire_diameter", wire_diameter, unit="m")),
-                     density, shape="round")
+    t = _turn(turn)
+    return coil_mass(turns, t.side, wire_area(as_positive("wire_diameter", wire_diameter, unit="m")),
+                     density, shape=t.shape)

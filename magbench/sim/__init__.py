@@ -1,14 +1,25 @@
 """Simulations composed from the physics families: one integrator (:func:`rk4_step`), one
 result type (:class:`SimulationResult`), the mock-up's PID loop (:mod:`.pid_loop`) and the
-bench loop (:mod:`.bench`), and B-dot detumbling on orbit (:mod:`.detumble`).
+bench loop (:mod:`.bench`), B-dot detumbling on orbit (:mod:`.detumble`), the spinning spacecraft with a
+coaxial rotor (:mod:`.spinning`) and the passive magnetic satellite (:mod:`.passive`).
 
-Re-exports the integrator, the result type and detumbling; the loops are imported from their
-modules.
+Re-exports the integrator, the result type, detumbling, the spinning spacecraft and the passive
+satellite; the loops are imported from their modules.
 """
 
 from .detumble import DetumbleRun, detumble_monte_carlo, detumble_time, simulate_detumble
 from .integrate import rk4_step
+from .passive import PassiveRun, PassiveSatellite, initial_passive_state, simulate_passive
 from .result import SimulationResult
+from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimensionless, rotor_finite_difference_monodromy,
+                       rotor_floquet_multipliers, rotor_linearised_matrices, rotor_normalised_rhs,
+                       rotor_satellite_from_dimensionless, rotor_stability_map, simulate_rotor,
+                       simulate_rotor_normalised)
 
 __all__ = ["rk4_step", "SimulationResult", "DetumbleRun", "simulate_detumble", "detumble_time",
-           "detumble_monte_carlo"]
+           "detumble_monte_carlo",
+           "PassiveSatellite", "PassiveRun", "simulate_passive", "initial_passive_state",
+           "RotorSatellite", "RotorRun", "rotor_dimensionless",
+           "rotor_satellite_from_dimensionless", "rotor_normalised_rhs", "rotor_linearised_matrices",
+           "rotor_floquet_multipliers", "rotor_stability_map", "rotor_finite_difference_monodromy",
+           "simulate_rotor_normalised", "rotor_body_rhs", "simulate_rotor"]

@@ -121,7 +121,7 @@ class BenchSetup:
 
     @classmethod
     def from_parameters(cls, params, **changes):
-        """The bench of the chapter-4 inputs (``chapter_parameters("ch04")``, SI).
+        """The bench of a dict of the bench's inputs (SI; the mock-up chapter's inputs).
 
         Field: ``bench_field_h`` (the 262 A/m measured at the simulator's centre) combined
         with ``bench_background_h`` at ``bench_background_azimuth``; gains: the triple
@@ -521,8 +521,8 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
 
     Examples
     --------
-    >>> from magbench.params import chapter_parameters
-    >>> s = BenchSetup.from_parameters(chapter_parameters("ch04", overrides=""))
+    >>> from magbench.io import load_parameter_set
+    >>> s = BenchSetup.from_parameters({k: p.value_si for k, p in load_parameter_set("thesis").items()})
     >>> run = simulate_bench(s, np.pi / 3, duration=120.0)
     >>> bool(run.error_band[0] < np.radians(1.0))
     True
@@ -624,8 +624,8 @@ def simulate_bench_reference(setup, psi_des, *, duration, release_angle=0.0, rel
 
     Examples
     --------
-    >>> from magbench.params import chapter_parameters
-    >>> s = BenchSetup.from_parameters(chapter_parameters("ch04", overrides=""))
+    >>> from magbench.io import load_parameter_set
+    >>> s = BenchSetup.from_parameters({k: p.value_si for k, p in load_parameter_set("thesis").items()})
     >>> simulate_bench_reference(s, 1.0, duration=0.05).psi.shape
     (6,)
     """
@@ -706,8 +706,8 @@ def monte_carlo(setup, psi_des, *, members, seed, duration, moment_tolerance, re
 
     Examples
     --------
-    >>> from magbench.params import chapter_parameters
-    >>> s = BenchSetup.from_parameters(chapter_parameters("ch04", overrides=""))
+    >>> from magbench.io import load_parameter_set
+    >>> s = BenchSetup.from_parameters({k: p.value_si for k, p in load_parameter_set("thesis").items()})
     >>> a = monte_carlo(s, 1.0, members=3, seed=1, duration=1.0, moment_tolerance=0.05,
     ...                 release_angle_spread=0.5, release_rate_std=0.01, thread_stiffness_factor=3.0,
     ...                 window=0.5)

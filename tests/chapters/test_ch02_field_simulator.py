@@ -17,7 +17,7 @@ from magbench import chapters, coils, figures
 from magbench.chapters import ch02_field_simulator
 from magbench.cli import main
 from magbench.constants import MU_0
-from magbench.figures import thesis_ch2
+from magbench.chapters.ch02_field_simulator import figures as thesis_ch2
 
 A, D_BUILT, N, I = 0.5, 0.51, 110, 2.3   # as built: seed lines 272, 309
 MEASURED = 262.0                         # seed line 318
@@ -177,7 +177,7 @@ def test_three_axis_bad_input():
 
 
 def test_system_helmholtz_matches_the_pair_functions():
-    system = (["circle"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0])
+    system = (["round"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0])
     # Two independent samplings of the same field (the pair functions use the meridian
     # plane): equal to 1e-6 radii, 1e-6 relative.
     assert_allclose(coils.coaxial_system_uniform_radius(*system, 0.01),
@@ -190,7 +190,7 @@ def test_maxwell_coil_has_sixth_order_axis():
     # Maxwell's coil cancels the 2nd and 4th derivatives of the axial field at the centre
     # (Kovalenko §3.4): the deviation on the axis grows like z⁶ (doubling z: ×64).
     r1 = np.sqrt(4 / 7)
-    system = (["circle"] * 3, [r1, 1.0, r1], [-np.sqrt(3 / 7), 0, np.sqrt(3 / 7)], [49.0, 64.0, 49.0])
+    system = (["round"] * 3, [r1, 1.0, r1], [-np.sqrt(3 / 7), 0, np.sqrt(3 / 7)], [49.0, 64.0, 49.0])
     z = np.array([0.0, 0.02, 0.04])
     b = coils.coaxial_system_b(np.stack([0 * z, 0 * z, z], -1), *system)[:, 2]
     dev = np.abs(b[1:] / b[0] - 1)
@@ -201,7 +201,7 @@ def test_system_bad_input():
     with pytest.raises(ValueError, match="shapes"):
         coils.coaxial_system_b([0, 0, 0], ["triangle"], [1.0], [0.0], [1.0])
     with pytest.raises(ValueError, match="positions"):
-        coils.coaxial_system_b([0, 0, 0], ["circle"] * 2, [1.0, 1.0], [0.0], [1.0, 1.0])
+        coils.coaxial_system_b([0, 0, 0], ["round"] * 2, [1.0, 1.0], [0.0], [1.0, 1.0])
 
 
 # ----------------------------------------------------------------- compare and hypotheses
@@ -308,7 +308,7 @@ def test_fig03_equal_power_and_field():
         lengths = np.where(square, 4 * c["size"], 2 * np.pi * c["size"])
         power = p["copper_resistivity"] * np.sum(c["ampere_turns"] ** 2 * lengths) / p["winding_area"]
         assert_allclose(power, p["power"], rtol=1e-12)
-        shapes = ["square" if q else "circle" for q in square]
+        shapes = ["square" if q else "round" for q in square]
         h = np.linalg.norm(coils.coaxial_system_b(np.zeros(3), shapes, c["size"], c["position"],
                                                   c["ampere_turns"])) / MU_0
         assert_allclose(h, p["center_h"], rtol=1e-12)

@@ -6,6 +6,8 @@ share one run. Figures whose defaults take more than 3 s say so in their title (
 ``magbench figures`` lists).
 """
 
+from functools import partial
+
 import numpy as np
 
 from .._base import chapter_parameters
@@ -345,36 +347,36 @@ def plot_triad_rejection(data):
 
 register(FigureSpec("samsat-fig1", "Gain k against the initial separation rates (SamSat-218D Fig. 1, reconstruction)",
                     f"{SOURCE}, Fig. 1", compute_fig1, plot_fig1,
-                    _parameters("max_dipole", "initial_rate_x", "initial_rate_y", "fig2_rate_min", "fig2_rate_max",
+                    partial(_parameters, "max_dipole", "initial_rate_x", "initial_rate_y", "fig2_rate_min", "fig2_rate_max",
                                 "fig2_rate_step", *_ORBIT)))
 register(FigureSpec("samsat-fig2", "Damping time, continuous and discrete modes (SamSat-218D Fig. 2, "
                     "reconstruction; about 25 s to compute)", f"{SOURCE}, Fig. 2", compute_fig2, plot_fig2,
-                    _parameters(*_DUTY, estimator=FigureParameter(0.0, "1", "Ḃ estimator of the discrete mode: "
+                    partial(_parameters, *_DUTY, estimator=FigureParameter(0.0, "1", "Ḃ estimator of the discrete mode: "
                                                                   "0 model, 1 hold, 2 propagate"))))
 register(FigureSpec("ch05-rate-decay", "Rate decay, continuous and discrete (about 25 s to compute, shared with "
                     "samsat-fig2)", f"{SOURCE}, Rate damping", compute_rate_decay, plot_rate_decay,
-                    _parameters(*_DUTY)))
+                    partial(_parameters, *_DUTY)))
 register(FigureSpec("ch05-duty-estimators", "Damping kept by each duty-cycle estimator (about 15 s to compute)",
                     f"{SOURCE}, Rate damping (the estimators are ours)", compute_duty_estimators, plot_duty_estimators,
-                    _parameters(*_DUTY, span=FigureParameter(1020.0, "s", "span over which |ω| drops (60 cycles; "
+                    partial(_parameters, *_DUTY, span=FigureParameter(1020.0, "s", "span over which |ω| drops (60 cycles; "
                                                              "ours)"))))
 register(FigureSpec("ch05-detumble-distribution", "3U envelope: 1000 detumble times beside Cp557 and Kovalenko (6.50) "
                     "(about 12 s to compute)", "Cp557/detumble; Kovalenko (1975) eq. (6.50)", compute_distribution,
-                    plot_distribution, _parameters(*_ENVELOPE)))
+                    plot_distribution, partial(_parameters, *_ENVELOPE)))
 register(FigureSpec("ch05-basilisk-peer", "Detumble times beside Basilisk's 18 runs (about 15 s to compute)",
                     "Basilisk 2.12.1 (shared reference §6.1)", compute_basilisk, plot_basilisk,
-                    _parameters("inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold",
+                    partial(_parameters, "inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold",
                                 "envelope_altitude", "envelope_inclination", "envelope_dipole_field",
                                 "envelope_dipole_tilt", "envelope_gain")))
 register(FigureSpec("ch05-gain-sweep", "Projected B-dot: median detumble time against k/k* (about 5 s to compute)",
                     "Avanzini & Giulietti (2012); Kovalenko (1975) eq. (6.7)", compute_gain_sweep, plot_gain_sweep,
-                    _parameters("inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold",
+                    partial(_parameters, "inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold",
                                 "earth_rotation_rate", "envelope_altitude", "envelope_inclination",
                                 "envelope_dipole_field", "envelope_dipole_tilt", "envelope_seed",
                                 "integration_step")))
 register(FigureSpec("ch05-triad-geometry", "TRIAD's error against the field–Sun angle", f"{SOURCE}, Attitude "
                     "determination; Shuster & Oh (1981)", compute_triad_geometry, plot_triad_geometry,
-                    _parameters("field_sigma", "sun_sigma")))
+                    partial(_parameters, "field_sigma", "sun_sigma")))
 register(FigureSpec("ch05-triad-rejection", "TRIAD with and without the modulus tests", f"{SOURCE}, Attitude determination (the rejection tests)",
                     compute_triad_rejection, plot_triad_rejection,
-                    _parameters(*_ORBIT, "rejection_margin", "magnetometer_noise", "field_model_error")))
+                    partial(_parameters, *_ORBIT, "rejection_margin", "magnetometer_noise", "field_model_error")))

@@ -5,12 +5,12 @@ from functools import lru_cache
 
 import numpy as np
 
-from .. import estimation, sensors
-from ..io import broad
-from ..constants import MU_0
-from ..chapters.ch04_mockup import CHAPTER
-from ..params import chapter_parameters
-from . import FigureData, FigureParameter, FigureSpec, Series, register
+from ... import estimation, sensors
+from ...io import broad
+from ...constants import MU_0
+from . import CHAPTER
+from .._base import chapter_parameters
+from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 
 SOURCE = "Bui (2016), thesis §4, eq. (39)"
 GRAVITY = 9.80665
@@ -151,7 +151,7 @@ def _alpha_parameters():
 
 
 register(FigureSpec("ch04-filter-alpha", "Eq. (39): error and time constant against the coefficient A",
-                    SOURCE, compute_filter_alpha, plot_filter_alpha, _alpha_parameters()))
+                    SOURCE, compute_filter_alpha, plot_filter_alpha, _alpha_parameters))
 
 
 # --- heading: gravity cannot see it, the magnetometer can -----------------------------------
@@ -239,7 +239,7 @@ def _heading_parameters():
 
 
 register(FigureSpec("ch04-heading-fusion", "Heading about the vertical: gyro, accelerometer, magnetometer",
-                    SOURCE, compute_heading_fusion, plot_heading_fusion, _heading_parameters()))
+                    SOURCE, compute_heading_fusion, plot_heading_fusion, _heading_parameters))
 
 
 # --- BROAD: the 3-D tilt filter on real recordings ------------------------------------------

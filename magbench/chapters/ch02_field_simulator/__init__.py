@@ -6,11 +6,11 @@ COMSOL, built and measured, beside the exact field of thin loops.
 
 import numpy as np
 
-from .._validate import as_finite, as_positive
-from ..compare import make_row
-from ..io import load_measurements, load_parameter_set, load_printed
-from ..errata import printed_check
-from ._base import Chapter, chapter_parameters
+from ..._validate import as_finite, as_positive
+from ...compare import make_row
+from ...io import load_measurements, load_parameter_set, load_printed
+from ...errata import printed_check
+from .._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "ZONE_TOLERANCE", "simulator_rows", "simulator_center_h_tolerance",
            "simulator_checks", "simulator_field_checks", "thesis_printed_ampere_turns"]
@@ -73,7 +73,7 @@ def simulator_center_h_tolerance(current, turns, radius, spacing_range=(0.50, 0.
     (0.50–0.52 m, thesis §2.4) and the current is printed to 0.1 A (±0.05 A). The
     largest |ΔH| over the corners of that box, from its middle, is the tolerance.
     """
-    from .. import coils
+    from ... import coils
 
     d_mid = 0.5 * (spacing_range[0] + spacing_range[1])
     base = float(coils.helmholtz_center_h(current, turns, radius, d_mid))
@@ -96,8 +96,8 @@ def simulator_rows(params=None):
     params : dict, optional
         Chapter-2 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
     """
-    from .. import coils
-    from ..io import load_measurements
+    from ... import coils
+    from ...io import load_measurements
 
     p = params or chapter_parameters("ch02")
     m = load_measurements("thesis")
@@ -139,7 +139,7 @@ def simulator_rows(params=None):
 def simulator_checks():
     """Thesis §2.2 (the Helmholtz field simulator): printed design numbers that do not
     follow from eq. (16) and the winding formulas, on the thesis's own parameter set."""
-    from .. import coils
+    from ... import coils
 
     p = load_parameter_set("thesis")
     printed = load_printed("thesis")
@@ -184,7 +184,7 @@ def simulator_checks():
 def simulator_field_checks():
     """Thesis §2.1–2.4 beyond the coil design (eq. 15, the centre-field deviation, the
     electrics at the current limit) and Kovalenko's uniform-field coil systems (§3.4)."""
-    from .. import coils
+    from ... import coils
 
     p = load_parameter_set("thesis")
     m = load_measurements("thesis")
@@ -205,8 +205,8 @@ def simulator_field_checks():
     resistance = float(coils.winding_resistance(a, n, v["sim_wire_diameter"], v["copper_resistivity"]))
     ni_printed = printed["thesis-sim-ampere-turns"].value_as_printed
     n_printed_r = round(printed["thesis-sim-coil-resistance"].value_as_printed / resistance * n)
-    circle2, helm = ["circle"] * 2, ([1.0, 1.0], [-0.5, 0.5], [1.0, 1.0])
-    four = (["circle"] * 4, [1.0] * 4, [-1.0, -0.25, 0.25, 1.0], [7.0, 3.0, 3.0, 7.0])
+    round2, helm = ["round"] * 2, ([1.0, 1.0], [-0.5, 0.5], [1.0, 1.0])
+    four = (["round"] * 4, [1.0] * 4, [-1.0, -0.25, 0.25, 1.0], [7.0, 3.0, 3.0, 7.0])
     four_dev = coils.coaxial_system_sphere_nonuniformity(*four, 2.0 / 3.0)
     half_radius_dev = coils.coaxial_system_sphere_nonuniformity(*four, 0.5)
     helmholtz_radius = (2.0 / 3.0) / coils.uniform_sphere_radius(1.0, 1.0, four_dev)
@@ -259,7 +259,7 @@ def simulator_field_checks():
             kov["kov-helmholtz-cylinder-deviation"], id="kovalenko-helmholtz-cylinder", chapter="ch02",
             location="§3.4, p. 60",
             quantity="Helmholtz pair: largest deviation in a cylinder of radius 0.1r, length 0.2r",
-            computed=100 * coils.coaxial_system_cylinder_nonuniformity(circle2, *helm, 0.1, 0.2), unit="%",
+            computed=100 * coils.coaxial_system_cylinder_nonuniformity(round2, *helm, 0.1, 0.2), unit="%",
             explanation="Exact loop fields on a grid of the solid cylinder.",
             computation="magbench.coils.coaxial_system_cylinder_nonuniformity"),
         printed_check(
@@ -300,7 +300,7 @@ CHAPTER = Chapter(
     key="ch02", title="The geomagnetic-field simulator",
     short_title="the field simulator",
     pages=("book/ch02-field-simulator",), source="thesis", inputs=INPUTS,
-    figure_modules=("magbench.figures.thesis_ch2",),
+    figure_modules=("magbench.chapters.ch02_field_simulator.figures",),
     comparisons=simulator_rows,
     row_kinds=(("comsol-", "simulation"), ("sim-center-h", "measurement"),
                ("sim-coil-resistance", "measurement")),

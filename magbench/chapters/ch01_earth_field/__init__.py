@@ -8,13 +8,13 @@ import itertools
 
 import numpy as np
 
-from .. import attitude, geomag, igrf
-from ..compare import make_row
-from ..constants import EARTH_POLAR_MOMENT_OF_INERTIA, EARTH_RADIUS, EARTH_ROTATION_RATE, MU_0
-from ..io import load_parameter_set, load_printed
-from ..errata import source_check
-from ..units import ampere_per_meter_to_oersted, tesla_to_oersted
-from ._base import Chapter, chapter_parameters
+from ... import attitude, geomag, igrf
+from ...compare import make_row
+from ...constants import EARTH_POLAR_MOMENT_OF_INERTIA, EARTH_RADIUS, EARTH_ROTATION_RATE, MU_0
+from ...io import load_parameter_set, load_printed
+from ...errata import source_check
+from ...units import ampere_per_meter_to_oersted, tesla_to_oersted
+from .._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "IGRF_NEWEST_EPOCH", "geomagnetic_rows", "geomagnetic_checks",
            "kovalenko_field_checks"]
@@ -222,8 +222,8 @@ def kovalenko_field_checks():
     1965 model is the same field re-fitted (its dipole differs by 0.02 %), so the
     printed-digit tolerance applies.
     """
-    from .. import igrf
-    from ..constants import IGRF_REFERENCE_RADIUS
+    from ... import igrf
+    from ...constants import IGRF_REFERENCE_RADIUS
 
     kov = load_printed("kovalenko")
     g, h = igrf.igrf_gauss_coefficients(1965.0, max_degree=6)
@@ -279,7 +279,7 @@ CHAPTER = Chapter(
     key="ch01", title="The Earth's magnetic field and the principle of magnetic control",
     short_title="the Earth's field",
     pages=("book/ch01-earth-field",), source="thesis", inputs=INPUTS,
-    figure_modules=("magbench.figures.thesis_ch1",),
+    figure_modules=("magbench.chapters.ch01_earth_field.figures",),
     comparisons=geomagnetic_rows,
     row_kinds=(("dipole-", "reference"), ("pole-", "reference"), ("lab-", "reference"),
                ("equatorial-dipole-field", "reference")),

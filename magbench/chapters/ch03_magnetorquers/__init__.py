@@ -6,10 +6,10 @@ thesis eq. (32), the built coils beside their measurement, Kovalenko's actuator 
 
 import numpy as np
 
-from ..compare import make_row
-from ..io import load_measurements, load_parameter_set, load_printed
-from ..errata import kovalenko_page, printed_check, source_check
-from ._base import Chapter, chapter_parameters
+from ...compare import make_row
+from ...io import load_measurements, load_parameter_set, load_printed
+from ...errata import kovalenko_page, printed_check, source_check
+from .._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "magnetorquer_rows", "magnetorquer_checks", "magnetorquer_design_checks",
            "kovalenko_actuator_checks"]
@@ -38,8 +38,8 @@ def magnetorquer_rows(params=None):
     params : dict, optional
         Chapter-3 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
     """
-    from .. import magnetorquer as mtq
-    from ..io import load_wire_table
+    from ... import magnetorquer as mtq
+    from ...io import load_wire_table
 
     p = params or chapter_parameters("ch03")
     rho, u, side, n = p["copper_resistivity"], p["mtq_voltage"], p["mtq_side"], p["mtq_turns"]
@@ -84,7 +84,7 @@ def magnetorquer_rows(params=None):
 def magnetorquer_checks():
     """Thesis §3 (the magnetorquers) and Kovalenko's actuator examples: the printed
     values that do not reproduce (chapter 3 of the book walks through them)."""
-    from .. import magnetorquer as mtq
+    from ... import magnetorquer as mtq
 
     p = load_parameter_set("thesis")
     rho, u, side = p["copper_resistivity"].value_si, p["mtq_voltage"].value_si, p["mtq_side"].value_si
@@ -153,7 +153,7 @@ def magnetorquer_design_checks():
     whole chain; those that do not are the errata of :func:`magnetorquer_checks` and the
     built coil's power against the 2 W limit the thesis set itself.
     """
-    from .. import magnetorquer as mtq
+    from ... import magnetorquer as mtq
 
     p = load_parameter_set("thesis")
     rho, gamma = p["copper_resistivity"].value_si, p["copper_density"].value_si
@@ -228,14 +228,14 @@ def magnetorquer_design_checks():
 
 def d_mm(area):
     """Wire diameter [mm, 3 decimals] of a conductor cross-section [m²], for explanations."""
-    from .. import magnetorquer as mtq
+    from ... import magnetorquer as mtq
 
     return f"{float(mtq.wire_diameter(area)) * 1e3:.3f}"
 
 
 def kovalenko_actuator_checks():
     """Kovalenko's (1975) worked examples on magnets and cored rods (his §1.3, ch. 9, 10, 12)."""
-    from .. import magnetorquer as mtq
+    from ... import magnetorquer as mtq
 
     kov = load_printed("kovalenko")
     p = load_parameter_set("thesis")
@@ -286,7 +286,7 @@ CHAPTER = Chapter(
     key="ch03", title="Magnetic actuators: sizing the magnetorquers",
     short_title="the magnetorquers",
     pages=("book/ch03-magnetorquers",), source="thesis", inputs=INPUTS,
-    figure_modules=("magbench.figures.thesis_ch3",),
+    figure_modules=("magbench.chapters.ch03_magnetorquers.figures",),
     comparisons=magnetorquer_rows,
     row_kinds=(("mtq-resistance-computed", "printed"), ("mtq-resistance", "measurement"),
                ("mtq-moment", "printed"), ("mtq-power", "printed"),

@@ -6,13 +6,13 @@ the bench runs of thesis Figs. 19–20 beside the closed-loop model.
 
 import numpy as np
 
-from .. import attitude
-from ..compare import make_row
-from ..errata import source_check
-from ..io import load_parameter_set
-from ._base import Chapter, chapter_parameters
+from ... import attitude
+from ...compare import make_row
+from ...errata import source_check
+from ...io import load_parameter_set
+from .._base import Chapter, chapter_parameters
 
-__all__ = ["CHAPTER", "INPUTS", "bench_rows", "dynamics_checks"]
+__all__ = ["CHAPTER", "INPUTS", "KD_SWEEP", "KP_SWEEP", "PRINTED_SETS", "bench_rows", "dynamics_checks"]
 
 
 #: The chapter's inputs: names in the parameter set of its source.
@@ -50,8 +50,8 @@ def bench_rows(params=None):
     params : dict, optional
         Chapter-4 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
     """
-    from .. import bench
-    from ..io import measurement
+    from ... import bench
+    from ...io import measurement
 
     p = params or chapter_parameters("ch04")
     setup = bench.BenchSetup.from_parameters(p)
@@ -70,18 +70,23 @@ def bench_rows(params=None):
     return rows
 
 
+#: The PID gain sets (K_p, K_i, K_d) of thesis Figs. 15–16 (K_p swept) and 17–18 (K_d swept).
+KP_SWEEP = ((0.1, 0.5, 0.5), (0.2, 0.5, 0.5), (0.3, 0.5, 0.5))
+KD_SWEEP = ((0.1, 0.5, 1.0), (0.1, 0.5, 2.0), (0.1, 0.5, 3.0))
+PRINTED_SETS = KP_SWEEP + KD_SWEEP
+
+
 def dynamics_checks():
     """Thesis §4 (equations of motion and the PID): the sizing amplitude and the gains,
     on the thesis's own parameter set (never on a whole-book build's overrides)."""
-    from .. import control
-    from ..constants import MU_0
+    from ... import control
+    from ...constants import MU_0
 
     p = {name: par.value_si for name, par in load_parameter_set("thesis").items()}
     j, m = p["mockup_inertia"], p["mtq_moment"]
     b0 = MU_0 * p["sim_design_h"]
     amplitude = attitude.amplitude_for_period(p["oscillation_period"], j, m, b0)
-    sets = [(0.1, 0.5, 0.5), (0.2, 0.5, 0.5), (0.3, 0.5, 0.5), (0.1, 0.5, 1.0), (0.1, 0.5, 2.0),
-            (0.1, 0.5, 3.0)]
+    sets = PRINTED_SETS
     stable = sum(bool(np.all(control.closed_loop_poles(j, b0, *g).real < 0)) for g in sets)
     # Routh–Hurwitz for J s³ + B0 Kd s² + B0 Kp s + B0 Ki: stable iff Ki < B0 Kp Kd / J.
     excess = [ki / (b0 * kp * kd / j) for kp, ki, kd in sets]
@@ -119,7 +124,7 @@ CHAPTER = Chapter(
     short_title="the mock-up and the bench",
     pages=("book/ch04-mockup", "book/ch04-estimation", "book/ch04-bench"), source="thesis",
     inputs=INPUTS,
-    figure_modules=("magbench.figures.thesis_ch4", "magbench.figures.estimation", "magbench.figures.bench"),
+    figure_modules=("magbench.chapters.ch04_mockup.figures", "magbench.chapters.ch04_mockup.figures_estimation", "magbench.chapters.ch04_mockup.figures_bench"),
     comparisons=bench_rows,
     row_kinds=(("bench-error-", "measurement"),),
     source_checks=(dynamics_checks,),

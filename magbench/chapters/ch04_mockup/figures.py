@@ -7,19 +7,16 @@ responses come from it.
 
 import numpy as np
 
-from .. import attitude, coils, control
-from ..constants import MU_0
-from .._format import format_number
-from ..chapters.ch04_mockup import CHAPTER
-from ..params import chapter_parameters
-from . import FigureData, FigureParameter, FigureSpec, Series, register
+from ... import attitude, coils, control
+from ...constants import MU_0
+from ..._format import format_number
+from . import CHAPTER, KD_SWEEP, KP_SWEEP, PRINTED_SETS
+from .._base import chapter_parameters
+from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 
 SOURCE = "Bui (2016), thesis §4"
 DEG = np.pi / 180.0
 #: The gain sets of thesis Figs. 15–18 (thesis §4.1), as (kp, ki, kd).
-KP_SWEEP = ((0.1, 0.5, 0.5), (0.2, 0.5, 0.5), (0.3, 0.5, 0.5))
-KD_SWEEP = ((0.1, 0.5, 1.0), (0.1, 0.5, 2.0), (0.1, 0.5, 3.0))
-PRINTED_SETS = KP_SWEEP + KD_SWEEP
 STYLES = ("-", "--", ":")
 
 
@@ -710,21 +707,21 @@ def _step_parameters():
     return params
 
 
-_GEO = _geometry_parameters()
+_GEO = _geometry_parameters     # read on first use: listing figures reads no file
 register(FigureSpec("thesis-fig10", "Frames of the mock-up on a thread (thesis Fig. 10)", "Bui (2016), Fig. 10",
                     compute_geometry, plot_fig10, _GEO))
 register(FigureSpec("thesis-fig11", "Forces on the mock-up (thesis Fig. 11)", "Bui (2016), Fig. 11",
                     compute_geometry, plot_fig11, _GEO))
 register(FigureSpec("thesis-fig12", "Angular velocity of the free mock-up (thesis Fig. 12)",
-                    "Bui (2016), Fig. 12, eq. (35)", compute_free_pendulum, plot_fig12, _free_parameters()))
+                    "Bui (2016), Fig. 12, eq. (35)", compute_free_pendulum, plot_fig12, _free_parameters))
 register(FigureSpec("thesis-fig13", "Rotation angle of the free mock-up (thesis Fig. 13)",
-                    "Bui (2016), Fig. 13, eq. (35)", compute_free_pendulum, plot_fig13, _free_parameters()))
+                    "Bui (2016), Fig. 13, eq. (35)", compute_free_pendulum, plot_fig13, _free_parameters))
 register(FigureSpec("ch04-period-ratio", "Exact pendulum period against eq. (14)", "Bui (2016) eqs. (14), (15), (35)",
-                    compute_period_ratio, plot_period_ratio, _period_parameters()))
+                    compute_period_ratio, plot_period_ratio, _period_parameters))
 register(FigureSpec("thesis-fig14", "The PID loop (thesis Fig. 14)", "Bui (2016), Fig. 14, eqs. (36)–(38)",
                     compute_block_diagram, plot_block_diagram,
-                    {k: v for k, v in _plant_parameters().items()}))
-_SWEEP = _sweep_parameters()
+                    _plant_parameters))
+_SWEEP = _sweep_parameters
 register(FigureSpec("thesis-fig15", "Angular velocity, Kp sweep (thesis Fig. 15)", "Bui (2016), Fig. 15",
                     compute_fig15, plot_fig15, _SWEEP))
 register(FigureSpec("thesis-fig16", "Rotation angle, Kp sweep (thesis Fig. 16)", "Bui (2016), Fig. 16",
@@ -735,10 +732,10 @@ register(FigureSpec("thesis-fig18", "Rotation angle, Kd sweep (thesis Fig. 18)",
                     compute_fig17, plot_fig18, _SWEEP))
 register(FigureSpec("ch04-gain-readings", "The printed gains under every reading of their units",
                     "Bui (2016) eqs. (37)–(38), Figs. 15–18", compute_gain_readings, plot_gain_readings,
-                    _plant_parameters()))
+                    _plant_parameters))
 register(FigureSpec("ch04-allocation-error", "Error of the small-angle allocation", "Bui (2016) §4.1, the allocation after eq. (38)",
                     compute_allocation_error, plot_allocation_error, {}))
 register(FigureSpec("ch04-root-locus", "Root locus and margins of a stable SI design", "Not in the thesis",
-                    compute_root_locus, plot_root_locus, _root_locus_parameters()))
+                    compute_root_locus, plot_root_locus, _root_locus_parameters))
 register(FigureSpec("ch04-step-response", "Linear against nonlinear closed loop", "Not in the thesis",
-                    compute_step_response, plot_step_response, _step_parameters()))
+                    compute_step_response, plot_step_response, _step_parameters))

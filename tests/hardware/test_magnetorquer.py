@@ -10,6 +10,8 @@ import math
 
 import numpy as np
 import pytest
+
+from magbench.cli import design_explanation
 from numpy.testing import assert_allclose
 
 from magbench import magnetorquer as mt
@@ -238,7 +240,8 @@ def test_design_solver_infeasible_moment():
     res = mt.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, WIRES[:3], RHO, GAMMA)
     assert not res["feasible"] and res["turns"].size == 0
     assert res["binding_limit"] == "moment"
-    assert res["explanation"].startswith("moment") and "0.172" in res["explanation"]
+    explanation = design_explanation(res, W_MAX, M_MAX, M_REQ, U)
+    assert explanation.startswith("moment") and "0.172" in explanation
     assert res["min_power"] is None and res["min_mass"] is None
 
 
@@ -247,7 +250,8 @@ def test_design_solver_infeasible_power_and_mass():
     res = mt.design_magnetorquer(M_REQ, U, SIDE, "square", 1.0, 0.02, WIRES, RHO, GAMMA)
     assert not res["feasible"]
     assert res["binding_limit"] == "power and mass"
-    assert "M·W" in res["explanation"] and "0.18 mm" in res["explanation"]
+    explanation = design_explanation(res, 1.0, 0.02, M_REQ, U)
+    assert "M·W" in explanation and "0.18 mm" in explanation
 
 
 def test_design_solver_infeasible_winding_fit():
@@ -434,3 +438,28 @@ def test_kovalenko_e02_printed_torque_per_mass():
 def test_kovalenko_table5_nu_at_p40_printed():
     nu = 100 * (0.0218 - 0.0223) / 0.0223
     assert_allclose(nu, -0.22, atol=0.005)   # half a unit of the last printed digit
+
+
+def test_one_winding_api_for_simulator_coils_and_magnetorquers():
+    """The winding functions take a turn geometry: the simulator coil given by its radius
+    and the magnetorquer's square turn go through the same functions and give what the
+    coil-specific formulas give (thesis §2.2 and eqs. (28)–(31))."""
+    from magbench.hardware import Turn, coil_mass, coil_resistance, winding_mass, winding_power, winding_resistance
+
+    rho, gamma, d = 0.0175e-6, 8.9e3, 0.2e-3
+    square = Turn.square(0.1)
+    assert_allclose(winding_resistance(square, 240, d, rho), coil_resistance(240, 0.1, mt.wire_area(d), rho, "square"),
+                    rtol=1e-15)   # same formula, same operations
+    assert_allclose(winding_mass(square, 240, d, gamma), coil_mass(240, 0.1, mt.wire_area(d), gamma, "square"),
+                    rtol=1e-15)
+    assert_allclose(square.area, 0.01, rtol=1e-15)
+    # The simulator coil: a radius is a round turn, so both spellings agree.
+    assert_allclose(winding_resistance(Turn.round(0.5), 110, 0.75e-3, rho), winding_resistance(0.5, 110, 0.75e-3, rho),
+                    rtol=0)
+    assert_allclose(Turn.round(0.5).length, np.pi, rtol=1e-15)       # 2πa
+    assert_allclose(winding_power(square, 240, d, rho, 0.2), 0.04 * winding_resistance(square, 240, d, rho),
+                    rtol=1e-15)
+    with pytest.raises(ValueError, match="radius"):
+        winding_resistance(-0.5, 110, 0.75e-3, rho)
+    with pytest.raises(ValueError, match="shape"):
+        Turn("oval", 0.1)

@@ -2,12 +2,12 @@
 
 import numpy as np
 
-from .. import geomag, igrf
-from ..constants import EARTH_GM, EARTH_ROTATION_RATE
-from .._format import format_number
-from ..chapters.ch01_earth_field import CHAPTER
-from ..params import chapter_parameters
-from . import FigureData, FigureParameter, FigureSpec, Series, register
+from ... import geomag, igrf
+from ...constants import EARTH_GM, EARTH_ROTATION_RATE
+from ..._format import format_number
+from . import CHAPTER
+from .._base import chapter_parameters
+from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 
 DEG = np.pi / 180.0
 SOURCE = "Bui (2016), thesis §1.1–1.2"
@@ -321,14 +321,14 @@ def plot_torque_plane(data):
 
 
 register(FigureSpec("thesis-fig01", "Elements of the geomagnetic field (thesis Fig. 1)",
-                    "Bui (2016), Fig. 1; IGRF-14", compute_fig01, plot_fig01, _fig01_parameters()))
+                    "Bui (2016), Fig. 1; IGRF-14", compute_fig01, plot_fig01, _fig01_parameters))
 register(FigureSpec("thesis-fig02", "Geomagnetic coordinates (thesis Fig. 2)", "Bui (2016), Fig. 2",
-                    compute_fig02, plot_fig02, _fig02_parameters()))
+                    compute_fig02, plot_fig02, _fig02_parameters))
 register(FigureSpec("ch01-field-elements", "Dipole field elements against geomagnetic latitude",
-                    "Bui (2016) eqs. (1)–(3)", compute_elements, plot_elements, _elements_parameters()))
+                    "Bui (2016) eqs. (1)–(3)", compute_elements, plot_elements, _elements_parameters))
 register(FigureSpec("ch01-orbit-field", "The dipole field along a circular orbit",
                     "Kovalenko (1975) eqs. (2.36), (2.40)", compute_orbit_field, plot_orbit_field,
-                    _orbit_parameters()))
+                    _orbit_parameters))
 register(FigureSpec("ch01-torque-plane", "Reachable magnetic torques", "Bui (2016) eqs. (4)–(8)",
                     compute_torque_plane, plot_torque_plane,
                     {"field_elevation": FigureParameter(0.6, "rad", "elevation of B above the x axis"),

@@ -10,13 +10,13 @@ three-axis simulator that cancels the laboratory's field.
 
 import numpy as np
 
-from .. import coils, igrf
-from ..chapters import ch02_field_simulator
-from ..constants import MU_0
-from ..io import load_measurements
-from ..chapters.ch02_field_simulator import CHAPTER
-from ..params import chapter_parameters
-from . import FigureData, FigureParameter, FigureSpec, Series, register
+from ... import coils, igrf
+from ...chapters import ch02_field_simulator
+from ...constants import MU_0
+from ...io import load_measurements
+from . import CHAPTER
+from .._base import chapter_parameters
+from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 
 SOURCE = "Bui (2016), thesis §2"
 
@@ -326,21 +326,21 @@ def coil_systems():
     half_sq = float(coils.square_pair_spacing(1.0)) / 2
     r1 = np.sqrt(4 / 7)
     return [
-        ("Helmholtz pair, d = a", ["circle"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0]),
-        ("thesis pair, d = 1.116a", ["circle"] * 2, [1.0, 1.0], [-0.558, 0.558], [1.0, 1.0]),
+        ("Helmholtz pair, d = a", ["round"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0]),
+        ("thesis pair, d = 1.116a", ["round"] * 2, [1.0, 1.0], [-0.558, 0.558], [1.0, 1.0]),
         ("square pair, d = 0.5445 l", ["square"] * 2, [1.0, 1.0], [-half_sq, half_sq], [1.0, 1.0]),
-        ("Maxwell, three circles", ["circle"] * 3, [r1, 1.0, r1], [-np.sqrt(3 / 7), 0.0, np.sqrt(3 / 7)],
+        ("Maxwell, three circles", ["round"] * 3, [r1, 1.0, r1], [-np.sqrt(3 / 7), 0.0, np.sqrt(3 / 7)],
          [49.0, 64.0, 49.0]),
-        ("three circles (Kovalenko)", ["circle"] * 3, [1 / 1.0055, 1.0, 1 / 1.0055],
+        ("three circles (Kovalenko)", ["round"] * 3, [1 / 1.0055, 1.0, 1 / 1.0055],
          [-0.7599 / 1.0055, 0.0, 0.7599 / 1.0055], [50.0, 27.0, 50.0]),
-        ("four circles (Kovalenko)", ["circle"] * 4, [1.0] * 4, [-1.0, -0.25, 0.25, 1.0], [7.0, 3.0, 3.0, 7.0]),
+        ("four circles (Kovalenko)", ["round"] * 4, [1.0] * 4, [-1.0, -0.25, 0.25, 1.0], [7.0, 3.0, 3.0, 7.0]),
         ("Rubens, five squares", ["square"] * 5, [1.0] * 5, [-0.5, -0.25, 0.0, 0.25, 0.5],
          [19.0, 4.0, 10.0, 4.0, 19.0]),
     ]
 
 
 def _turn_lengths(shapes, sizes):
-    return np.array([2 * np.pi * s if sh == "circle" else 4 * s for sh, s in zip(shapes, sizes)])
+    return np.array([2 * np.pi * s if sh == "round" else 4 * s for sh, s in zip(shapes, sizes)])
 
 
 def compute_fig03(tolerance, center_h, power, winding_area, copper_resistivity):
@@ -477,7 +477,7 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
     n_eff = n * frac
     a_eff = coils.pair_radius_for_center_h(measured_center_h, n * i, d)
     reversed_h = float(np.linalg.norm(coils.coaxial_system_b(
-        np.zeros(3), ["circle"] * 2, [a, a], [-d / 2, d / 2], [n * i, -n * i]))) / MU_0
+        np.zeros(3), ["round"] * 2, [a, a], [-d / 2, d / 2], [n * i, -n * i]))) / MU_0
     return [
         row("exact", "exact field of the pair as built", predicted=h_model),
         row("fewer-turns", "fewer effective turns per coil", needed=n_eff, unit="turns",
@@ -714,21 +714,21 @@ def _three_axis_parameters():
 
 
 register(FigureSpec("thesis-fig03", "Candidate coil systems at equal power (thesis Fig. 3)",
-                    "Bui (2016) Fig. 3; Kovalenko (1975) §3.4", compute_fig03, plot_fig03, _fig03_parameters()))
+                    "Bui (2016) Fig. 3; Kovalenko (1975) §3.4", compute_fig03, plot_fig03, _fig03_parameters))
 register(FigureSpec("thesis-fig05", "Field lines of the coil pair (thesis Fig. 5)", "Bui (2016) Fig. 5",
-                    compute_fig05, plot_fig05, _geometry_parameters()))
+                    compute_fig05, plot_fig05, _geometry_parameters))
 register(FigureSpec("thesis-fig06", "|H| across the axis (thesis Fig. 6)", "Bui (2016) Fig. 6", compute_fig06, plot_line,
-                    _geometry_parameters()))
+                    _geometry_parameters))
 register(FigureSpec("thesis-fig07", "|H| on the coil axis (thesis Fig. 7)", "Bui (2016) Fig. 7",
-                    compute_fig07, plot_line, _geometry_parameters()))
+                    compute_fig07, plot_line, _geometry_parameters))
 register(FigureSpec("thesis-fig08", "The built simulator (thesis Fig. 8)", "Bui (2016) §2.4, Fig. 8",
-                    compute_fig08, plot_fig08, _fig08_parameters()))
+                    compute_fig08, plot_fig08, _fig08_parameters))
 register(FigureSpec("ch02-zone-criterion", "Uniform-zone length against the tolerance band",
                     "Bui (2016) §2.3", compute_zone_criterion, plot_zone_criterion,
-                    {k: v for k, v in _geometry_parameters(tolerance=False).items()
-                     if k in ("coil_radius", "design_spacing_ratio", "comsol_spacing", "built_spacing")}))
+                    lambda: {k: v for k, v in _geometry_parameters(tolerance=False).items()
+                             if k in ("coil_radius", "design_spacing_ratio", "comsol_spacing", "built_spacing")}))
 register(FigureSpec("ch02-hypotheses", "Explanations of the measured centre field", "Bui (2016) §2.4",
-                    compute_hypotheses, plot_hypotheses, _hypotheses_parameters()))
+                    compute_hypotheses, plot_hypotheses, _hypotheses_parameters))
 register(FigureSpec("ch02-three-axis", "A three-axis simulator for the laboratory",
                     "Not in the thesis (its ref. [1])", compute_three_axis, plot_three_axis,
-                    _three_axis_parameters()))
+                    _three_axis_parameters))

@@ -10,13 +10,13 @@ the final error over the uncertain inputs, for both targets.
 
 import numpy as np
 
-from .. import bench
-from ..io import benchlog
-from ..io import load_parameter_set, measurement
-from ..chapters.ch04_mockup import CHAPTER
-from ..params import chapter_parameters
-from ..rotations import wrap_angle
-from . import FigureData, FigureParameter, FigureSpec, Series, register
+from ... import bench
+from ...io import benchlog
+from ...io import load_parameter_set, measurement
+from . import CHAPTER
+from .._base import chapter_parameters
+from ...rotations import wrap_angle
+from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 
 SOURCE = "Bui (2016), thesis §4.4, Figs. 19–20; model: magbench.bench"
 DEG = np.pi / 180.0
@@ -197,8 +197,8 @@ def _trace_parameters(psi_des):
 
 
 register(FigureSpec("thesis-fig19", "Bench run for ψ_des = π/3: model prediction (thesis Fig. 19)",
-                    SOURCE, compute_trace, plot_trace, _trace_parameters(np.pi / 3.0)))
+                    SOURCE, compute_trace, plot_trace, lambda: _trace_parameters(np.pi / 3.0)))
 register(FigureSpec("thesis-fig20", "Bench run for ψ_des = 2π/3: model prediction (thesis Fig. 20)",
-                    SOURCE, compute_trace, plot_trace, _trace_parameters(2.0 * np.pi / 3.0)))
+                    SOURCE, compute_trace, plot_trace, lambda: _trace_parameters(2.0 * np.pi / 3.0)))
 register(FigureSpec("ch04-montecarlo", "Monte Carlo of the bench's final error",
-                    SOURCE, compute_montecarlo, plot_montecarlo, _input_parameters()))
+                    SOURCE, compute_montecarlo, plot_montecarlo, _input_parameters))

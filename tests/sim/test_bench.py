@@ -204,7 +204,7 @@ def test_bad_monte_carlo_input_is_rejected():
 
 def test_bench_inputs_are_chapter_4_inputs():
     """The bench figures' parameters are declared chapter inputs, so overrides reach them."""
-    from magbench.figures.bench import BENCH_INPUTS
+    from magbench.chapters.ch04_mockup.figures_bench import BENCH_INPUTS
     from magbench.params import CHAPTER_INPUTS
 
     assert set(BENCH_INPUTS) <= set(CHAPTER_INPUTS["ch04"])

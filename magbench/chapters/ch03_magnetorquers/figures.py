@@ -4,12 +4,12 @@ import math
 
 import numpy as np
 
-from .. import magnetorquer as mtq
-from ..constants import MU_0
-from ..io import load_wire_table
-from ..chapters.ch03_magnetorquers import CHAPTER
-from ..params import chapter_parameters
-from . import FigureData, FigureParameter, FigureSpec, Series, register
+from ... import magnetorquer as mtq
+from ...constants import MU_0
+from ...io import load_wire_table
+from . import CHAPTER
+from .._base import chapter_parameters
+from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 
 SOURCE = "Bui (2016), thesis §3"
 
@@ -357,12 +357,12 @@ def _actuator_parameters():
 
 
 register(FigureSpec("thesis-fig09", "The mock-up with its coils (thesis Fig. 9)", "Bui (2016), Fig. 9",
-                    compute_fig09, plot_fig09, _fig09_parameters()))
+                    compute_fig09, plot_fig09, _fig09_parameters))
 register(FigureSpec("ch03-design-space", "Power and mass of the magnetorquer against turns and wire",
-                    "Bui (2016) eqs. (20)–(32)", compute_design_space, plot_design_space, _coil_parameters()))
+                    "Bui (2016) eqs. (20)–(32)", compute_design_space, plot_design_space, _coil_parameters))
 register(FigureSpec("ch03-wm-product", "The mass × power product against coil size, material and shape",
                     "Bui (2016) eqs. (26), (30); Kovalenko (1975) p. 173", compute_wm_product,
-                    plot_wm_product, _wm_parameters()))
+                    plot_wm_product, _wm_parameters))
 register(FigureSpec("ch03-actuators", "Air-core coil, rod electromagnet and permanent magnet for one moment",
                     "Kovalenko (1975) eqs. (1.7), (9.63)–(9.73), (10.17)–(10.20)", compute_actuators,
-                    plot_actuators, _actuator_parameters()))
+                    plot_actuators, _actuator_parameters))

@@ -1,0 +1,368 @@
+"""Figures of chapter 6: the spinning satellite with a rotor (rotor slides, Kovalenko ch. 7).
+
+The ids are those of ``shared/reference/rotor_spin.md`` §14–§15. The two lost slides
+(seed lines 90–96) are *reconstructions*: their titles and captions say so. Every
+numeric default except the field and the inclination is ours (``data/rotor/params.toml``).
+"""
+
+import math
+
+import numpy as np
+
+from ...control.spin import (projected_damping_dipole, rotor_equilibrium_dipole, rotor_program_field,
+                             rotor_spin_reference, slides_printed_damping_torque)
+from ...earth.dipole import dipole_equatorial_b
+from ...sim.spinning import rotor_dimensionless, rotor_stability_map
+from .._base import chapter_parameters
+from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from . import CHAPTER, default_rotor_orbit, default_rotor_satellite, default_run, orbit_maxima
+
+SOURCE = "rotor slides (Ovchinnikov, Pen'kov, Roldugin, Tkachev)"
+DEG = math.pi / 180.0
+RPM = 2.0 * math.pi / 60.0
+
+
+def _defaults():
+    return chapter_parameters(CHAPTER.key, overrides="")
+
+
+def _numbers():
+    p = _defaults()
+    return rotor_dimensionless(default_rotor_satellite(p), default_rotor_orbit(p))
+
+
+def _si_factors(p=None):
+    """k per κ [A·m²/T] and k_w per κ_w [N·m·s] of the chapter's spacecraft."""
+    p = p or chapter_parameters(CHAPTER.key)
+    orbit = default_rotor_orbit(p)
+    b = 0.5 * (p["transverse_inertia_2"] + p["transverse_inertia_3"])
+    b0 = float(dipole_equatorial_b(orbit.earth_moment, orbit.radius))
+    w0 = orbit.mean_motion
+    return w0**2 * b / b0**2, w0 * b
+
+
+# --- the lost slide "Stability and choice of control parameters" (reconstruction) ------------
+
+def _map_parameters():
+    n = _numbers()
+    return {
+        "axial_ratio": FigureParameter(n["axial_ratio"], "1", "a = I11/B (ours)"),
+        "momentum": FigureParameter(n["momentum"], "1", "c1 = H0/(ω0 B) (ours)"),
+        "inclination": FigureParameter(n["inclination"], "rad", "orbit inclination i (51.6°, the ISS orbit)"),
+        "restoring": FigureParameter(n["restoring"], "1", "chosen restoring gain κ (ours)"),
+        "damping": FigureParameter(n["damping"], "1", "chosen damping gain κ_w (ours)"),
+        "restoring_max": FigureParameter(10.0, "1", "largest κ of the grid (from κ_max/40)"),
+        "damping_max": FigureParameter(5.0, "1", "largest κ_w of the grid (from κ_w,max/40)"),
+        "grid_points": FigureParameter(40.0, "1", "grid points per axis"),
+        "steps": FigureParameter(1000.0, "1", "RK4 steps per orbit of the monodromy"),
+    }
+
+
+def compute_stability_map(axial_ratio, momentum, inclination, restoring, damping, restoring_max, damping_max,
+                          grid_points, steps):
+    """max|ρ| over (κ, κ_w) (the lost stability slide, seed lines 90–92; rotor_spin.md §7)."""
+    n = int(grid_points)
+    if n < 2:
+        raise ValueError(f"grid_points must be >= 2, got {grid_points!r}")
+    kappa = np.linspace(restoring_max / n, restoring_max, n)
+    kappa_w = np.linspace(damping_max / n, damping_max, n)
+    rho = rotor_stability_map(kappa, kappa_w, axial_ratio=axial_ratio, momentum=momentum, inclination=inclination,
+                              steps=int(steps))
+    from ...sim.spinning import rotor_floquet_multipliers
+
+    chosen = rotor_floquet_multipliers(axial_ratio, momentum, restoring, damping, inclination, steps=int(steps))
+    k_per, kw_per = _si_factors()
+    return FigureData("", "", "", {}, [
+        Series("grid", {"restoring": ("1", kappa), "damping": ("1", kappa_w)}),
+        Series("max |rho|", {"max_abs_multiplier": ("1", rho)}),
+        Series("chosen gains", {"restoring": ("1", [restoring]), "damping": ("1", [damping]),
+                                "max_abs_multiplier": ("1", [abs(chosen[0])])}),
+    ], extra={"stable_fraction": float(np.mean(rho < 1.0)), "k_per_kappa": k_per, "kw_per_kappa_w": kw_per})
+
+
+def plot_stability_map(data):
+    """log10 max|ρ| with the |ρ| = 1 contour, the chosen gains and SI gains on the top/right axes."""
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import TwoSlopeNorm
+
+    g, r, c = (s.columns for s in data.series)
+    kappa, kappa_w = g["restoring"][1], g["damping"][1]
+    logr = np.log10(r["max_abs_multiplier"][1])
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    lo, hi = min(float(logr.min()), -0.1), max(float(logr.max()), 0.1)
+    mesh = ax.pcolormesh(kappa, kappa_w, logr, cmap="RdBu_r", norm=TwoSlopeNorm(0.0, lo, hi), shading="nearest")
+    ax.contour(kappa, kappa_w, logr, levels=[0.0], colors="k", linewidths=1.2)
+    ax.plot(c["restoring"][1], c["damping"][1], "k*", markersize=11,
+            label=f"chosen κ = {c['restoring'][1][0]:g}, κ_w = {c['damping'][1][0]:g}: "
+                  f"max|ρ| = {c['max_abs_multiplier'][1][0]:.3f}")
+    fig.colorbar(mesh, ax=ax, label="log10 max|ρ| (< 0: stable)")
+    ax.set_xlabel("restoring gain κ = k B0²/(ω0² B) [-]")
+    ax.set_ylabel("damping gain κ_w = k_w/(ω0 B) [-]")
+    kp, kwp = data.extra["k_per_kappa"], data.extra["kw_per_kappa_w"]
+    top = ax.secondary_xaxis("top", functions=(lambda x: x * kp, lambda x: x / kp))
+    top.set_xlabel("k [A·m²/T]")
+    right = ax.secondary_yaxis("right", functions=(lambda y: y * kwp * 1e3, lambda y: y / (kwp * 1e3)))
+    right.set_ylabel("k_w [mN·m·s]")
+    ax.legend(loc="upper left")
+    ax.set_title(f"Reconstruction of the lost stability slide: Floquet map\n"
+                 f"{data.extra['stable_fraction']:.0%} of the plane stable (black line: |ρ| = 1)")
+    return fig
+
+
+# --- max|ρ| against κ_w for a few κ ------------------------------------------------------------
+
+def _slice_parameters():
+    m = _map_parameters()
+    return {name: m[name] for name in ("axial_ratio", "momentum", "inclination", "damping_max", "steps")} | {
+        "damping_max": FigureParameter(8.0, "1", "largest κ_w of the slice")}
+
+
+SLICE_RESTORING = (1.0, 4.0, 6.0, 10.0)
+
+
+def compute_floquet_slice(axial_ratio, momentum, inclination, damping_max, steps):
+    """max|ρ| against κ_w for κ = 1, 4, 6, 10 (rotor_spin.md §7: too much damping is unstable)."""
+    kappa_w = np.linspace(damping_max / 160, damping_max, 160)
+    rho = rotor_stability_map(np.array(SLICE_RESTORING), kappa_w, axial_ratio=axial_ratio, momentum=momentum,
+                              inclination=inclination, steps=int(steps))
+    return FigureData("", "", "", {}, [Series(f"κ = {k:g}", {"damping": ("1", kappa_w),
+                                                             "max_abs_multiplier": ("1", rho[:, j])})
+                                       for j, k in enumerate(SLICE_RESTORING)])
+
+
+def plot_floquet_slice(data):
+    """One line per κ, log scale, with the stability limit |ρ| = 1."""
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.4, 3.6))
+    for s in data.series:
+        ax.semilogy(s.columns["damping"][1], s.columns["max_abs_multiplier"][1], label=s.label)
+    ax.axhline(1.0, color="k", linewidth=0.8, linestyle="--", label="|ρ| = 1")
+    ax.set_xlabel("damping gain κ_w [-]")
+    ax.set_ylabel("max|ρ| per orbit [-]")
+    ax.legend(ncols=2)
+    ax.set_title("Both too little and too much projected damping are unstable")
+    return fig
+
+
+# --- the lost slide "Simulation (asymmetric spacecraft)" (reconstruction) ------------------------
+
+def _simulation_parameters():
+    p = _defaults()
+    return {
+        "initial_alpha": FigureParameter(p["initial_alpha"], "rad", "α0, initial error about the orbit normal (ours)"),
+        "initial_beta": FigureParameter(p["initial_beta"], "rad", "β0, initial error (ours)"),
+        "orbits": FigureParameter(p["simulation_orbits"], "1", "orbits simulated (slow: about 4 s per orbit)"),
+    }
+
+
+def compute_simulation(initial_alpha, initial_beta, orbits):
+    """The asymmetric spacecraft from an initial pointing error (lost slide, seed lines 94–96)."""
+    p = chapter_parameters(CHAPTER.key)
+    p.update(initial_alpha=initial_alpha, initial_beta=initial_beta, simulation_orbits=float(int(orbits)))
+    run = default_run(p)
+    w0 = default_rotor_orbit(p).mean_motion
+    mean = float(np.mean(run.spin_rate))
+    t = run.time * w0 / (2.0 * math.pi)
+    return FigureData("", "", "", {}, [Series("run", {
+        "time": ("orbit", t),
+        "pointing_error": ("deg", np.degrees(run.pointing_error)),
+        "spin_rate": ("rpm", run.spin_rate / RPM),
+        "spin_deviation": ("omega0", (run.spin_rate - mean) / w0),
+        "spin_reference_deviation": ("omega0", (run.spin_reference - mean) / w0),
+        "dipole_magnitude": ("A m^2", np.linalg.norm(run.dipole, axis=1)),
+    }), Series("orbit maxima", {"pointing_error": ("deg", np.degrees(orbit_maxima(run, w0)))})],
+        extra={"mean_spin_rpm": mean / RPM})
+
+
+def plot_simulation(data):
+    """Pointing error with the slides' 10–15° band, spin deviation in ω0, and |m|."""
+    import matplotlib.pyplot as plt
+
+    c = data.series[0].columns
+    t = c["time"][1]
+    fig, axes = plt.subplots(3, 1, figsize=(6.4, 6.0), sharex=True)
+    ax = axes[0]
+    ax.axhspan(10, 15, color="C1", alpha=0.25, label="slides: 10–15°")
+    ax.plot(t, c["pointing_error"][1], "C0", linewidth=0.8, label="angle rotor axis – velocity")
+    ax.set_ylabel("pointing error [deg]")
+    ax.legend(loc="upper right")
+    ax = axes[1]
+    ax.plot(t, c["spin_deviation"][1], "C0", linewidth=0.6, label="spin − mean")
+    ax.plot(t, c["spin_reference_deviation"][1], "C3--", linewidth=1.0, label="reference s_ref(u) − mean")
+    ax.set_ylabel("spin deviation [ω0]")
+    ax.legend(loc="upper right", ncols=2)
+    ax.set_title(f"mean spin {data.extra['mean_spin_rpm']:.1f} rpm")
+    ax = axes[2]
+    ax.plot(t, c["dipole_magnitude"][1], "C2", linewidth=0.6)
+    ax.set_ylabel("|m| [A·m²]")
+    ax.set_xlabel("time [orbits]")
+    fig.suptitle("Reconstruction of the lost simulation slide: the asymmetric spacecraft (parameters ours)")
+    return fig
+
+
+# --- the equilibrium law over one orbit ------------------------------------------------------------
+
+def _law_parameters():
+    p = _defaults()
+    sat, orbit = default_rotor_satellite(p), default_rotor_orbit(p)
+    return {
+        "inclination": FigureParameter(orbit.inclination, "rad", "orbit inclination i"),
+        "equatorial_b": FigureParameter(float(dipole_equatorial_b(orbit.earth_moment, orbit.radius)), "T",
+                                        "B0 at the orbit radius"),
+        "orbital_rate": FigureParameter(orbit.mean_motion, "rad/s", "ω0"),
+        "gain": FigureParameter(sat.restoring_gain, "A m^2/T", "restoring gain k (ours, κ = 4)"),
+        "axial_momentum": FigureParameter(sat.axial_momentum, "N m s", "H0 (ours, c1 = 1)"),
+        "axial_inertia": FigureParameter(float(sat.inertia_matrix[0, 0]), "kg m^2", "I11 (ours)"),
+        "rotor_momentum": FigureParameter(sat.rotor_inertia * sat.rotor_rate, "N m s", "J_f ν (ours)"),
+    }
+
+
+def compute_equilibrium_law(inclination, equatorial_b, orbital_rate, gain, axial_momentum, axial_inertia,
+                            rotor_momentum):
+    """The slides' dipole (seed lines 63–69) for k and 2k, its torque on the reference, H and s_ref."""
+    u = np.linspace(0.0, 2.0 * math.pi, 361)
+    field = rotor_program_field(u, inclination, equatorial_b)
+    series = []
+    for factor in (1.0, 2.0):
+        m = rotor_equilibrium_dipole(u, inclination, equatorial_b, factor * gain, axial_momentum, orbital_rate)
+        torque = np.cross(m, field)
+        series.append(Series(f"k × {factor:g}", {"u": ("deg", np.degrees(u)), "dipole": ("A m^2", m),
+                                                 "torque": ("N m", torque)}))
+    h = axial_momentum * np.cos(u) ** 2
+    s = rotor_spin_reference(u, axial_momentum, rotor_momentum, axial_inertia)
+    series.append(Series("reference", {"u": ("deg", np.degrees(u)), "axial_momentum_ratio": ("1", h / axial_momentum),
+                                       "spin_reference_deviation": ("omega0", (s - s.mean()) / orbital_rate)}))
+    diff = float(np.max(np.abs(series[1].columns["torque"][1] - series[0].columns["torque"][1])))
+    need = np.stack([-axial_momentum * orbital_rate * np.sin(2 * u), 0 * u,
+                     -axial_momentum * orbital_rate * np.cos(u) ** 2], axis=1)
+    residual = float(np.max(np.abs(series[0].columns["torque"][1] - need)))
+    return FigureData("", "", "", {}, series, extra={"torque_gain_difference": diff, "torque_residual": residual,
+                                                     "torque_scale": axial_momentum * orbital_rate})
+
+
+def plot_equilibrium_law(data):
+    """Dipole components (two gains), the torque (the same for both) and H/H0, s_ref."""
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(3, 1, figsize=(6.4, 6.2), sharex=True)
+    for s, style in zip(data.series[:2], ("-", "--")):
+        u, m, tq = s.columns["u"][1], s.columns["dipole"][1], s.columns["torque"][1]
+        for j in range(3):
+            axes[0].plot(u, m[:, j], f"C{j}{style}", label=f"M{j + 1}, {s.label}")
+            axes[1].plot(u, tq[:, j] * 1e9, f"C{j}{style}", label=f"T{j + 1}, {s.label}")
+    axes[0].set_ylabel("dipole [A·m²]")
+    axes[0].legend(ncols=3)
+    axes[1].set_ylabel("torque [nN·m]")
+    axes[1].legend(ncols=3)
+    axes[1].set_title(f"the torque does not depend on k (largest difference "
+                      f"{data.extra['torque_gain_difference']:.1e} N·m)")
+    r = data.series[2].columns
+    axes[2].plot(r["u"][1], r["axial_momentum_ratio"][1], "C0", label="H/H0 = cos²u")
+    axes[2].plot(r["u"][1], r["spin_reference_deviation"][1], "C3--", label="s_ref − mean [ω0]")
+    axes[2].legend()
+    axes[2].set_xlabel("argument of latitude u [deg]")
+    axes[2].set_xticks(np.arange(0, 361, 60))
+    fig.suptitle("The slides' equilibrium law over one orbit, semi-body axes on the reference")
+    return fig
+
+
+# --- the damping sign (erratum) -------------------------------------------------------------------
+
+def _damping_parameters():
+    p = _defaults()
+    sat, orbit = default_rotor_satellite(p), default_rotor_orbit(p)
+    return {
+        "damping_gain": FigureParameter(sat.damping_gain, "N m s", "k_w (ours, κ_w = 2)"),
+        "rotor_momentum": FigureParameter(sat.rotor_inertia * sat.rotor_rate, "N m s", "J_f ν (ours)"),
+        "initial_rate": FigureParameter(0.2, "rad/s", "each body-axis rate at the start (illustrative)"),
+        "field_rate": FigureParameter(orbit.mean_motion, "rad/s", "turn rate of the field in inertial space (ω0)"),
+        "equatorial_b": FigureParameter(float(dipole_equatorial_b(orbit.earth_moment, orbit.radius)), "T",
+                                        "field magnitude B0"),
+        "duration": FigureParameter(1500.0, "s", "simulated time"),
+    }
+
+
+def _energy_run(law, gain, rotor_momentum, initial_rate, field_rate, b0, duration):
+    """Gyrostat (default inertia, diagonal) in a field turning about an inertial axis.
+
+    The field and that axis are carried in body axes (Ḃ = −ω × B + Ω_f n × B, ṅ = −ω × n),
+    so no attitude is needed; scalar code, as the spinning run (``rotor_spin.md`` §9).
+    The torques are those of :func:`magbench.control.spin.projected_damping_dipole`
+    (corrected) and :func:`magbench.control.spin.slides_printed_damping_torque` (printed):
+    +k_w w⊥ and −k_w w⊥ with w = ω.
+    """
+    from scipy.integrate import solve_ivp
+
+    inertia = default_rotor_satellite(_defaults()).inertia_matrix
+    if np.any(np.abs(inertia - np.diag(np.diag(inertia))) > 0):
+        raise ValueError("the damping-sign figure needs a principal-axes inertia")
+    a, b, c = np.diag(inertia).tolist()
+    h, k = float(rotor_momentum), float(gain) * (1.0 if law == "corrected" else -1.0)
+    # check the scalar torque against the library laws at one state
+    w_t, b_t = np.array([0.1, -0.2, 0.3]), np.array([1.0, 2.0, -0.5]) * b0
+    perp = w_t - (w_t @ b_t) * b_t / (b_t @ b_t)
+    lib = (np.cross(projected_damping_dipole(b_t, w_t, gain), b_t) if law == "corrected"
+           else slides_printed_damping_torque(b_t, w_t, gain))
+    if not np.allclose(lib, -k * perp, rtol=1e-12, atol=0.0):
+        raise RuntimeError("the scalar damping torque disagrees with magbench.control.spin")
+
+    def rhs(t, y):
+        w1, w2, w3, b1, b2, b3, n1, n2, n3 = y
+        bb = b1 * b1 + b2 * b2 + b3 * b3
+        wb = (w1 * b1 + w2 * b2 + w3 * b3) / bb
+        t1, t2, t3 = -k * (w1 - wb * b1), -k * (w2 - wb * b2), -k * (w3 - wb * b3)
+        k1, k2, k3 = a * w1 + h, b * w2, c * w3                 # body + rotor momentum
+        return [(t1 - (w2 * k3 - w3 * k2)) / a, (t2 - (w3 * k1 - w1 * k3)) / b, (t3 - (w1 * k2 - w2 * k1)) / c,
+                -(w2 * b3 - w3 * b2) + field_rate * (n2 * b3 - n3 * b2),
+                -(w3 * b1 - w1 * b3) + field_rate * (n3 * b1 - n1 * b3),
+                -(w1 * b2 - w2 * b1) + field_rate * (n1 * b2 - n2 * b1),
+                -(w2 * n3 - w3 * n2), -(w3 * n1 - w1 * n3), -(w1 * n2 - w2 * n1)]
+
+    t = np.linspace(0.0, duration, 301)
+    y0 = [initial_rate] * 3 + [b0, 0.0, 0.0] + [0.0, 1.0, 0.0]
+    sol = solve_ivp(rhs, (0.0, duration), y0, t_eval=t, rtol=1e-9, atol=1e-12, method="DOP853")
+    w = sol.y[:3].T
+    return t, 0.5 * np.einsum("ni,ij,nj->n", w, inertia, w)
+
+
+def compute_damping_sign(damping_gain, rotor_momentum, initial_rate, field_rate, equatorial_b, duration):
+    """½ωᵀIω of the gyrostat under the corrected projection and under the printed one (seed line 86)."""
+    series = []
+    for law, label in (("corrected", "m = k_w (w × B)/|B|² (damps)"),
+                       ("printed", "printed −k_w (w × B) × B/|B|² as a torque")):
+        t, energy = _energy_run(law, damping_gain, rotor_momentum, initial_rate, field_rate, equatorial_b, duration)
+        series.append(Series(label, {"time": ("s", t), "energy": ("J", energy)}))
+    return FigureData("", "", "", {}, series)
+
+
+def plot_damping_sign(data):
+    """Energy on a log scale: the printed sign pumps it up, the corrected one drains it."""
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.4, 3.6))
+    for s, style in zip(data.series, ("C0-", "C3--")):
+        ax.semilogy(s.columns["time"][1], s.columns["energy"][1], style, label=s.label)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("½ ωᵀIω [J]")
+    ax.legend()
+    ax.set_title("Erratum: the damping projection as printed pumps energy")
+    return fig
+
+
+register(FigureSpec("rotor-stability-map", "Stability in the gains (reconstruction of the lost slide)",
+                    f"{SOURCE}, slide 'Stability and choice of control parameters' (lost), seed lines 90–92",
+                    compute_stability_map, plot_stability_map, _map_parameters))
+register(FigureSpec("rotor-simulation", "The asymmetric spacecraft simulated (reconstruction of the lost slide; "
+                    "slow, about 20 s)",
+                    f"{SOURCE}, slide 'Simulation (asymmetric spacecraft)' (lost), seed lines 94–96",
+                    compute_simulation, plot_simulation, _simulation_parameters))
+register(FigureSpec("rotor-equilibrium-law", "The equilibrium dipole law over one orbit",
+                    f"{SOURCE}, slides 'Creating the equilibrium' and 'Choice of control', seed lines 41–69",
+                    compute_equilibrium_law, plot_equilibrium_law, _law_parameters))
+register(FigureSpec("rotor-damping-sign", "The damping projection: corrected sign against the printed one",
+                    f"{SOURCE}, slide 'Control implementation', seed line 86; Kovalenko (1975) eqs. (4.30)–(4.32)",
+                    compute_damping_sign, plot_damping_sign, _damping_parameters))
+register(FigureSpec("rotor-floquet-slice", "Floquet multiplier against the damping gain",
+                    f"{SOURCE}, slide 'Ensuring stability', seed line 80",
+                    compute_floquet_slice, plot_floquet_slice, _slice_parameters))

@@ -1,0 +1,797 @@
+r"""The spinning spacecraft with a coaxial rotor under magnetic control: the closed-loop
+normalised model, its linearisation and Floquet stability map, and the SI simulation.
+
+Rotor slides (seed lines 11–102) with ``shared/reference/rotor_spin.md`` §4–§8. Composes
+the gyrostat of :mod:`magbench.dynamics.gyrostat`, the laws of
+:mod:`magbench.control.spin`, the Floquet tools of :mod:`magbench.control.floquet`, the
+orbit of :class:`magbench.earth.CircularOrbit` and the one fixed-step
+:func:`magbench.sim.rk4_step` (the Floquet monodromy and the normalised runs); the SI
+simulation is adaptive (:func:`scipy.integrate.solve_ivp`, DOP853): the spin period is
+1/2800 of the orbit and a fixed step fine enough would cost more than the error control.
+
+The SI right-hand side is written in scalar ``math`` operations: five orbits need about
+a million evaluations, and the same equations on small numpy arrays run twenty times
+slower (``rotor_spin.md`` §9 "Speed"); a test checks it against the numpy composition of
+:func:`magbench.dynamics.gyrostat_rhs` and the laws.
+
+``omega`` (the body's angular-velocity vector of a run) is a name of the chapter-6
+contract (``rotor_spin.md`` §15).
+"""
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.integrate import solve_ivp
+from scipy.spatial.transform import Rotation
+
+from .._validate import as_choice, as_finite, as_in_range, as_positive, as_positive_or_infinite, as_positive_scalar
+from ..control.floquet import finite_difference_monodromy, floquet_multipliers
+from ..control.spin import _program_field, _projected
+from ..dynamics.gyrostat import _reduced, airplane_231_angles, airplane_231_matrix, rotor_dimensionless_numbers
+from ..dynamics.rigid_body import _inertia_matrix
+from ..earth.circular_orbit import CircularOrbit
+from ..earth.dipole import dipole_equatorial_b
+from .integrate import rk4_step
+from .result import SimulationResult
+
+__all__ = ["RotorSatellite", "RotorRun", "rotor_dimensionless", "rotor_satellite_from_dimensionless", "rotor_normalised_rhs",
+           "rotor_linearised_matrices", "rotor_floquet_multipliers", "rotor_stability_map",
+           "rotor_finite_difference_monodromy", "simulate_rotor_normalised", "rotor_body_rhs",
+           "simulate_rotor"]
+
+DAMPING = ("rate", "momentum")
+
+
+@dataclass(frozen=True)
+class RotorSatellite:
+    r"""A spacecraft with a coaxial rotor along body axis 1 and its magnetic controller.
+
+    Attributes
+    ----------
+    inertia : ndarray, shape (3,) or (3, 3)
+        Principal moments or tensor of body + rotor (rotor counted as rigid), axis 1 = rotor
+        axis [kg·m²].
+    rotor_inertia : float
+        J_f, the rotor's axial inertia [kg·m²].
+    spin_rate : float
+        s, the body's spin about axis 1 on the reference at u = 0 [rad/s].
+    axial_momentum : float
+        H0 = I11 s + J_f ν, total axial momentum at u = 0 [N·m·s].
+    restoring_gain : float
+        k of the equilibrium law [A·m²/T].
+    damping_gain : float
+        k_w of the projected damping [N·m·s].
+    moment_limit : float
+        Largest dipole per body axis [A·m²]; ``inf`` for none.
+
+    Notes
+    -----
+    Rotor slides, slide "Problem statement" (seed lines 13–25: rotor along the symmetry
+    axis, constant rotor speed, coils for damping and restoring torques); the rotor's rate
+    relative to the body follows from H0 and s (``rotor_spin.md`` §1, §15).
+    """
+
+    inertia: np.ndarray
+    rotor_inertia: float
+    spin_rate: float
+    axial_momentum: float
+    restoring_gain: float
+    damping_gain: float
+    moment_limit: float = math.inf
+
+    def __post_init__(self):
+        j = _inertia_matrix("inertia", self.inertia)
+        if j.shape not in ((3,), (3, 3)):
+            raise ValueError(f"inertia must have shape (3,) or (3, 3) [kg·m²], got shape {j.shape}")
+        object.__setattr__(self, "inertia", j)
+        jf = as_positive_scalar("rotor_inertia", self.rotor_inertia, unit="kg·m²")
+        if jf >= self.inertia_matrix[0, 0]:
+            raise ValueError(f"rotor_inertia must be < I11 = {self.inertia_matrix[0, 0]!r} kg·m², got {jf!r}")
+        object.__setattr__(self, "rotor_inertia", jf)
+        for name in ("spin_rate", "axial_momentum"):
+            value = as_finite(name, getattr(self, name))
+            if value.ndim:
+                raise ValueError(f"{name} must be a scalar, got shape {value.shape}")
+            object.__setattr__(self, name, float(value))
+        for name, unit in (("restoring_gain", "A·m²/T"), ("damping_gain", "N·m·s")):
+            value = as_in_range(name, getattr(self, name), 0.0, math.inf, unit=unit)
+            if value.ndim:
+                raise ValueError(f"{name} must be a scalar [{unit}], got shape {value.shape}")
+            object.__setattr__(self, name, float(value))
+        limit = as_positive_or_infinite("moment_limit", self.moment_limit, unit="A·m²")
+        object.__setattr__(self, "moment_limit", float(limit))
+
+    @property
+    def inertia_matrix(self):
+        """The inertia tensor (3, 3) [kg·m²]."""
+        return self.inertia if self.inertia.shape == (3, 3) else np.diag(self.inertia)
+
+    @property
+    def transverse_inertia(self):
+        """B = (I22 + I33)/2 [kg·m²]."""
+        j = self.inertia_matrix
+        return 0.5 * float(j[1, 1] + j[2, 2])
+
+    @property
+    def rotor_rate(self):
+        """ν = (H0 − I11 s)/J_f, the rotor's rate relative to the body [rad/s]."""
+        return (self.axial_momentum - self.inertia_matrix[0, 0] * self.spin_rate) / self.rotor_inertia
+
+
+@dataclass(frozen=True)
+class RotorRun:
+    r"""A simulated run of the rotor spacecraft, sampled at ``time``.
+
+    Attributes
+    ----------
+    time : ndarray, shape (n,)
+        Sample times [s].
+    argument_of_latitude : ndarray, shape (n,)
+        u = u0 + ω0 t [rad].
+    attitude : ndarray, shape (n, 4)
+        Quaternion, scalar first, v_orbital = R(q) v_body [-].
+    angles : ndarray, shape (n, 3)
+        Airplane angles α, β, γ [rad].
+    omega : ndarray, shape (n, 3)
+        Body absolute angular velocity, body axes [rad/s].
+    pointing_error : ndarray, shape (n,)
+        arccos C11, angle between the rotor axis and the velocity [rad].
+    spin_rate : ndarray, shape (n,)
+        ω1 [rad/s].
+    spin_reference : ndarray, shape (n,)
+        s_ref(u) = (H0 cos²u − J_f ν)/I11 [rad/s].
+    dipole : ndarray, shape (n, 3)
+        Commanded (clipped) dipole, body axes [A·m²].
+    torque : ndarray, shape (n, 3)
+        Magnetic torque m × B, body axes [N·m].
+    inputs : dict
+        The run's arguments and the solver's statistics [SI].
+
+    Notes
+    -----
+    Not in the sources: the names of the chapter-6 contract (``rotor_spin.md`` §15); the
+    slides' lost simulation slide (seed lines 94–96) shows these signals.
+    """
+
+    time: np.ndarray
+    argument_of_latitude: np.ndarray
+    attitude: np.ndarray
+    angles: np.ndarray
+    omega: np.ndarray
+    pointing_error: np.ndarray
+    spin_rate: np.ndarray
+    spin_reference: np.ndarray
+    dipole: np.ndarray
+    torque: np.ndarray
+    inputs: dict = field(default_factory=dict)
+
+    def to_result(self):
+        """The run as a :class:`~magbench.sim.SimulationResult` (states q, ω; inputs m; outputs)."""
+        states = np.concatenate([self.attitude, self.omega], axis=1).T
+        labels = ("q0", "q1", "q2", "q3", "rate_x", "rate_y", "rate_z")
+        outputs = np.vstack([self.pointing_error, self.spin_rate, self.spin_reference, self.torque.T])
+        return SimulationResult(self.time, states, self.dipole.T, outputs, labels, ("dipole_x", "dipole_y", "dipole_z"),
+                                ("pointing_error", "spin_rate", "spin_reference", "torque_x", "torque_y", "torque_z"),
+                                params=dict(self.inputs))
+
+
+def _check_orbit(orbit):
+    if not isinstance(orbit, CircularOrbit):
+        raise ValueError(f"orbit must be a CircularOrbit, got {type(orbit).__name__}")
+    if np.ndim(orbit.argument_of_latitude0) != 0:
+        raise ValueError("orbit.argument_of_latitude0 must be a scalar for one satellite")
+    if abs(math.sin(orbit.inclination)) < 1e-12:
+        raise ValueError(f"orbit.inclination must have sin i != 0 (the law divides by sin i), got {orbit.inclination!r}")
+
+
+def _check_satellite(satellite):
+    if not isinstance(satellite, RotorSatellite):
+        raise ValueError(f"satellite must be a RotorSatellite, got {type(satellite).__name__}")
+
+
+def rotor_dimensionless(satellite, orbit):
+    r"""The five dimensionless numbers of a rotor spacecraft on its orbit.
+
+    Parameters
+    ----------
+    satellite : RotorSatellite
+        The spacecraft and its gains [SI].
+    orbit : CircularOrbit
+        The orbit; its direct dipole's equatorial field at the orbit radius is B0 [SI].
+
+    Returns
+    -------
+    dict
+        ``axial_ratio`` a = I11/B, ``momentum`` c1 = H0/(ω0 B), ``restoring``
+        κ = k B0²/(ω0² B), ``damping`` κ_w = k_w/(ω0 B) [-], ``inclination`` i [rad].
+
+    Notes
+    -----
+    Rotor slides, slide "Equations of motion" (seed lines 29–38) normalised as in
+    ``rotor_spin.md`` §4 (B = (I22 + I33)/2 for an asymmetric body).
+    """
+    _check_satellite(satellite)
+    _check_orbit(orbit)
+    b0 = float(dipole_equatorial_b(orbit.earth_moment, orbit.radius))
+    numbers = rotor_dimensionless_numbers(satellite.inertia_matrix[0, 0], satellite.transverse_inertia,
+                                          satellite.axial_momentum, satellite.restoring_gain, satellite.damping_gain,
+                                          orbit.mean_motion, b0)
+    return {**numbers, "inclination": float(orbit.inclination)}
+
+
+def rotor_satellite_from_dimensionless(inertia, rotor_inertia, spin_rate, orbit, *, momentum, restoring, damping,
+                                       moment_limit=math.inf):
+    r"""A rotor spacecraft whose momentum and gains are given by their dimensionless numbers.
+
+    Parameters
+    ----------
+    inertia : array_like, shape (3,) or (3, 3)
+        Body + rotor inertia, axis 1 = rotor axis [kg·m²].
+    rotor_inertia : float
+        J_f [kg·m²].
+    spin_rate : float
+        s, body spin on the reference at u = 0 [rad/s].
+    orbit : CircularOrbit
+        Gives ω0 and B0 [SI].
+    momentum : float
+        c1 = H0/(ω0 B) [-].
+    restoring : float
+        κ = k B0²/(ω0² B) ≥ 0 [-].
+    damping : float
+        κ_w = k_w/(ω0 B) ≥ 0 [-].
+    moment_limit : float, optional
+        Largest dipole per body axis [A·m²].
+
+    Returns
+    -------
+    RotorSatellite
+        With H0 = c1 ω0 B, k = κ ω0² B/B0², k_w = κ_w ω0 B [SI].
+
+    Notes
+    -----
+    Rotor slides, slide "Equations of motion" (seed lines 29–38) normalised as in ``rotor_spin.md`` §4 (the inverse of
+    :func:`rotor_dimensionless`); B = (I22 + I33)/2.
+    """
+    _check_orbit(orbit)
+    j = _inertia_matrix("inertia", inertia)
+    j = j if j.shape == (3, 3) else np.diag(j)
+    b = 0.5 * float(j[1, 1] + j[2, 2])
+    w0 = orbit.mean_motion
+    b0 = float(dipole_equatorial_b(orbit.earth_moment, orbit.radius))
+    c1 = float(as_finite("momentum", momentum))
+    kappa = float(as_in_range("restoring", restoring, 0.0, math.inf))
+    kappa_w = float(as_in_range("damping", damping, 0.0, math.inf))
+    return RotorSatellite(inertia=inertia, rotor_inertia=rotor_inertia, spin_rate=spin_rate,
+                          axial_momentum=c1 * w0 * b, restoring_gain=kappa * w0**2 * b / b0**2,
+                          damping_gain=kappa_w * w0 * b, moment_limit=moment_limit)
+
+
+def _check_numbers(axial_ratio, momentum, inclination):
+    a = float(as_positive("axial_ratio", axial_ratio))
+    c1 = float(as_finite("momentum", momentum))
+    i = float(as_in_range("inclination", inclination, 0.0, math.pi, unit="rad"))
+    if abs(math.sin(i)) < 1e-12:
+        raise ValueError(f"inclination must have sin i != 0 (the law divides by sin i), got {i!r}")
+    return a, c1, i
+
+
+def _closed_loop(tau, x, a, c1, kappa, kappa_w, i):
+    alpha, beta, h, w2, w3 = x
+    bo = _program_field(np.asarray(tau, dtype=float), np.asarray(i), np.asarray(1.0))
+    ca, sa, cb, sb = np.cos(alpha), np.sin(alpha), np.cos(beta), np.sin(beta)
+    # b = R3(β) R2(α) b_o
+    x1 = ca * bo[..., 0] - sa * bo[..., 2]
+    b = np.stack(np.broadcast_arrays(cb * x1 + sb * bo[..., 1], -sb * x1 + cb * bo[..., 1],
+                                     sa * bo[..., 0] + ca * bo[..., 2]), axis=-1)
+    w = np.stack(np.broadcast_arrays((h - c1 * np.cos(tau) ** 2) / a - sb, w2 - cb, w3), axis=-1)
+    m = np.asarray(kappa)[..., None] * bo + _projected(b, w, kappa_w)
+    m = m + np.stack(np.broadcast_arrays(0.0, c1 * np.cos(tau) / math.sin(i), 0.0), axis=-1)
+    t = np.cross(m, b)
+    return _reduced(x, t[..., 0], t[..., 1], t[..., 2], a)
+
+
+def rotor_normalised_rhs(tau, state, axial_ratio, momentum, restoring, damping, inclination):
+    r"""Closed-loop dimensionless model of the symmetric rotor spacecraft.
+
+    Parameters
+    ----------
+    tau : float
+        τ = ω0 t = u, the argument of latitude [-].
+    state : array_like, shape (5, ...)
+        α, β [rad], h = H/(ω0 B), Ω2, Ω3 [-].
+    axial_ratio : float
+        a = A/B [-].
+    momentum : float
+        c1 = H0/(ω0 B) [-].
+    restoring : float or array_like
+        κ = k B0²/(ω0² B) [-]; broadcasts against the trailing axes of ``state``.
+    damping : float or array_like
+        κ_w = k_w/(ω0 B) ≥ 0 [-]; broadcasts likewise.
+    inclination : float
+        i, sin i ≠ 0 [rad].
+
+    Returns
+    -------
+    ndarray, shape (5, ...)
+        d/dτ of the state [-], with m̃ = κ b_o + (0, c1 cos τ/sin i, 0) + κ_w (w × b)/|b|²,
+        b = R3(β)R2(α) b_o, w = ((h − c1 cos²τ)/a − sin β, Ω2 − cos β, Ω3) and the torque
+        m̃ × b in :func:`magbench.dynamics.rotor_reduced_rhs`. The reference
+        (0, 0, c1 cos²τ, 1, 0) is an exact solution.
+
+    Notes
+    -----
+    Rotor slides, slides "Equations of motion" to "Control implementation" (seed lines
+    29–87): the equilibrium law (seed lines 63–69) with
+    :func:`magbench.control.rotor_equilibrium_dipole` at B0 = ω0 = 1 and the damping of
+    :func:`magbench.control.projected_damping_dipole` (``rotor_spin.md`` §4).
+    """
+    x = as_finite("state", state)
+    if x.shape[:1] != (5,):
+        raise ValueError(f"state must have shape (5, ...) (α, β, h, Ω2, Ω3), got shape {x.shape}")
+    a, c1, i = _check_numbers(axial_ratio, momentum, inclination)
+    kappa = as_finite("restoring", restoring)
+    kappa_w = as_in_range("damping", damping, 0.0, math.inf)
+    return _closed_loop(float(as_finite("tau", tau)), x, a, c1, kappa, kappa_w, i)
+
+
+def _linearised(tau, a, c1, i):
+    tau = np.asarray(tau, dtype=float)
+    b1, b2, b3 = (np.sin(i) * np.cos(tau), np.cos(i) + 0.0 * tau, -2.0 * np.sin(i) * np.sin(tau))
+    h = c1 * np.cos(tau) ** 2
+    shape = tau.shape + (5, 5)
+    a0, a1, a2 = np.zeros(shape), np.zeros(shape), np.zeros(shape)
+    a0[..., 0, 3] = a0[..., 1, 4] = 1.0
+    a0[..., 2, 0] = h
+    a0[..., 3, 0] = -3.0 * (a - 1.0)
+    a0[..., 3, 4] = -h
+    a0[..., 4, 0] = -c1 * np.sin(2.0 * tau)
+    a0[..., 4, 1] = -1.0 - c1 * np.cos(tau) / np.tan(i)
+    a0[..., 4, 2] = 1.0
+    a0[..., 4, 3] = h
+    a1[..., 2, 0], a1[..., 2, 1] = b1 * b2, b1 * b3
+    a1[..., 3, 0], a1[..., 3, 1] = -(b1**2 + b3**2), b2 * b3
+    a1[..., 4, 0], a1[..., 4, 1] = b2 * b3, -(b1**2 + b2**2)
+    b = np.stack([b1, b2, b3], axis=-1)
+    p = np.eye(3) - b[..., :, None] * b[..., None, :] / np.sum(b * b, axis=-1)[..., None, None]
+    d = np.zeros((3, 5))
+    d[0, 1], d[0, 2], d[1, 3], d[2, 4] = -1.0, 1.0 / a, 1.0, 1.0
+    a2[..., 2:, :] = -p @ d
+    return a0, a1, a2
+
+
+def rotor_linearised_matrices(tau, axial_ratio, momentum, inclination):
+    r"""The linearised closed loop about the reference, split by gain: A = A0 + κ A1 + κ_w A2.
+
+    Parameters
+    ----------
+    tau : float or array_like
+        τ = u [-].
+    axial_ratio : float
+        a = A/B [-].
+    momentum : float
+        c1 [-].
+    inclination : float
+        i, sin i ≠ 0 [rad].
+
+    Returns
+    -------
+    a0, a1, a2 : ndarray, shape (..., 5, 5)
+        Jacobians [-] of :func:`rotor_normalised_rhs` on the reference (0, 0, c1 cos²τ, 1, 0)
+        in x = (α, β, δh, δΩ2, δΩ3); with h* = c1 cos²τ, b = b_o(τ), P = I − bbᵀ/|b|² and
+        δw = (δh/a − β, δΩ2, δΩ3): the rows of ``rotor_spin.md`` §7.
+
+    Notes
+    -----
+    Rotor slides, slide "Ensuring stability" (seed line 80: the linearised system with
+    periodic coefficients); period 2π in τ. A test checks these against a numerical
+    Jacobian of :func:`rotor_normalised_rhs`.
+    """
+    a, c1, i = _check_numbers(axial_ratio, momentum, inclination)
+    return _linearised(as_finite("tau", tau), a, c1, i)
+
+
+def _monodromy(a, c1, i, kappa, kappa_w, steps):
+    kappa, kappa_w = np.broadcast_arrays(np.asarray(kappa, float), np.asarray(kappa_w, float))
+    k, kw = kappa[..., None, None], kappa_w[..., None, None]
+    cache = {}
+
+    def rhs(tau, phi):
+        hit = cache.get(tau)
+        if hit is None:
+            cache.clear()
+            a0, a1, a2 = _linearised(tau, a, c1, i)
+            hit = cache[tau] = a0 + k * a1 + kw * a2
+        return hit @ phi
+
+    phi = np.broadcast_to(np.eye(5), kappa.shape + (5, 5)).copy()
+    h = 2.0 * math.pi / steps
+    for n in range(steps):
+        phi = rk4_step(rhs, n * h, phi, h)
+    return phi
+
+
+def rotor_floquet_multipliers(axial_ratio, momentum, restoring, damping, inclination, *, steps=1000):
+    r"""Floquet multipliers of the linearised closed loop over one orbit.
+
+    Parameters
+    ----------
+    axial_ratio : float
+        a = A/B [-].
+    momentum : float
+        c1 [-].
+    restoring : float or array_like
+        κ [-]; broadcasts with ``damping``.
+    damping : float or array_like
+        κ_w ≥ 0 [-].
+    inclination : float
+        i, sin i ≠ 0 [rad].
+    steps : int, optional
+        RK4 steps per orbit [-] (1000: max|ρ| to about 1e-7 relative).
+
+    Returns
+    -------
+    ndarray, complex, shape (..., 5)
+        ρ sorted by decreasing modulus [-]; stable when max|ρ| < 1, and max|ρ| is the
+        slowest per-orbit contraction.
+
+    Notes
+    -----
+    Rotor slides, slide "Ensuring stability" (seed line 80) and the lost slide "Stability
+    and choice of control parameters" (seed lines 90–92): the monodromy Φ(2π) of
+    Φ' = A(τ)Φ with :func:`rotor_linearised_matrices`, all gain pairs integrated together
+    as one batched matrix equation by :func:`magbench.sim.rk4_step`.
+    """
+    a, c1, i = _check_numbers(axial_ratio, momentum, inclination)
+    kappa = as_finite("restoring", restoring)
+    kappa_w = as_in_range("damping", damping, 0.0, math.inf)
+    n = int(as_positive_scalar("steps", steps))
+    return floquet_multipliers(_monodromy(a, c1, i, kappa, kappa_w, n))
+
+
+def rotor_stability_map(restoring, damping, *, axial_ratio, momentum, inclination, steps=1000):
+    r"""The stability map: max|ρ| over a grid of (restoring, damping) gains.
+
+    Parameters
+    ----------
+    restoring : array_like, shape (n_restoring,)
+        κ values [-].
+    damping : array_like, shape (n_damping,)
+        κ_w values, ≥ 0 [-].
+    axial_ratio : float
+        a = A/B [-].
+    momentum : float
+        c1 [-].
+    inclination : float
+        i [rad].
+    steps : int, optional
+        RK4 steps per orbit [-].
+
+    Returns
+    -------
+    ndarray, shape (n_damping, n_restoring)
+        max|ρ| [-]; < 1 is asymptotically stable.
+
+    Notes
+    -----
+    Rotor slides, slide "Stability and choice of control parameters" (lost) (seed lines
+    90–92), recomputed with :func:`rotor_floquet_multipliers` (``rotor_spin.md`` §7).
+    """
+    k = as_finite("restoring", restoring)
+    kw = as_in_range("damping", damping, 0.0, math.inf)
+    if k.ndim != 1 or kw.ndim != 1:
+        raise ValueError(f"restoring and damping must be 1-D grids, got shapes {k.shape}, {kw.shape}")
+    grid_k, grid_kw = np.meshgrid(k, kw)
+    rho = rotor_floquet_multipliers(axial_ratio, momentum, grid_k, grid_kw, inclination, steps=steps)
+    return np.abs(rho[..., 0])
+
+
+def _normalised_flow(a, c1, kappa, kappa_w, i, steps, orbits=1, record=False):
+    h = 2.0 * math.pi / steps
+
+    def flow(x):
+        out = [x] if record else None
+        for n in range(steps * orbits):
+            x = rk4_step(_closed_loop, n * h, x, h, args=(a, c1, kappa, kappa_w, i))
+            if record:
+                out.append(x)
+        return np.stack(out, axis=1) if record else x
+
+    return flow
+
+
+def rotor_finite_difference_monodromy(axial_ratio, momentum, restoring, damping, inclination, *, steps=2000,
+                                      perturbation=1e-6):
+    r"""Monodromy of the nonlinear closed loop by central differences about the reference.
+
+    Parameters
+    ----------
+    axial_ratio : float
+        a [-].
+    momentum : float
+        c1 [-].
+    restoring : float
+        κ [-].
+    damping : float
+        κ_w ≥ 0 [-].
+    inclination : float
+        i [rad].
+    steps : int, optional
+        RK4 steps of the nonlinear model per orbit [-].
+    perturbation : float, optional
+        δ of each state component [-].
+
+    Returns
+    -------
+    ndarray, shape (5, 5)
+        Φ(2π) [-], independent of :func:`rotor_linearised_matrices`.
+
+    Notes
+    -----
+    Rotor slides, slide "Ensuring stability" (seed line 80): a check of the linearisation
+    with :func:`magbench.control.finite_difference_monodromy` on
+    :func:`rotor_normalised_rhs` started at (0, 0, c1, 1, 0), τ = 0.
+    """
+    a, c1, i = _check_numbers(axial_ratio, momentum, inclination)
+    kappa = float(as_finite("restoring", restoring))
+    kappa_w = float(as_in_range("damping", damping, 0.0, math.inf))
+    n = int(as_positive_scalar("steps", steps))
+    flow = _normalised_flow(a, c1, kappa, kappa_w, i, n)
+    return finite_difference_monodromy(lambda xs: flow(xs.T).T, np.array([0.0, 0.0, c1, 1.0, 0.0]),
+                                       perturbation)
+
+
+def simulate_rotor_normalised(axial_ratio, momentum, restoring, damping, inclination, initial_state, orbits, *,
+                              steps_per_orbit=1000):
+    r"""Simulate the dimensionless closed loop for many members at once (RK4).
+
+    Parameters
+    ----------
+    axial_ratio : float
+        a [-].
+    momentum : float
+        c1 [-].
+    restoring : float or array_like
+        κ [-]; per member if an array (M,).
+    damping : float or array_like
+        κ_w ≥ 0 [-]; per member if an array (M,).
+    inclination : float
+        i [rad].
+    initial_state : array_like, shape (5,) or (5, M)
+        (α, β, h, Ω2, Ω3) at τ = 0 [rad, -].
+    orbits : int
+        Number of orbits [-].
+    steps_per_orbit : int, optional
+        RK4 steps per orbit, also the samples [-].
+
+    Returns
+    -------
+    SimulationResult
+        ``time`` τ [-]; states ``alpha``, ``beta``, ``h``, ``rate_2``, ``rate_3`` of shape
+        (K, M) (or (K,)).
+
+    Notes
+    -----
+    Rotor slides, slides "Equations of motion" to "Control implementation" (seed lines 29–87), in the normalised form of ``rotor_spin.md`` §4, Monte
+    Carlo members on the trailing axis of the state (the model's (5, ...) layout).
+    """
+    a, c1, i = _check_numbers(axial_ratio, momentum, inclination)
+    kappa = as_finite("restoring", restoring)
+    kappa_w = as_in_range("damping", damping, 0.0, math.inf)
+    x0 = as_finite("initial_state", initial_state)
+    if x0.shape[:1] != (5,):
+        raise ValueError(f"initial_state must have shape (5,) or (5, M), got shape {x0.shape}")
+    n_orbits = int(as_positive_scalar("orbits", orbits))
+    steps = int(as_positive_scalar("steps_per_orbit", steps_per_orbit))
+    states = _normalised_flow(a, c1, kappa, kappa_w, i, steps, n_orbits, record=True)(x0)
+    time = np.arange(steps * n_orbits + 1) * (2.0 * math.pi / steps)
+    return SimulationResult(time, states, np.empty((0, time.size)), np.empty((0, time.size)),
+                            ("alpha", "beta", "h", "rate_2", "rate_3"), (), (),
+                            params={"axial_ratio": a, "momentum": c1, "restoring": kappa, "damping": kappa_w,
+                                    "inclination": i})
+
+
+def _body_model(satellite, orbit, damping):
+    """The scalar right-hand side and the controller of :func:`simulate_rotor` (closures)."""
+    j = satellite.inertia_matrix
+    jinv = np.linalg.inv(j)
+    (j00, j01, j02), (j10, j11, j12), (j20, j21, j22) = j.tolist()
+    (i00, i01, i02), (i10, i11, i12), (i20, i21, i22) = jinv.tolist()
+    n = orbit.mean_motion
+    u0 = float(orbit.argument_of_latitude0)
+    inc = orbit.inclination
+    si, ci = math.sin(inc), math.cos(inc)
+    b0 = float(dipole_equatorial_b(orbit.earth_moment, orbit.radius))
+    sd, cd = math.sin(orbit.dipole_tilt), math.cos(orbit.dipole_tilt)
+    h0, hr = satellite.axial_momentum, satellite.rotor_inertia * satellite.rotor_rate
+    a_ax, b_tr = j00, satellite.transverse_inertia
+    k, kw, lim = satellite.restoring_gain, satellite.damping_gain, satellite.moment_limit
+    m2_scale = h0 * n / (b0 * si)
+    node, lam0, earth = orbit.ascending_node, orbit.dipole_longitude, orbit.earth_rotation_rate
+    momentum = damping == "momentum"
+    n2 = 3.0 * n * n
+
+    def controller(t, q0, q1, q2, q3, w1, w2, w3):
+        s = 2.0 / (q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
+        # R(q) (body -> orbital); body components of an orbital vector v are Rᵀ v.
+        r00, r01, r02 = 1.0 - s * (q2 * q2 + q3 * q3), s * (q1 * q2 - q0 * q3), s * (q1 * q3 + q0 * q2)
+        r10, r11, r12 = s * (q1 * q2 + q0 * q3), 1.0 - s * (q1 * q1 + q3 * q3), s * (q2 * q3 - q0 * q1)
+        r20, r21, r22 = s * (q1 * q3 - q0 * q2), s * (q2 * q3 + q0 * q1), 1.0 - s * (q1 * q1 + q2 * q2)
+        u = u0 + n * t
+        su, cu = math.sin(u), math.cos(u)
+        # real field: Kovalenko (1975) eq. (2.36), Λ = Ω − λ_N(t) − π/2
+        lam = node - (lam0 + earth * t) - 0.5 * math.pi
+        av = si * cd - ci * sd * math.cos(lam)
+        sv = sd * math.sin(lam)
+        f1 = b0 * (cu * av + su * sv)
+        f2 = b0 * (si * sd * math.cos(lam) + ci * cd)
+        f3 = -2.0 * b0 * (su * av - cu * sv)
+        bb1 = r00 * f1 + r10 * f2 + r20 * f3
+        bb2 = r01 * f1 + r11 * f2 + r21 * f3
+        bb3 = r02 * f1 + r12 * f2 + r22 * f3
+        # semi-body triad from the orbit normal o2 = C e2 (row 1 of R)
+        o1, o2, o3 = r10, r11, r12
+        nrm = math.sqrt(o2 * o2 + o3 * o3)
+        s3y, s3z = -o3 / nrm, o2 / nrm            # s3 = e1 × o2 / |·|, s2 = s3 × e1 = (0, s3z, −s3y)
+        p1, p2, p3 = k * b0 * si * cu, k * b0 * ci + m2_scale * cu, -2.0 * k * b0 * si * su
+        m1 = p1
+        m2 = p2 * s3z + p3 * s3y
+        m3 = -p2 * s3y + p3 * s3z
+        href = h0 * cu * cu
+        if momentum:
+            e1 = (j00 * w1 + j01 * w2 + j02 * w3 + hr - href - b_tr * n * o1) / b_tr
+            e2 = (j10 * w1 + j11 * w2 + j12 * w3 - b_tr * n * o2) / b_tr
+            e3 = (j20 * w1 + j21 * w2 + j22 * w3 - b_tr * n * o3) / b_tr
+        else:
+            e1 = w1 - n * o1 - (href - hr) / a_ax
+            e2 = w2 - n * o2
+            e3 = w3 - n * o3
+        bsq = bb1 * bb1 + bb2 * bb2 + bb3 * bb3
+        g = kw / bsq
+        m1 += g * (e2 * bb3 - e3 * bb2)
+        m2 += g * (e3 * bb1 - e1 * bb3)
+        m3 += g * (e1 * bb2 - e2 * bb1)
+        m1, m2, m3 = (min(max(m1, -lim), lim), min(max(m2, -lim), lim), min(max(m3, -lim), lim))
+        return (m1, m2, m3), (bb1, bb2, bb3), (r20, r21, r22), (o1, o2, o3)
+
+    def rhs(t, y):
+        q0, q1, q2, q3, w1, w2, w3 = y
+        (m1, m2, m3), (bb1, bb2, bb3), (x, yy, z), (o1, o2, o3) = controller(t, q0, q1, q2, q3, w1, w2, w3)
+        jr1, jr2, jr3 = j00 * x + j01 * yy + j02 * z, j10 * x + j11 * yy + j12 * z, j20 * x + j21 * yy + j22 * z
+        t1 = m2 * bb3 - m3 * bb2 + n2 * (yy * jr3 - z * jr2)
+        t2 = m3 * bb1 - m1 * bb3 + n2 * (z * jr1 - x * jr3)
+        t3 = m1 * bb2 - m2 * bb1 + n2 * (x * jr2 - yy * jr1)
+        k1, k2, k3 = j00 * w1 + j01 * w2 + j02 * w3 + hr, j10 * w1 + j11 * w2 + j12 * w3, j20 * w1 + j21 * w2 + j22 * w3
+        g1 = t1 - (w2 * k3 - w3 * k2)
+        g2 = t2 - (w3 * k1 - w1 * k3)
+        g3 = t3 - (w1 * k2 - w2 * k1)
+        v1, v2, v3 = w1 - n * o1, w2 - n * o2, w3 - n * o3
+        return [0.5 * (-q1 * v1 - q2 * v2 - q3 * v3), 0.5 * (q0 * v1 + q2 * v3 - q3 * v2),
+                0.5 * (q0 * v2 + q3 * v1 - q1 * v3), 0.5 * (q0 * v3 + q1 * v2 - q2 * v1),
+                i00 * g1 + i01 * g2 + i02 * g3, i10 * g1 + i11 * g2 + i12 * g3, i20 * g1 + i21 * g2 + i22 * g3]
+
+    return rhs, controller
+
+
+def rotor_body_rhs(time, state, satellite, orbit, *, damping="rate"):
+    r"""Right-hand side of the SI closed loop: gyrostat, gravity gradient, real field, the slides' law.
+
+    Parameters
+    ----------
+    time : float
+        t [s]; u = u0 + ω0 t.
+    state : array_like, shape (7,)
+        Quaternion (scalar first, v_orbital = R(q) v_body) [-] and ω, body axes [rad/s].
+    satellite : RotorSatellite
+        Spacecraft and gains [SI].
+    orbit : CircularOrbit
+        Orbit and real field (any dipole tilt and rotation) [SI].
+    damping : {"rate", "momentum"}, optional
+        Damp the rate error (the slides) or the momentum error (Kovalenko) [-].
+
+    Returns
+    -------
+    list of float
+        (q̇, ω̇) [1/s, rad/s²]: :func:`magbench.dynamics.gyrostat_rhs` with the dipole of
+        the slides' law (equilibrium part on the semi-body triad, damping on the real body
+        field, clipped per axis).
+
+    Notes
+    -----
+    Rotor slides, slides "Choice of control" and "Control implementation" (seed lines 63–87), with ``rotor_spin.md`` §8 (controller in body axes) and
+    §3 (model). Scalar code for speed; built per call here (for one evaluation);
+    :func:`simulate_rotor` builds it once.
+    """
+    _check_satellite(satellite)
+    _check_orbit(orbit)
+    x = as_finite("state", state)
+    if x.shape != (7,):
+        raise ValueError(f"state must have shape (7,), got shape {x.shape}")
+    rhs, _ = _body_model(satellite, orbit, as_choice("damping", damping, DAMPING))
+    return rhs(float(as_finite("time", time)), x.tolist())
+
+
+def simulate_rotor(satellite, orbit, duration, *, initial_angles=(0.0, 0.0, 0.0), initial_rate_error=(0.0, 0.0, 0.0),
+                   sample_interval=10.0, rtol=1e-8, atol=1e-10, damping="rate", method="DOP853"):
+    r"""Simulate the rotor spacecraft from an initial pointing error (adaptive integration).
+
+    Parameters
+    ----------
+    satellite : RotorSatellite
+        Spacecraft and gains [SI].
+    orbit : CircularOrbit
+        Orbit and real field; the program field is the direct dipole at
+        u = argument_of_latitude0 + n t [SI].
+    duration : float
+        Simulated time [s].
+    initial_angles : tuple of float, optional
+        (α0, β0, γ0) of the start, turned from the reference [rad].
+    initial_rate_error : array_like, shape (3,), optional
+        Added to the reference rate at the start, body axes [rad/s].
+    sample_interval : float, optional
+        Spacing of the samples from 0 to ``duration`` [s].
+    rtol, atol : float, optional
+        Tolerances of :func:`scipy.integrate.solve_ivp` [-]; rtol ≤ 1e-8 is needed
+        (1e-6 halves the transient by numerical damping, ``rotor_spin.md`` §9).
+    damping : {"rate", "momentum"}, optional
+        Damp the rate error (the slides) or the momentum error (Kovalenko) [-].
+    method : str, optional
+        :func:`scipy.integrate.solve_ivp` method [-].
+
+    Returns
+    -------
+    RotorRun
+        Samples of the run (``inputs`` holds the arguments and ``nfev``).
+
+    Notes
+    -----
+    Rotor slides, slide "Simulation (asymmetric spacecraft)" (lost) (seed lines 94–96),
+    with ``rotor_spin.md`` §8: start C0 = :func:`magbench.dynamics.airplane_231_matrix`
+    (α0, β0, γ0), ω = n C0 e2 + s_ref(u0) e1 + initial_rate_error.
+    """
+    _check_satellite(satellite)
+    _check_orbit(orbit)
+    t_end = as_positive_scalar("duration", duration, unit="s")
+    dt = as_positive_scalar("sample_interval", sample_interval, unit="s")
+    angles0 = as_finite("initial_angles", initial_angles)
+    if angles0.shape != (3,):
+        raise ValueError(f"initial_angles must have shape (3,) (α, β, γ) [rad], got shape {angles0.shape}")
+    if abs(angles0[1]) >= 0.5 * math.pi:
+        raise ValueError(f"initial_angles[1] (β) must be in (−π/2, π/2) rad, got {angles0[1]!r}")
+    dw = as_finite("initial_rate_error", initial_rate_error)
+    if dw.shape != (3,):
+        raise ValueError(f"initial_rate_error must have shape (3,) [rad/s], got shape {dw.shape}")
+    rtol = as_positive_scalar("rtol", rtol)
+    atol = as_positive_scalar("atol", atol)
+    damping = as_choice("damping", damping, DAMPING)
+    n = orbit.mean_motion
+    u0 = float(orbit.argument_of_latitude0)
+    c0 = airplane_231_matrix(*angles0)
+    a_ax = satellite.inertia_matrix[0, 0]
+    hr = satellite.rotor_inertia * satellite.rotor_rate
+    s_ref0 = (satellite.axial_momentum * math.cos(u0) ** 2 - hr) / a_ax
+    w0 = n * c0[:, 1] + s_ref0 * np.array([1.0, 0.0, 0.0]) + dw
+    q0 = Rotation.from_matrix(c0.T).as_quat(scalar_first=True)
+    rhs, controller = _body_model(satellite, orbit, damping)
+    samples = np.arange(0.0, t_end * (1.0 + 1e-12), dt)
+    sol = solve_ivp(rhs, (0.0, float(samples[-1])), np.concatenate([q0, w0]), method=method, t_eval=samples,
+                    rtol=rtol, atol=atol)
+    if not sol.success:
+        raise RuntimeError(f"solve_ivp failed: {sol.message}")
+    y = sol.y.T
+    q = y[:, :4] / np.linalg.norm(y[:, :4], axis=1, keepdims=True)
+    omega = y[:, 4:]
+    c = Rotation.from_quat(q, scalar_first=True).as_matrix().transpose(0, 2, 1)
+    dipole, torque = np.empty((samples.size, 3)), np.empty((samples.size, 3))
+    for n_s, (t, row) in enumerate(zip(samples, y)):
+        m, b, _, _ = controller(t, *row.tolist())
+        dipole[n_s] = m
+        torque[n_s] = np.cross(m, b)
+    u = u0 + n * samples
+    return RotorRun(time=samples, argument_of_latitude=u, attitude=q, angles=np.stack(airplane_231_angles(c), axis=1),
+                    omega=omega, pointing_error=np.arccos(np.clip(c[:, 0, 0], -1.0, 1.0)), spin_rate=omega[:, 0],
+                    spin_reference=(satellite.axial_momentum * np.cos(u) ** 2 - hr) / a_ax, dipole=dipole,
+                    torque=torque,
+                    inputs={"duration": t_end, "initial_angles": tuple(angles0.tolist()),
+                            "initial_rate_error": tuple(dw.tolist()), "sample_interval": dt, "rtol": rtol,
+                            "atol": atol, "damping": damping, "method": method, "nfev": int(sol.nfev)})
