@@ -88,6 +88,24 @@ def _default_step(mode, control_interval, off_time, record_interval, speed):
     return record_interval / np.ceil(record_interval / bound - 1e-12)
 
 
+class _Field:
+    """Inertial field, its rate and the radial direction at one time, kept for the RK stages
+    (the passive satellite's loop, :mod:`magbench.sim.passive`, uses it)."""
+
+    def __init__(self, orbit):
+        self.orbit = orbit
+        self.cache = {}
+
+    def __call__(self, time):
+        hit = self.cache.get(time)
+        if hit is None:
+            if len(self.cache) > 4:
+                self.cache.clear()
+            b, b_rate = self.orbit.field_and_rate(time)
+            hit = self.cache[time] = (b, b_rate, self.orbit.position(time) / self.orbit.radius)
+        return hit
+
+
 # -- the inner loop: members on the last axis, components as separate 1-D arrays ----------
 # Each RK stage is ~140 elementwise operations on arrays of M members; keeping components
 # apart avoids the stacking and axis handling that dominated a step with (M, 3) arrays.

@@ -121,9 +121,11 @@ def compute_fig2(estimator=0.0, **params):
     name = _estimator(estimator)
     d = study.duty_study(_key(**params), (name,))
     w = d["rates"] / DEG
+    damped = np.isfinite(d["median"][name])      # rates the discrete mode does not damp are left out
     return FigureData("", "", "", {}, [
         Series("continuous", {"initial_rate": ("deg/s", w), "duration": ("s", d["median"]["continuous"])}),
-        Series("discrete (16 s on / 1 s off)", {"initial_rate": ("deg/s", w), "duration": ("s", d["median"][name])}),
+        Series("discrete (16 s on / 1 s off)", {"initial_rate": ("deg/s", w[damped]),
+                                                "duration": ("s", d["median"][name][damped])}),
     ], extra={"estimator": name, "members": d["members"], "gain": d["gain"]})
 
 
@@ -209,8 +211,9 @@ def compute_distribution(**params):
                                         study.mean_square_field(env["orbit"]), env["initial_rate"],
                                         p["detumble_threshold"])
     return FigureData("", "", "", {}, [
-        Series("simulated (held 30 s)", {"detumble_time": ("s", env["held"]),
-                                         "initial_rate": ("deg/s", env["initial_rate"] / DEG)}),
+        Series("simulated (held 30 s)", {"detumble_time": ("s", env["held"][np.isfinite(env["held"])]),
+                                         "initial_rate": ("deg/s", env["initial_rate"][np.isfinite(env["held"])]
+                                                          / DEG)}),
         Series("Kovalenko (6.50)", {"detumble_time": ("s", estimate),
                                     "initial_rate": ("deg/s", env["initial_rate"] / DEG)}),
         Series("Cp557/detumble holdout", {"median": ("s", [CP557["median"]]), "p95": ("s", [CP557["p95"]])}),
@@ -276,9 +279,11 @@ def plot_basilisk(data):
 def compute_gain_sweep(**params):
     """Median time 10 → 0.5 °/s against k/k*, projected law, 3U and cube."""
     d = study.gain_sweep(_key(**params))
+    # Gains at which a member is not damped within the run have no median: left out.
     return FigureData("", "", "", {}, [
         Series(f"{name} (k* = {d['k_star'][name]:.3g} N·m·s)",
-               {"gain_ratio": ("1", d["ratios"]), "duration": ("s", d["median"][name])}) for name in d["median"]])
+               {"gain_ratio": ("1", d["ratios"][np.isfinite(d["median"][name])]),
+                "duration": ("s", d["median"][name][np.isfinite(d["median"][name])])}) for name in d["median"]])
 
 
 def plot_gain_sweep(data):
@@ -347,19 +352,19 @@ def plot_triad_rejection(data):
 
 register(FigureSpec("samsat-fig1", "Gain k against the initial separation rates (SamSat-218D Fig. 1, reconstruction)",
                     f"{SOURCE}, Fig. 1", compute_fig1, plot_fig1,
-                    partial(_parameters, "max_dipole", "initial_rate_x", "initial_rate_y", "fig2_rate_min", "fig2_rate_max",
-                                "fig2_rate_step", *_ORBIT)))
+                    partial(_parameters, "max_dipole", "initial_rate_x", "initial_rate_y", "fig2_rate_min",
+                            "fig2_rate_max", "fig2_rate_step", *_ORBIT)))
 register(FigureSpec("samsat-fig2", "Damping time, continuous and discrete modes (SamSat-218D Fig. 2, "
                     "reconstruction; about 25 s to compute)", f"{SOURCE}, Fig. 2", compute_fig2, plot_fig2,
-                    partial(_parameters, *_DUTY, estimator=FigureParameter(0.0, "1", "Ḃ estimator of the discrete mode: "
-                                                                  "0 model, 1 hold, 2 propagate"))))
+                    partial(_parameters, *_DUTY, estimator=FigureParameter(
+                        0.0, "1", "Ḃ estimator of the discrete mode: 0 model, 1 hold, 2 propagate"))))
 register(FigureSpec("ch05-rate-decay", "Rate decay, continuous and discrete (about 25 s to compute, shared with "
                     "samsat-fig2)", f"{SOURCE}, Rate damping", compute_rate_decay, plot_rate_decay,
                     partial(_parameters, *_DUTY)))
 register(FigureSpec("ch05-duty-estimators", "Damping kept by each duty-cycle estimator (about 15 s to compute)",
                     f"{SOURCE}, Rate damping (the estimators are ours)", compute_duty_estimators, plot_duty_estimators,
-                    partial(_parameters, *_DUTY, span=FigureParameter(1020.0, "s", "span over which |ω| drops (60 cycles; "
-                                                             "ours)"))))
+                    partial(_parameters, *_DUTY, span=FigureParameter(
+                        1020.0, "s", "span over which |ω| drops (60 cycles; ours)"))))
 register(FigureSpec("ch05-detumble-distribution", "3U envelope: 1000 detumble times beside Cp557 and Kovalenko (6.50) "
                     "(about 12 s to compute)", "Cp557/detumble; Kovalenko (1975) eq. (6.50)", compute_distribution,
                     plot_distribution, partial(_parameters, *_ENVELOPE)))
@@ -377,6 +382,6 @@ register(FigureSpec("ch05-gain-sweep", "Projected B-dot: median detumble time ag
 register(FigureSpec("ch05-triad-geometry", "TRIAD's error against the field–Sun angle", f"{SOURCE}, Attitude "
                     "determination; Shuster & Oh (1981)", compute_triad_geometry, plot_triad_geometry,
                     partial(_parameters, "field_sigma", "sun_sigma")))
-register(FigureSpec("ch05-triad-rejection", "TRIAD with and without the modulus tests", f"{SOURCE}, Attitude determination (the rejection tests)",
-                    compute_triad_rejection, plot_triad_rejection,
+register(FigureSpec("ch05-triad-rejection", "TRIAD with and without the modulus tests",
+                    f"{SOURCE}, Attitude determination (the rejection tests)", compute_triad_rejection, plot_triad_rejection,
                     partial(_parameters, *_ORBIT, "rejection_margin", "magnetometer_noise", "field_model_error")))
