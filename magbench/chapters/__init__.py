@@ -7,7 +7,8 @@ is a new module and one line in :data:`CHAPTERS`; the figure registry,
 list and need no other change.
 """
 
-from . import ch01_earth_field, ch02_field_simulator, ch03_magnetorquers, ch04_mockup, ch06_rotor, ch07_tns0
+from . import (ch01_earth_field, ch02_field_simulator, ch03_magnetorquers, ch04_mockup, ch05_detumbling, ch06_rotor,
+               ch07_tns0)
 from ._base import OVERRIDES_ENV, Chapter, chapter_parameters, read_overrides
 
 __all__ = ["CHAPTERS", "Chapter", "OVERRIDES_ENV", "chapter", "chapter_parameters", "read_overrides",
@@ -19,6 +20,7 @@ CHAPTERS = [
     ch02_field_simulator.CHAPTER,
     ch03_magnetorquers.CHAPTER,
     ch04_mockup.CHAPTER,
+    ch05_detumbling.CHAPTER,
     ch06_rotor.CHAPTER,
     ch07_tns0.CHAPTER,
 ]

@@ -175,3 +175,17 @@ def test_detumble_time_bad_input():
         detumble_time([0.0, 0.0], [0.1, 0.1])
     with pytest.raises(ValueError, match="rate must have shape"):
         detumble_time([0.0, 1.0], [0.1, 0.1, 0.1])
+
+
+def test_inner_loop_laws_equal_the_control_laws():
+    """The simulation's component-array laws give the numbers of magbench.control's."""
+    from magbench.control import bdot_dipole, bdot_dipole_projected
+    from magbench.sim.detumble import _law_bdot, _law_projected
+
+    rng = np.random.default_rng(3)
+    b, b_rate = rng.normal(size=(2, 50, 3)) * np.array([3e-5, 1e-6])[:, None, None]
+    k, limit = rng.uniform(1e3, 1e5, 50), np.array([0.2, 0.1, 0.3])
+    ours = np.stack(_law_bdot(tuple(b.T), tuple(b_rate.T), k, limit), axis=-1)
+    assert_allclose(ours, bdot_dipole(b_rate, k, limit), rtol=1e-15, atol=0)
+    ours = np.stack(_law_projected(tuple(b.T), tuple(b_rate.T), k * 1e-9, limit), axis=-1)
+    assert_allclose(ours, bdot_dipole_projected(b, b_rate, k * 1e-9, limit), rtol=1e-14, atol=1e-30)

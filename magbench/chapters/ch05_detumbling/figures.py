@@ -1,0 +1,387 @@
+"""Figures of chapter 5: SamSat-218D Figs. 1–2 as reconstructions, and the analysis figures.
+
+Each figure is a ``compute_*`` (numbers, tested) and ``plot_*`` (drawing) pair. The
+simulations live in :mod:`.study`, cached, so the book, the command line and the tests
+share one run. Figures whose defaults take more than 3 s say so in their title (which
+``magbench figures`` lists).
+"""
+
+from functools import partial
+
+import numpy as np
+
+from .._base import chapter_parameters
+from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from . import parameter_key, study
+
+DEG = np.pi / 180.0
+SOURCE = "Kramlikh & Melnik (2016), SamSat-218D"
+ESTIMATORS = ("model", "hold", "propagate")
+
+_UNITS = {"inertia_x": "kg m^2", "inertia_y": "kg m^2", "inertia_z": "kg m^2", "orbit_altitude": "m",
+          "orbit_inclination": "rad", "epoch": "year", "earth_radius": "m", "dipole_g10": "T", "dipole_g11": "T",
+          "dipole_h11": "T", "earth_rotation_rate": "rad/s", "max_dipole": "A m^2", "initial_rate_x": "rad/s",
+          "initial_rate_y": "rad/s", "initial_rate_z": "rad/s", "fig2_rate_min": "rad/s", "fig2_rate_max": "rad/s",
+          "fig2_rate_step": "rad/s", "on_time": "s", "off_time": "s", "detumble_threshold": "rad/s",
+          "fig2_members": "1", "fig2_seed": "1", "rejection_margin": "1", "magnetometer_noise": "T",
+          "field_model_error": "T", "field_sigma": "rad", "sun_sigma": "rad", "envelope_rate_low": "rad/s",
+          "envelope_rate_high": "rad/s", "envelope_altitude": "m", "envelope_inclination": "rad",
+          "envelope_dipole_field": "T", "envelope_dipole_tilt": "rad", "envelope_gain": "A m^2 s/T",
+          "envelope_members": "1", "envelope_seed": "1", "envelope_duration": "s", "integration_step": "s",
+          "air_density": "kg/m^3", "drag_coefficient": "1", "cross_section_area": "m^2",
+          "pressure_center_offset": "m"}
+
+
+def _defaults():
+    return chapter_parameters("ch05", overrides="")
+
+
+def _parameters(*names, **extra):
+    from ...io import load_parameter_set
+
+    p, sources = _defaults(), load_parameter_set("samsat")
+    out = {name: FigureParameter(p[name], _UNITS[name], f"{name.replace('_', ' ')} ({sources[name].source})")
+           for name in names}
+    out.update(extra)
+    return out
+
+
+def _key(**params):
+    """The chapter's defaults with a figure's parameters over them, as a cache key."""
+    p = _defaults()
+    p.update({k: v for k, v in params.items() if k in p})
+    return parameter_key(p)
+
+
+_ORBIT = ("orbit_altitude", "orbit_inclination", "earth_radius", "dipole_g10", "dipole_g11", "dipole_h11",
+          "earth_rotation_rate")
+_DUTY = ("inertia_x", "inertia_y", "inertia_z", *_ORBIT, "max_dipole", "initial_rate_x", "initial_rate_y",
+         "fig2_rate_min", "fig2_rate_max", "fig2_rate_step", "on_time", "off_time", "detumble_threshold",
+         "fig2_members", "fig2_seed")
+_ENVELOPE = ("inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold", "earth_rotation_rate",
+             "envelope_rate_low", "envelope_rate_high", "envelope_altitude", "envelope_inclination",
+             "envelope_dipole_field", "envelope_dipole_tilt", "envelope_gain", "envelope_members", "envelope_seed",
+             "envelope_duration", "integration_step")
+
+
+def _new_figure(height=3.4, ncols=1, width=6.4):
+    import matplotlib.pyplot as plt
+
+    return plt.subplots(1, ncols, figsize=(width, height))
+
+
+# --- SamSat Fig. 1: the gain against the initial rates -----------------------------------
+
+def compute_fig1(**params):
+    """k = L_max/(|ω₀| B_max) for ω₀ = (ωx, w, w), w over Fig. 2's axis (SS L245–253)."""
+    p = {**_defaults(), **params}
+    orbit = study.samsat_orbit(p)
+    b_max = study.max_field(orbit)
+    w = np.linspace(p["fig2_rate_min"], p["fig2_rate_max"], 81)
+    ticks = study.rate_grid(p["fig2_rate_min"], p["fig2_rate_max"], p["fig2_rate_step"])
+    default = study.fig1_gains(p["max_dipole"], p["initial_rate_x"], p["initial_rate_y"], b_max)
+    return FigureData("", "", "", {}, [
+        Series("k (ω₀ = (0.1, w, w) °/s)", {"initial_rate": ("deg/s", w / DEG),
+                                              "gain": ("A m^2 s/T", study.fig1_gains(p["max_dipole"],
+                                                                                      p["initial_rate_x"], w, b_max))}),
+        Series("Fig. 2's rates", {"initial_rate": ("deg/s", ticks / DEG),
+                                  "gain": ("A m^2 s/T", study.fig1_gains(p["max_dipole"], p["initial_rate_x"],
+                                                                          ticks, b_max))}),
+        Series("default (0.1, 10, 10) °/s", {"initial_rate": ("deg/s", [p["initial_rate_y"] / DEG]),
+                                             "gain": ("A m^2 s/T", default)}),
+    ], extra={"b_max": b_max, "max_dipole": p["max_dipole"]})
+
+
+def plot_fig1(data):
+    fig, ax = _new_figure(3.2)
+    line, ticks, default = data.series
+    ax.plot(*(line.columns[c][1] for c in ("initial_rate", "gain")), "C0-", label=line.label)
+    ax.plot(*(ticks.columns[c][1] for c in ("initial_rate", "gain")), "C0o", ms=4, label=ticks.label)
+    ax.plot(*(default.columns[c][1] for c in ("initial_rate", "gain")), "C3s", ms=6, label=default.label)
+    ax.set_xlabel("initial rate w about y and z [°/s]")
+    ax.set_ylabel("k [A·m²·s/T]")
+    ax.set_title(f"Reconstruction of SS Fig. 1: k for {data.extra['max_dipole']:g} A·m² at B_max = "
+                 f"{data.extra['b_max'] * 1e6:.1f} µT")
+    ax.legend()
+    ax.grid(alpha=0.3)
+    return fig
+
+
+# --- SamSat Fig. 2 and the estimators -----------------------------------------------------
+
+def _estimator(code):
+    index = int(round(code))
+    if index not in range(len(ESTIMATORS)) or abs(code - index) > 1e-9:
+        raise ValueError(f"estimator must be 0 (model), 1 (hold) or 2 (propagate), got {code!r}")
+    return ESTIMATORS[index]
+
+
+def compute_fig2(estimator=0.0, **params):
+    """Median detumble time, continuous and duty-cycled, over Fig. 2's initial rates."""
+    name = _estimator(estimator)
+    d = study.duty_study(_key(**params), (name,))
+    w = d["rates"] / DEG
+    damped = np.isfinite(d["median"][name])      # rates the discrete mode does not damp are left out
+    return FigureData("", "", "", {}, [
+        Series("continuous", {"initial_rate": ("deg/s", w), "duration": ("s", d["median"]["continuous"])}),
+        Series("discrete (16 s on / 1 s off)", {"initial_rate": ("deg/s", w[damped]),
+                                                "duration": ("s", d["median"][name][damped])}),
+    ], extra={"estimator": name, "members": d["members"], "gain": d["gain"]})
+
+
+def plot_fig2(data):
+    fig, ax = _new_figure(3.3)
+    for s, style in zip(data.series, ("C0o-", "C1s--")):
+        ax.plot(s.columns["initial_rate"][1], np.asarray(s.columns["duration"][1]) / 3600.0, style, label=s.label)
+    ax.set_xlabel("initial rate w, ω₀ = (0.1, w, w) [°/s]")
+    ax.set_ylabel("time to 0.5 °/s [h]")
+    ax.set_title(f"Reconstruction of SS Fig. 2: median of {data.extra['members']} attitudes, k = "
+                 f"{data.extra['gain']:.0f} A·m²·s/T, estimator '{data.extra['estimator']}'")
+    ax.legend()
+    ax.grid(alpha=0.3)
+    return fig
+
+
+def compute_rate_decay(**params):
+    """|ω|(t) of the first member at the default rates (0.1, 10, 10) °/s, both modes."""
+    p = {**_defaults(), **params}
+    d = study.duty_study(_key(**params), ("model",))
+    index = int(np.argmin(np.abs(d["rates"] - p["initial_rate_y"])))
+    series = []
+    for name, label in (("continuous", "continuous"), ("model", "discrete (16 s on / 1 s off), 'model'")):
+        t = d["time"][name]
+        series.append(Series(label, {"time": ("s", t), "rate": ("deg/s", d["rate"][name][index, 0] / DEG)}))
+    return FigureData("", "", "", {}, series, extra={"threshold": p["detumble_threshold"] / DEG,
+                                                      "w": d["rates"][index] / DEG,
+                                                      "two_n": 2 * study.samsat_orbit(p).mean_motion / DEG})
+
+
+def plot_rate_decay(data):
+    fig, ax = _new_figure(3.2)
+    for s, style in zip(data.series, ("C0-", "C1-")):
+        ax.semilogy(s.columns["time"][1] / 3600.0, s.columns["rate"][1], style, lw=1, label=s.label)
+    ax.axhline(data.extra["threshold"], color="k", ls=":", lw=1, label="0.5 °/s (damped)")
+    ax.axhline(data.extra["two_n"], color="0.5", ls="--", lw=1, label="2n (B-dot's end state)")
+    ax.set_xlabel("t [h]")
+    ax.set_ylabel("|ω| [°/s]")
+    ax.set_title(f"Rate decay from ω₀ = (0.1, {data.extra['w']:g}, {data.extra['w']:g}) °/s, one attitude")
+    ax.legend()
+    ax.grid(alpha=0.3, which="both")
+    return fig
+
+
+def compute_duty_estimators(span=1020.0, **params):
+    """The share of the continuous mode's damping each estimator keeps over the first
+    ``span``, against the initial rate (median over the members)."""
+    key = _key(**params)
+    d = study.duty_damping(key, span)
+    series = [Series(name, {"initial_rate": ("deg/s", d["rates"] / DEG),
+                            "ratio": ("1", np.median(d["ratio"][name], axis=-1))}) for name in ESTIMATORS]
+    limit = study.held_limit(dict(key)) / DEG
+    return FigureData("", "", "", {}, series, extra={"held_limit": limit, "held_limit_w": limit / np.sqrt(2.0),
+                                                     "span": span})
+
+
+def plot_duty_estimators(data):
+    fig, ax = _new_figure(3.3)
+    for s, style in zip(data.series, ("C1s-", "C2^--", "C4v:")):
+        ax.plot(s.columns["initial_rate"][1], s.columns["ratio"][1], style, label=f"discrete, '{s.label}'")
+    ax.axvline(data.extra["held_limit_w"], color="k", ls=":", lw=1,
+               label=f"|ω₀| = π/(T_on + T_off) = {data.extra['held_limit']:.1f} °/s")
+    ax.axhline(16 / 17, color="0.5", ls="--", lw=1, label="16/17 (the on-time fraction)")
+    ax.set_xlabel("initial rate w, ω₀ = (0.1, w, w) [°/s]")
+    ax.axhline(0.0, color="k", lw=0.8)
+    ax.set_ylabel("drop of |ω|, discrete / continuous")
+    ax.set_title(f"Damping kept by each Ḃ estimator over the first {data.extra['span']:.0f} s (below 0: spin-up)")
+    ax.legend(loc="lower left")
+    ax.grid(alpha=0.3)
+    return fig
+
+
+# --- peers ------------------------------------------------------------------------------
+
+def compute_distribution(**params):
+    """1000-member detumble times of the 3U envelope beside Cp557 and Kovalenko (6.50)."""
+    from . import CP557
+
+    key = _key(**params)
+    p = dict(key)
+    env = study.envelope_distribution(key)
+    estimate = study.kovalenko_650_time(max(p["inertia_y"], p["inertia_z"]), p["envelope_gain"],
+                                        study.mean_square_field(env["orbit"]), env["initial_rate"],
+                                        p["detumble_threshold"])
+    return FigureData("", "", "", {}, [
+        Series("simulated (held 30 s)", {"detumble_time": ("s", env["held"][np.isfinite(env["held"])]),
+                                         "initial_rate": ("deg/s", env["initial_rate"][np.isfinite(env["held"])]
+                                                          / DEG)}),
+        Series("Kovalenko (6.50)", {"detumble_time": ("s", estimate),
+                                    "initial_rate": ("deg/s", env["initial_rate"] / DEG)}),
+        Series("Cp557/detumble holdout", {"median": ("s", [CP557["median"]]), "p95": ("s", [CP557["p95"]])}),
+    ], extra={"members": env["held"].size})
+
+
+def plot_distribution(data):
+    fig, (ax, bx) = _new_figure(3.3, 2)
+    sim, kov, cp = data.series
+    t = np.sort(sim.columns["detumble_time"][1])
+    ax.hist(t, bins=40, color="C0", alpha=0.7, label=sim.label)
+    for value, style, label in ((np.median(t), "C0-", "median"), (np.percentile(t, 95), "C0--", "p95"),
+                                (cp.columns["median"][1][0], "C3-", "Cp557 median"),
+                                (cp.columns["p95"][1][0], "C3--", "Cp557 p95"),
+                                (np.median(kov.columns["detumble_time"][1]), "C2:", "Kovalenko (6.50) median")):
+        ax.axvline(value, color=style[:2], ls=style[2:], lw=1.2, label=label)
+    ax.set_xlabel("time to 0.5 °/s [s]")
+    ax.set_ylabel("members")
+    ax.set_title(f"{data.extra['members']} members, 5–15 °/s")
+    ax.legend(fontsize=7)
+    bx.plot(sim.columns["initial_rate"][1], sim.columns["detumble_time"][1], "C0.", ms=2, label="simulated")
+    order = np.argsort(kov.columns["initial_rate"][1])
+    bx.plot(kov.columns["initial_rate"][1][order], kov.columns["detumble_time"][1][order], "C2-", label="(6.50)")
+    bx.set_xlabel("initial |ω| [°/s]")
+    bx.set_ylabel("time [s]")
+    bx.set_title("against the initial rate")
+    bx.legend()
+    return fig
+
+
+def compute_basilisk(**params):
+    """The 18 Basilisk runs beside the library (10 Hz sampled and continuous law)."""
+    key = _key(**params)
+    sampled = study.basilisk_peer(key, mode="sampled")
+    continuous = study.basilisk_peer(key)
+    return FigureData("", "", "", {}, [
+        Series("10 Hz sampled (Basilisk's law)", {"basilisk_time": ("s", sampled["basilisk"]),
+                                                  "time": ("s", sampled["ours"])}),
+        Series("continuous (exact Ḃ)", {"basilisk_time": ("s", continuous["basilisk"]),
+                                        "time": ("s", continuous["ours"])}),
+    ])
+
+
+def plot_basilisk(data):
+    fig, (ax, bx) = _new_figure(3.2, 2)
+    for s, style in zip(data.series, ("C0o", "C1x")):
+        ref, ours = (np.asarray(s.columns[c][1]) for c in ("basilisk_time", "time"))
+        ax.plot(ref, ours, style, label=s.label)
+        bx.plot(ref, ours - ref, style, label=s.label)
+    lim = [1000, 5600]
+    ax.plot(lim, lim, "k:", lw=1)
+    ax.set_xlabel("Basilisk 2.12.1 [s]")
+    ax.set_ylabel("magbench [s]")
+    ax.set_title("Detumble time, 18 runs")
+    ax.legend()
+    bx.axhline(0, color="k", lw=0.8)
+    bx.set_xlabel("Basilisk 2.12.1 [s]")
+    bx.set_ylabel("magbench − Basilisk [s]")
+    bx.set_title("difference")
+    return fig
+
+
+def compute_gain_sweep(**params):
+    """Median time 10 → 0.5 °/s against k/k*, projected law, 3U and cube."""
+    d = study.gain_sweep(_key(**params))
+    # Gains at which a member is not damped within the run have no median: left out.
+    return FigureData("", "", "", {}, [
+        Series(f"{name} (k* = {d['k_star'][name]:.3g} N·m·s)",
+               {"gain_ratio": ("1", d["ratios"][np.isfinite(d["median"][name])]),
+                "duration": ("s", d["median"][name][np.isfinite(d["median"][name])])}) for name in d["median"]])
+
+
+def plot_gain_sweep(data):
+    fig, ax = _new_figure(3.2)
+    for s, style in zip(data.series, ("C0o-", "C1s--")):
+        ax.semilogx(s.columns["gain_ratio"][1], s.columns["duration"][1], style, label=s.label)
+    ax.axvline(1.0, color="k", ls=":", lw=1)
+    ax.set_xlabel("k / k*  (k* = 2n(1 + sin i) J_min)")
+    ax.set_ylabel("median time 10 → 0.5 °/s [s]")
+    ax.set_title("Projected B-dot: gain sweep (gaps: not damped in 12 000 s)")
+    ax.legend()
+    ax.grid(alpha=0.3, which="both")
+    return fig
+
+
+# --- TRIAD --------------------------------------------------------------------------------
+
+def compute_triad_geometry(field_sigma, sun_sigma):
+    """TRIAD's rms error against angle(H, S): Monte Carlo and Shuster–Oh."""
+    d = study.triad_geometry(field_sigma, sun_sigma)
+    a = d["angle"] / DEG
+    return FigureData("", "", "", {}, [
+        Series("Monte Carlo (2000 attitudes)", {"angle": ("deg", a), "rms_error": ("deg", d["monte_carlo"] / DEG)}),
+        Series("Shuster & Oh (1981)", {"angle": ("deg", a), "rms_error": ("deg", d["shuster_oh"] / DEG)}),
+    ])
+
+
+def plot_triad_geometry(data):
+    fig, ax = _new_figure(3.2)
+    for s, style in zip(data.series, ("C0o", "k-")):
+        ax.semilogy(s.columns["angle"][1], s.columns["rms_error"][1], style, ms=3, label=s.label)
+    ax.set_xlabel("angle between field and Sun [°]")
+    ax.set_ylabel("rms attitude error [°]")
+    ax.set_title("TRIAD with the field primary")
+    ax.legend()
+    ax.grid(alpha=0.3, which="both")
+    return fig
+
+
+def compute_triad_rejection(**params):
+    """Error CDFs of TRIAD on a synthetic mix, without and with the modulus tests."""
+    d = study.triad_rejection(_key(**params))
+    e = d["error"] / DEG
+    kept = d["field_ok"] & d["sun_ok"]
+    clean = ~(d["gross"] | d["albedo"])
+    series = []
+    for label, mask in (("no test", np.ones_like(kept)), ("modulus tests (field and Sun)", kept),
+                        ("clean samples only", clean)):
+        x = np.sort(e[mask])
+        series.append(Series(label, {"error": ("deg", x), "fraction": ("1", np.arange(1, x.size + 1) / x.size)}))
+    return FigureData("", "", "", {}, series)
+
+
+def plot_triad_rejection(data):
+    fig, ax = _new_figure(3.2)
+    for s, style in zip(data.series, ("C3-", "C0-", "k--")):
+        ax.semilogx(s.columns["error"][1], s.columns["fraction"][1], style, label=s.label)
+    ax.set_xlabel("attitude error [°]")
+    ax.set_ylabel("fraction of samples")
+    ax.set_xlim(0.1, 180)
+    ax.set_title("TRIAD on a synthetic mix with gross field errors and albedo (ours)")
+    ax.legend()
+    ax.grid(alpha=0.3, which="both")
+    return fig
+
+
+register(FigureSpec("samsat-fig1", "Gain k against the initial separation rates (SamSat-218D Fig. 1, reconstruction)",
+                    f"{SOURCE}, Fig. 1", compute_fig1, plot_fig1,
+                    partial(_parameters, "max_dipole", "initial_rate_x", "initial_rate_y", "fig2_rate_min",
+                            "fig2_rate_max", "fig2_rate_step", *_ORBIT)))
+register(FigureSpec("samsat-fig2", "Damping time, continuous and discrete modes (SamSat-218D Fig. 2, "
+                    "reconstruction; about 25 s to compute)", f"{SOURCE}, Fig. 2", compute_fig2, plot_fig2,
+                    partial(_parameters, *_DUTY, estimator=FigureParameter(
+                        0.0, "1", "Ḃ estimator of the discrete mode: 0 model, 1 hold, 2 propagate"))))
+register(FigureSpec("ch05-rate-decay", "Rate decay, continuous and discrete (about 25 s to compute, shared with "
+                    "samsat-fig2)", f"{SOURCE}, Rate damping", compute_rate_decay, plot_rate_decay,
+                    partial(_parameters, *_DUTY)))
+register(FigureSpec("ch05-duty-estimators", "Damping kept by each duty-cycle estimator (about 15 s to compute)",
+                    f"{SOURCE}, Rate damping (the estimators are ours)", compute_duty_estimators, plot_duty_estimators,
+                    partial(_parameters, *_DUTY, span=FigureParameter(
+                        1020.0, "s", "span over which |ω| drops (60 cycles; ours)"))))
+register(FigureSpec("ch05-detumble-distribution", "3U envelope: 1000 detumble times beside Cp557 and Kovalenko (6.50) "
+                    "(about 12 s to compute)", "Cp557/detumble; Kovalenko (1975) eq. (6.50)", compute_distribution,
+                    plot_distribution, partial(_parameters, *_ENVELOPE)))
+register(FigureSpec("ch05-basilisk-peer", "Detumble times beside Basilisk's 18 runs (about 15 s to compute)",
+                    "Basilisk 2.12.1 (shared reference §6.1)", compute_basilisk, plot_basilisk,
+                    partial(_parameters, "inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold",
+                                "envelope_altitude", "envelope_inclination", "envelope_dipole_field",
+                                "envelope_dipole_tilt", "envelope_gain")))
+register(FigureSpec("ch05-gain-sweep", "Projected B-dot: median detumble time against k/k* (about 5 s to compute)",
+                    "Avanzini & Giulietti (2012); Kovalenko (1975) eq. (6.7)", compute_gain_sweep, plot_gain_sweep,
+                    partial(_parameters, "inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold",
+                                "earth_rotation_rate", "envelope_altitude", "envelope_inclination",
+                                "envelope_dipole_field", "envelope_dipole_tilt", "envelope_seed",
+                                "integration_step")))
+register(FigureSpec("ch05-triad-geometry", "TRIAD's error against the field–Sun angle", f"{SOURCE}, Attitude "
+                    "determination; Shuster & Oh (1981)", compute_triad_geometry, plot_triad_geometry,
+                    partial(_parameters, "field_sigma", "sun_sigma")))
+register(FigureSpec("ch05-triad-rejection", "TRIAD with and without the modulus tests",
+                    f"{SOURCE}, Attitude determination (the rejection tests)", compute_triad_rejection, plot_triad_rejection,
+                    partial(_parameters, *_ORBIT, "rejection_margin", "magnetometer_noise", "field_model_error")))
