@@ -258,6 +258,70 @@ class _Body:
         return state + h / 6.0 * (k1 + 2.0 * (k2 + k3) + k4)
 
 
+def _initial_members(inertia, orbit, attitude, rate, gain):
+    """Checked inertia matrix, initial quaternions (M, 4), rates (M, 3) and M."""
+    j = _inertia_matrix("inertia", inertia)
+    if not isinstance(orbit, CircularOrbit):
+        raise ValueError(f"orbit must be a magbench.earth.CircularOrbit, got {type(orbit).__name__}")
+    q0 = _as_quaternions("attitude", attitude)
+    w0 = as_vectors("rate", rate)
+    if q0.ndim > 2 or w0.ndim > 2:
+        raise ValueError(f"attitude and rate must be (M, 4) or (4,) and (M, 3) or (3,), got {q0.shape} and {w0.shape}")
+    phase = np.asarray(orbit.argument_of_latitude0)
+    try:
+        members = np.broadcast_shapes(q0.shape[:-1], w0.shape[:-1], phase.shape, np.shape(gain))
+    except ValueError:
+        raise ValueError(f"attitude {q0.shape}, rate {w0.shape}, orbit.argument_of_latitude0 {phase.shape} and gain "
+                         f"{np.shape(gain)} must agree on the number of members M (or have none)") from None
+    members = members[0] if members else 1
+    q0 = np.array(np.broadcast_to(q0.reshape(-1, 4), (members, 4)))
+    q0 /= np.linalg.norm(q0, axis=-1, keepdims=True)
+    w0 = np.array(np.broadcast_to(w0.reshape(-1, 3), (members, 3)))
+    return j, q0, w0, members
+
+
+class _Schedule:
+    """What the coils do at each step: the continuous law (``None``: evaluated at every RK
+    stage), the sampled law held between samples, or the duty cycle's off window and its
+    estimator (SamSat-218D §"Rate damping"; the estimators are ours)."""
+
+    _ZERO = (0.0, 0.0, 0.0)
+
+    def __init__(self, mode, estimator, body, fields, dipole, delta, t_off, per_sample, n_off, n_on):
+        self.mode, self.estimator, self.body, self.fields, self.dipole = mode, estimator, body, fields, dipole
+        self.delta, self.t_off, self.per_sample, self.n_off, self.n_on = delta, t_off, per_sample, n_off, n_on
+        self.current, self.previous, self.window_start = None, None, None
+
+    def _field_body(self, i, state):
+        return self.body.to_body(state[:4], self.fields.field(i, 0))
+
+    def command(self, i, time, state):
+        """The held dipole (or ``None`` for the continuous law) from step ``i`` on."""
+        if self.mode == "sampled" and i % self.per_sample == 0:
+            sample = self._field_body(i, state)
+            self.current = self._ZERO if self.previous is None else self.dipole(
+                sample, tuple((s - p) / self.delta for s, p in zip(sample, self.previous)))
+            self.previous = sample
+        elif self.mode == "duty":
+            phase_step = i % (self.n_off + self.n_on)
+            if phase_step == 0:
+                self.window_start = self._field_body(i, state)
+                self.current = self._ZERO
+            elif phase_step == self.n_off:
+                self.current = self._estimate(self._field_body(i, state), time)
+        return self.current
+
+    def _estimate(self, b_end, time):
+        b_rate = tuple((e - s) / self.t_off for e, s in zip(b_end, self.window_start))
+        if self.estimator == "model":
+            return None
+        if self.estimator == "hold":
+            return self.dipole(b_end, b_rate)
+        b2 = b_end[0] ** 2 + b_end[1] ** 2 + b_end[2] ** 2
+        w_perp = tuple(-c / b2 for c in _cross3(b_end, b_rate))
+        return _Propagated(b_end, w_perp, time, self.dipole)
+
+
 def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dipole, law="bdot",
                       mode="continuous", control_interval=0.1, on_time=16.0, off_time=1.0, estimator="model",
                       step=None, gravity_gradient=True, record_interval=1.0):
@@ -330,23 +394,7 @@ def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dip
     >>> run.rate.shape, bool(run.rate[0, -1] < run.rate[0, 0])
     ((1, 61), True)
     """
-    j = _inertia_matrix("inertia", inertia)
-    if not isinstance(orbit, CircularOrbit):
-        raise ValueError(f"orbit must be a magbench.earth.CircularOrbit, got {type(orbit).__name__}")
-    q0 = _as_quaternions("attitude", attitude)
-    w0 = as_vectors("rate", rate)
-    if q0.ndim > 2 or w0.ndim > 2:
-        raise ValueError(f"attitude and rate must be (M, 4) or (4,) and (M, 3) or (3,), got {q0.shape} and {w0.shape}")
-    phase = np.asarray(orbit.argument_of_latitude0)
-    try:
-        members = np.broadcast_shapes(q0.shape[:-1], w0.shape[:-1], phase.shape, np.shape(gain))
-    except ValueError:
-        raise ValueError(f"attitude {q0.shape}, rate {w0.shape}, orbit.argument_of_latitude0 {phase.shape} and gain "
-                         f"{np.shape(gain)} must agree on the number of members M (or have none)") from None
-    members = members[0] if members else 1
-    q0 = np.array(np.broadcast_to(q0.reshape(-1, 4), (members, 4)))
-    q0 /= np.linalg.norm(q0, axis=-1, keepdims=True)
-    w0 = np.array(np.broadcast_to(w0.reshape(-1, 3), (members, 3)))
+    j, q0, w0, members = _initial_members(inertia, orbit, attitude, rate, gain)
     span = as_positive_scalar("duration", duration, unit="s")
     k = as_positive("gain", gain, unit="N·m·s" if law == "projected" else "A·m²·s/T")
     k = k[:, None] if k.ndim == 1 else k
@@ -382,32 +430,10 @@ def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dip
     state[:4], state[4:] = q0.T, w0.T
     rates = np.empty((members, n_records))
     rates[:, 0] = np.linalg.norm(w0, axis=-1)
-    zero = (0.0, 0.0, 0.0)
-    command, previous, window_start = None, None, None
     fields = _FieldTable(orbit, h, n_steps)
+    schedule = _Schedule(mode, estimator, body, fields, dipole, delta, t_off, per_sample, n_off, n_on)
     for i in range(n_steps):
-        time = i * h
-        if mode == "sampled" and i % per_sample == 0:
-            sample = body.to_body(state[:4], fields.field(i, 0))
-            command = zero if previous is None else dipole(sample, tuple((s - p) / delta
-                                                                        for s, p in zip(sample, previous)))
-            previous = sample
-        elif mode == "duty":
-            phase_step = i % (n_off + n_on)
-            if phase_step == 0:
-                window_start = body.to_body(state[:4], fields.field(i, 0))
-                command = zero
-            elif phase_step == n_off:
-                b_end = body.to_body(state[:4], fields.field(i, 0))
-                b_rate = tuple((e - s) / t_off for e, s in zip(b_end, window_start))
-                if estimator == "model":
-                    command = None
-                elif estimator == "hold":
-                    command = dipole(b_end, b_rate)
-                else:
-                    b2 = b_end[0] ** 2 + b_end[1] ** 2 + b_end[2] ** 2
-                    w_perp = tuple(-c / b2 for c in _cross3(b_end, b_rate))
-                    command = _Propagated(b_end, w_perp, time, dipole)
+        command = schedule.command(i, i * h, state)
         state = body.rk4(fields, i, state, h, command, dipole)
         state[:4] /= np.sqrt(state[0] ** 2 + state[1] ** 2 + state[2] ** 2 + state[3] ** 2)
         if (i + 1) % stride == 0:

@@ -20,7 +20,7 @@ def test_inputs_are_the_samsat_set():
 
 
 def test_dipole_is_igrf14_at_the_epoch():
-    from magbench.igrf import igrf_dipole
+    from magbench.earth import igrf_dipole
 
     p = dict(KEY)
     d = igrf_dipole(p["epoch"])
