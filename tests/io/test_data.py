@@ -140,3 +140,22 @@ def test_file_outside_manifest_is_rejected(tmp_path):
     (target / "loose.csv").write_text("x\n")
     with pytest.raises(DataError, match="must lie in a folder"):
         data.verify_checksum(target / "loose.csv", data_dir=target)
+
+
+def test_the_wheel_ships_the_data_with_its_checksums(tmp_path):
+    """An installed (non-editable) package has its data: every data file and every folder's
+    SHA256SUMS is in the wheel built from pyproject.toml."""
+    import subprocess
+    import sys
+    import zipfile
+
+    root = Path(__file__).resolve().parents[2]
+    result = subprocess.run([sys.executable, "-m", "pip", "wheel", "--quiet", "--no-deps", "--no-build-isolation",
+                             "--wheel-dir", str(tmp_path), str(root)], capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    (wheel,) = tmp_path.glob("magbench-*.whl")
+    shipped = {n for n in zipfile.ZipFile(wheel).namelist() if n.startswith("magbench/data/")}
+    expected = {f"magbench/data/{p.relative_to(DATA_DIR).as_posix()}" for p in DATA_DIR.rglob("*")
+                if p.is_file() and "__pycache__" not in p.parts}
+    assert expected <= shipped, sorted(expected - shipped)
+    assert "magbench/data/thesis/SHA256SUMS" in shipped
