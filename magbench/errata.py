@@ -12,12 +12,9 @@ printed value, the rest ordinary reference-value tests.
 """
 
 from .compare import Comparison, verdict
+from .units import SI_FACTORS
 
 __all__ = ["source_check", "printed_check", "kovalenko_page"]
-
-#: The SI value of one display unit, for the units printed values are shown in.
-_UNIT_SCALE = {"deg": 0.017453292519943295, "%": 0.01, "Oe": 79.57747154594767, "mm": 1e-3}
-
 
 def source_check(*, id, chapter, source, location, quantity, printed, computed, tolerance, unit,
                  explanation, computation):
@@ -30,7 +27,7 @@ def source_check(*, id, chapter, source, location, quantity, printed, computed, 
     return Comparison(id=id, quantity=quantity, source=source, measured=printed, uncertainty=None,
                       unit=unit, model=computed, difference=computed - printed, tolerance=float(tolerance),
                       verdict=verdict(printed - computed, tolerance), note=explanation, chapter=chapter,
-                      location=location, computation=computation, scale=_UNIT_SCALE.get(unit, 1.0))
+                      location=location, computation=computation, scale=SI_FACTORS.get(unit, 1.0))
 
 
 def printed_check(row, *, id, chapter, location, computed, explanation, computation, quantity=None,

@@ -15,6 +15,8 @@ import numpy as np
 from .constants import MU_0
 
 __all__ = [
+    "SI_FACTORS",
+    "SI_UNIT_NAMES",
     "oersted_to_ampere_per_meter",
     "ampere_per_meter_to_oersted",
     "gauss_to_tesla",
@@ -24,6 +26,28 @@ __all__ = [
     "emu_to_ampere_square_meter",
     "ampere_square_meter_to_emu",
 ]
+
+
+#: SI value of one unit as the sources print it (the data files' ``unit`` column).
+SI_FACTORS = {
+    "1": 1.0, "A": 1.0, "V": 1.0, "W": 1.0, "s": 1.0, "m": 1.0, "ohm": 1.0, "A/m": 1.0,
+    "T": 1.0, "kg": 1.0, "kg m^2": 1.0, "kg/m^3": 1.0, "ohm m": 1.0, "A m^2": 1.0,
+    "rad": 1.0, "rad/s": 1.0, "year": 1.0, "N m/rad": 1.0, "m^2": 1.0, "W/V": 1.0, "kg V": 1.0,
+    "ohm kg/m^2": 1.0, "A/m^2": 1.0, "N m": 1.0, "N m/kg": 1.0, "kg/(N m)": 1.0,
+    "m^3": 1.0, "kg m^2/s": 1.0, "J/m^3": 1.0, "A m^2 s/T": 1.0,
+    "mm": 1e-3, "km": 1e3, "cm": 1e-2, "cm^3": 1e-6,
+    "deg": np.pi / 180.0, "deg/s": np.pi / 180.0,
+    "%": 1e-2,
+    "emu": 1e-3,            # G·cm³ (Kovalenko 1975, p. 22)
+    "Oe": 1000.0 / (4.0 * np.pi),
+    "nT": 1e-9, "uT": 1e-6, "G": 1e-4,
+    "rpm": np.pi / 30.0,   # revolutions per minute (rotor slides, seed line 101)
+    "G Oe": 1e-4 * 1000.0 / (4.0 * np.pi),   # loop energy ∮H dB (Kovalenko 1975, p. 229)
+}
+
+#: The SI unit of each printed unit that is not SI itself.
+SI_UNIT_NAMES = {"cm^3": "m^3", "mm": "m", "km": "m", "cm": "m", "deg": "rad", "deg/s": "rad/s", "%": "1",
+            "emu": "A m^2", "Oe": "A/m", "nT": "T", "uT": "T", "G": "T", "rpm": "rad/s", "G Oe": "J/m^3"}
 
 # 1 Oe = 1000/(4 pi) A/m exactly (definition of the CGS-Gaussian oersted).
 _A_PER_M_PER_OERSTED = 1000.0 / (4.0 * np.pi)

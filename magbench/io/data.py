@@ -51,25 +51,8 @@ __all__ = [
 #: The project's data directory: package data, so an installed package has it too.
 DATA_DIR = Path(str(files("magbench") / "data"))
 
-#: Conversion factors from the units the sources print to SI.
-_TO_SI = {
-    "1": 1.0, "A": 1.0, "V": 1.0, "W": 1.0, "s": 1.0, "m": 1.0, "ohm": 1.0, "A/m": 1.0,
-    "T": 1.0, "kg": 1.0, "kg m^2": 1.0, "kg/m^3": 1.0, "ohm m": 1.0, "A m^2": 1.0,
-    "rad": 1.0, "rad/s": 1.0, "year": 1.0, "N m/rad": 1.0, "m^2": 1.0, "W/V": 1.0, "kg V": 1.0,
-    "ohm kg/m^2": 1.0, "A/m^2": 1.0, "N m": 1.0, "N m/kg": 1.0, "kg/(N m)": 1.0,
-    "m^3": 1.0, "kg m^2/s": 1.0, "J/m^3": 1.0, "A m^2 s/T": 1.0,
-    "mm": 1e-3, "km": 1e3, "cm": 1e-2, "cm^3": 1e-6,
-    "deg": math.pi / 180.0, "deg/s": math.pi / 180.0,
-    "%": 1e-2,
-    "emu": 1e-3,            # G·cm³ (Kovalenko 1975, p. 22)
-    "Oe": 1000.0 / (4.0 * math.pi),
-    "nT": 1e-9, "uT": 1e-6, "G": 1e-4,
-    "rpm": math.pi / 30.0,   # revolutions per minute (rotor slides, seed line 101)
-    "G Oe": 1e-4 * 1000.0 / (4.0 * math.pi),   # loop energy ∮H dB (Kovalenko 1975, p. 229)
-}
-
-_SI_UNIT = {"cm^3": "m^3", "mm": "m", "km": "m", "cm": "m", "deg": "rad", "deg/s": "rad/s", "%": "1",
-            "emu": "A m^2", "Oe": "A/m", "nT": "T", "uT": "T", "G": "T", "rpm": "rad/s", "G Oe": "J/m^3"}
+from ..units import SI_FACTORS as _TO_SI
+from ..units import SI_UNIT_NAMES as _SI_UNIT
 
 
 class DataError(ValueError):

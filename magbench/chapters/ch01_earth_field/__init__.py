@@ -16,6 +16,7 @@ from ...constants import EARTH_POLAR_MOMENT_OF_INERTIA, EARTH_RADIUS, EARTH_ROTA
 from ...io import load_parameter_set, load_printed
 from ...errata import source_check
 from ...units import ampere_per_meter_to_oersted, tesla_to_oersted
+from ..._format import format_number
 from .._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "IGRF_NEWEST_EPOCH", "geomagnetic_rows", "geomagnetic_checks",
@@ -141,8 +142,7 @@ def geomagnetic_checks():
     moment_l, field_h = p["mtq_moment"], p["sim_design_h"]      # thesis design values (§2.1 and §3.2)
     inclination_igrf = float(np.degrees(igrf.igrf_field(lat, lon, p["thesis_epoch"]).inclination))
     printed_m = load_parameter_set("thesis")["earth_dipole_moment"]
-    mantissa, exponent = f"{printed_m.value:.1e}".split("e")
-    cgs_moment = f"{mantissa}·10{str(int(exponent)).translate(str.maketrans('0123456789-', '⁰¹²³⁴⁵⁶⁷⁸⁹⁻'))}"
+    cgs_moment = format_number(printed_m.value, 2)
     b0_printed = tuple(kov[k].value_as_printed for k in ("kov-g10-1965", "kov-g11-1965", "kov-h11-1965"))
     return [
         source_check(
@@ -189,7 +189,7 @@ def geomagnetic_checks():
             tolerance=0.0, unit="N m",
             explanation=("M = L × H holds only in CGS units, where B = H in vacuum. In SI the "
                          "torque is μ0 L × H; read literally with SI inputs, eq. (5) is off by "
-                         f"a factor 1/μ0 ≈ {1e-5 / MU_0:.0f}·10⁵."),
+                         f"a factor 1/μ0 ≈ {format_number(1 / MU_0, 1)}."),
             computation="magbench.dynamics.magnetic_torque_from_h",
         ),
         source_check(

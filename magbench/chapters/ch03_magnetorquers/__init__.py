@@ -10,6 +10,7 @@ from ... import hardware
 from ...compare import make_row
 from ...io import load_measurements, load_parameter_set, load_printed
 from ...errata import kovalenko_page, printed_check, source_check
+from ..._format import format_number
 from .._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "magnetorquer_rows", "magnetorquer_checks", "magnetorquer_design_checks",
@@ -129,7 +130,7 @@ def magnetorquer_checks():
             location="§3.2", quantity="Conductor cross-section S_r = 4ρm/(Ul) (eq. 21)",
             printed=printed["thesis-mtq-wire-area"].value, computed=float(s_design),
             tolerance=printed["thesis-mtq-wire-area"].resolution, unit="m^2",
-            explanation=(f"Eq. (21) gives {s_design * 1e8:.3f}·10⁻⁸ m², printed rounded up; the printed wire "
+            explanation=(f"Eq. (21) gives {format_number(s_design, 4)} m², printed rounded up; the printed wire "
                          f"diameter {printed['thesis-mtq-wire-diameter'].value_as_printed:g} mm follows from "
                          f"{s_design * 1e8:.3f} ({d_design * 1e3:.3f} mm; 2.34 would give {d_printed_area * 1e3:.3f} mm)."),
             computation="magbench.hardware.wire_area_for_moment"),
@@ -202,7 +203,7 @@ def magnetorquer_design_checks():
               hardware.joule_power_for_moment(m_req, u, n, side, "square"), "W", "Eq. (28).",
               "joule_power_for_moment", quantity=f"Joule power at N = {n:.0f}"),
         check("thesis-mtq-wire-diameter", "thesis-mtq-wire-diameter", "§3.2", hardware.wire_diameter(s_design), "m",
-              f"√(4S_r/π) with S_r = {s_design * 1e8:.3f}·10⁻⁸ m².", "wire_diameter"),
+              f"√(4S_r/π) with S_r = {format_number(s_design, 4)} m².", "wire_diameter"),
         check("thesis-mtq-resistance", "mtq-resistance-computed", "§3.3", r_built, "ohm",
               f"N·ρ·4l/S_r with the {sq}; {r_round:.1f} Ω if the turn were round.", "coil_resistance",
               quantity=f"Resistance of the built coil ({built['mtq-wire-diameter'].value * 1e3:g} mm, N = {n:.0f})"),
