@@ -393,22 +393,30 @@ def rotor_linearised_matrices(tau, axial_ratio, momentum, inclination):
 
 def _monodromy(a, c1, i, kappa, kappa_w, steps):
     kappa, kappa_w = np.broadcast_arrays(np.asarray(kappa, float), np.asarray(kappa_w, float))
-    k, kw = kappa[..., None, None], kappa_w[..., None, None]
-    cache = {}
-
-    def rhs(tau, phi):
-        hit = cache.get(tau)
-        if hit is None:
-            cache.clear()
-            a0, a1, a2 = _linearised(tau, a, c1, i)
-            hit = cache[tau] = a0 + k * a1 + kw * a2
-        return hit @ phi
-
-    phi = np.broadcast_to(np.eye(5), kappa.shape + (5, 5)).copy()
+    shape = kappa.shape
+    k, kw = kappa.ravel(), kappa_w.ravel()
     h = 2.0 * math.pi / steps
+    # A0, A1, A2 are the same for every gain pair: tabulate them once on the RK4 stage
+    # times (half steps). Rows 0 and 1 of A are α' = δΩ2, β' = δΩ3 for every member, so
+    # only rows 2-4 are multiplied out, with the members on the last axis (x[r, j, p] is
+    # element (r, j) of Φ of member p) — several times faster than a batched
+    # (m, 5, 5) @ (m, 5, 5) product.
+    a0, a1, a2 = _linearised(np.arange(2 * steps + 1) * (0.5 * h), a, c1, i)
+    # rows 2-4 of A0, A1, A2 side by side: table[n] @ (1, κ, κ_w) gives every member's rows
+    table = np.ascontiguousarray(np.stack([a0[:, 2:, :], a1[:, 2:, :], a2[:, 2:, :]], axis=-1).reshape(-1, 15, 3))
+    gains = np.stack([np.ones_like(k), k, kw])                # (3, m)
+
+    def rhs(tau, x):
+        c = (table[int(round(tau / (0.5 * h)))] @ gains).reshape(3, 5, -1)
+        out = np.empty_like(x)
+        out[0], out[1] = x[3], x[4]
+        out[2:] = np.einsum("rjp,jcp->rcp", c, x)
+        return out
+
+    x = np.repeat(np.eye(5)[:, :, None], k.size, axis=2)
     for n in range(steps):
-        phi = rk4_step(rhs, n * h, phi, h)
-    return phi
+        x = rk4_step(rhs, n * h, x, h)
+    return np.moveaxis(x, 2, 0).reshape(shape + (5, 5))
 
 
 def rotor_floquet_multipliers(axial_ratio, momentum, restoring, damping, inclination, *, steps=1000):
