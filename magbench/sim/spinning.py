@@ -640,7 +640,13 @@ def _body_model(satellite, orbit, damping):
         # semi-body triad from the orbit normal o2 = C e2 (row 1 of R)
         o1, o2, o3 = r10, r11, r12
         nrm = math.sqrt(o2 * o2 + o3 * o3)
-        s3y, s3z = -o3 / nrm, o2 / nrm            # s3 = e1 × o2 / |·|, s2 = s3 × e1 = (0, s3z, −s3y)
+        if nrm > 1e-12:
+            s3y, s3z = -o3 / nrm, o2 / nrm        # s3 = e1 × o2 / |·|, s2 = s3 × e1 = (0, s3z, −s3y)
+        else:
+            # rotor axis along the orbit normal (β = ±90°): the semi-body triad is undefined and
+            # the law, made for small β, has no preferred s3; any unit vector across e1 keeps the
+            # run going (a tumbling spacecraft at unstable gains can pass through it)
+            s3y, s3z = 0.0, 1.0
         p1, p2, p3 = k * b0 * si * cu, k * b0 * ci + m2_scale * cu, -2.0 * k * b0 * si * su
         m1 = p1
         m2 = p2 * s3z + p3 * s3y
