@@ -76,7 +76,7 @@ def orbit_maxima(run, orbital_rate):
     """Largest pointing error [rad] in each whole orbit of a run (orbit k: k T ≤ t < (k + 1) T)."""
     period = 2.0 * math.pi / orbital_rate
     index = np.floor(run.time / period * (1.0 + 1e-12)).astype(int)
-    n = int(round(run.time[-1] / period))
+    n = max(1, int(round(run.time[-1] / period)))        # a run shorter than an orbit: its one partial orbit
     return np.array([run.pointing_error[index == k].max() for k in range(n)])
 
 
@@ -165,6 +165,17 @@ def relay_spin_correction(relative_change, field_ratio, *, torque_number=2e-4, a
     dipole L_x = −L0 sign B_y, L_y = L0 sign B_x in body axes (sign Δω = +1, L0 B⊥ =
     ``torque_number`` J3 ω3², small so that the correction lasts many spin turns) acts
     until the spin has changed by ``relative_change``.
+
+    Parameters
+    ----------
+    relative_change : float
+        δω = Δω3/ω3 the correction makes, in (0, 0.5) [-].
+    field_ratio : float
+        B∥/B⊥ during the correction, in [0, 10] [-].
+    torque_number : float, optional
+        L0 B⊥/(J3 ω3²) [-].
+    axial_ratio : float, optional
+        J3 over the transverse inertia [-].
 
     Returns
     -------

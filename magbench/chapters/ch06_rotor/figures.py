@@ -380,7 +380,7 @@ def _field_model_parameters():
     return {
         "real_tilt": FigureParameter(_thesis_tilt(), "rad", "tilt of the real dipole (the thesis's printed 11.5°)"),
         "small_tilt": FigureParameter(1.0 * DEG, "rad", "a small tilt for the error per degree (ours)"),
-        "orbits": FigureParameter(3.0, "1", "orbits simulated per run (slow: about 3 s per orbit)"),
+        "orbits": FigureParameter(2.0, "1", "orbits simulated per run (slow: about 4 s per orbit)"),
     }
 
 
@@ -435,7 +435,7 @@ def plot_field_model(data):
 def _inertia_parameters():
     return {
         "product_of_inertia": FigureParameter(0.002, "kg m^2", "I12 = I13 (ours, 0.8 % of B)"),
-        "orbits": FigureParameter(3.0, "1", "orbits simulated per run (slow: about 3 s per orbit)"),
+        "orbits": FigureParameter(2.0, "1", "orbits simulated per run (slow: about 4 s per orbit)"),
     }
 
 
