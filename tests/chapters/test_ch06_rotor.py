@@ -146,7 +146,12 @@ def test_a_tilted_real_dipole_pushes_the_axis_off_and_a_direct_one_does_not():
 
 @pytest.mark.slow
 def test_an_under_resolved_integrator_shortens_the_transient():
-    data = figures.compute("rotor-tolerance")
-    tight, loose = (s.columns["orbit_maxima"][1] for s in data.series)
+    from magbench.chapters.ch06_rotor import default_run, default_rotor_orbit, orbit_maxima
+    from magbench.params import chapter_parameters
+
+    p = chapter_parameters(CHAPTER_KEY)
+    w0 = default_rotor_orbit(p).mean_motion
+    tight = orbit_maxima(default_run(p), w0)
+    loose = orbit_maxima(default_run({**p, "relative_tolerance": 1e-6}), w0)
     # rotor_spin.md §9: rtol 1e-6 roughly halves the orbit-4–5 maximum (numerical damping)
     assert max(loose[-2:]) < 0.7 * max(tight[-2:])

@@ -496,84 +496,6 @@ def plot_products_of_inertia(data):
     return fig
 
 
-def _tolerance_parameters():
-    p = _defaults()
-    return {
-        "loose_tolerance": FigureParameter(1e-6, "1", "an under-resolved solve_ivp rtol (atol = rtol/100)"),
-        "relative_tolerance": FigureParameter(p["relative_tolerance"], "1", "the chapter's rtol (atol = rtol/100)"),
-    }
-
-
-def compute_tolerance(loose_tolerance, relative_tolerance):
-    """The default run (the lost simulation slide) at the chapter's tolerance and at a loose one."""
-    p = chapter_parameters(CHAPTER.key)
-    w0 = default_rotor_orbit(p).mean_motion
-    series = []
-    for rtol in (relative_tolerance, loose_tolerance):
-        run = default_run({**p, "relative_tolerance": float(rtol)})
-        series.append(_pointing_series(f"rtol {rtol:.0e}", run, w0))
-        series[-1].columns["nfev"] = ("1", [run.inputs["nfev"]])
-    return FigureData("", "", "", {}, series)
-
-
-def plot_tolerance(data):
-    """Pointing error at the two tolerances."""
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(figsize=(6.4, 3.6))
-    for s, colour in zip(data.series, ("C0", "C3")):
-        ax.plot(s.columns["time"][1], s.columns["pointing_error"][1], colour, linewidth=0.7,
-                label=f"DOP853, {s.label}")
-    ax.set_xlabel("time [orbits]")
-    ax.set_ylabel("pointing error [deg]")
-    ax.legend(loc="upper right")
-    ax.set_title("An under-resolved integrator damps the transient numerically")
-    return fig
-
-
-ASYMMETRIES = (0.0, 0.1, 0.2, 0.25, 0.3)
-
-
-def _asymmetry_parameters():
-    return {"orbits": FigureParameter(_defaults()["simulation_orbits"], "1",
-                                      "orbits per run; the window is the last two (slow: 5 runs)")}
-
-
-def compute_asymmetry(orbits):
-    """Largest and rms pointing error over the last two orbits against ε = (I33 − I22)/(I33 + I22), B fixed."""
-    n = _whole_orbits(orbits)
-    p = chapter_parameters(CHAPTER.key)
-    w0 = default_rotor_orbit(p).mean_motion
-    b = 0.5 * (p["transverse_inertia_2"] + p["transverse_inertia_3"])
-    largest, rms = [], []
-    for eps in ASYMMETRIES:
-        run = default_run({**p, "transverse_inertia_2": b * (1 - eps), "transverse_inertia_3": b * (1 + eps),
-                           "simulation_orbits": float(n)})
-        window = run.time >= max(n - 2, 0) * 2.0 * math.pi / w0
-        largest.append(float(np.degrees(run.pointing_error[window].max())))
-        rms.append(float(np.degrees(np.sqrt(np.mean(run.pointing_error[window] ** 2)))))
-    return FigureData("", "", "", {}, [Series("window", {"asymmetry": ("1", np.array(ASYMMETRIES)),
-                                                         "largest": ("deg", np.array(largest)),
-                                                         "rms": ("deg", np.array(rms))})],
-                      extra={"window": f"orbits {max(n - 1, 1)}–{n}"})
-
-
-def plot_asymmetry(data):
-    """Largest and rms pointing error against ε, with the slides' 10–15° band."""
-    import matplotlib.pyplot as plt
-
-    c = data.series[0].columns
-    fig, ax = plt.subplots(figsize=(6.4, 3.6))
-    ax.axhspan(10, 15, color="C1", alpha=0.25, label="slides: 10–15°")
-    ax.plot(c["asymmetry"][1], c["largest"][1], "C0o-", label=f"largest, {data.extra['window']}")
-    ax.plot(c["asymmetry"][1], c["rms"][1], "C2s--", label=f"rms, {data.extra['window']}")
-    ax.set_xlabel("transverse asymmetry (I33 − I22)/(I33 + I22) [-]")
-    ax.set_ylabel("pointing error [deg]")
-    ax.legend(loc="upper left")
-    ax.set_title("Pointing error against asymmetry (ideal model, parameters ours)")
-    return fig
-
-
 def _relay_parameters():
     return {"samples": FigureParameter(720.0, "1", "points over one turn of the transverse field")}
 
@@ -604,8 +526,8 @@ def plot_spin_relay(data):
     ax.set_xlabel("angle α of the transverse field [deg]")
     ax.set_ylabel("spin torque / (L0 B⊥) [-]")
     ax.set_xticks(np.arange(0, 361, 90))
-    ax.set_ylim(0.9, 1.5)
-    ax.legend(loc="upper right", ncols=2)
+    ax.set_ylim(0.6, 1.5)
+    ax.legend(loc="lower center", ncols=2)
     ax.set_title("Kovalenko (7.26): the relay law's mean moment is 4/π L0")
     return fig
 
@@ -617,11 +539,6 @@ register(FigureSpec("rotor-products-of-inertia", "Products of inertia: rate damp
                     "(beyond the slides; slow)",
                     f"ours, beyond the {SOURCE}; Kovalenko (1975) eqs. (4.30)–(4.32), (7.5)",
                     compute_products_of_inertia, plot_products_of_inertia, _inertia_parameters))
-register(FigureSpec("rotor-tolerance", "Integration tolerance of the spinning run (beyond the slides; slow)",
-                    f"ours, beyond the {SOURCE}", compute_tolerance, plot_tolerance, _tolerance_parameters))
-register(FigureSpec("rotor-asymmetry", "Pointing error against the transverse asymmetry (slow, about 90 s)",
-                    f"{SOURCE}, slide 'Simulation (asymmetric spacecraft)' (lost); parameters ours",
-                    compute_asymmetry, plot_asymmetry, _asymmetry_parameters))
 register(FigureSpec("kovalenko-spin-relay", "Kovalenko's relay spin law over a turn of the field",
                     "Kovalenko (1975) §7.3, eqs. (7.12), (7.26)", compute_spin_relay, plot_spin_relay,
                     _relay_parameters))
