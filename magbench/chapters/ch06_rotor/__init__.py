@@ -24,7 +24,7 @@ from .defaults import default_rotor_orbit, default_rotor_satellite, rotor_parame
 
 __all__ = ["CHAPTER", "INPUTS", "default_rotor_orbit", "default_rotor_satellite", "rotor_parameters",
            "default_run", "orbit_maxima", "claim_rows", "damping_checks", "kovalenko_checks",
-           "relay_mean_moment", "printed_damping_power"]
+           "relay_mean_moment", "relay_spin_correction", "printed_damping_power"]
 
 RPM = 2.0 * math.pi / 60.0
 DEG = math.pi / 180.0
@@ -76,12 +76,13 @@ def orbit_maxima(run, orbital_rate):
     """Largest pointing error [rad] in each whole orbit of a run (orbit k: k T ≤ t < (k + 1) T)."""
     period = 2.0 * math.pi / orbital_rate
     index = np.floor(run.time / period * (1.0 + 1e-12)).astype(int)
-    n = int(round(run.time[-1] / period))
+    n = max(1, int(round(run.time[-1] / period)))        # a run shorter than an orbit: its one partial orbit
     return np.array([run.pointing_error[index == k].max() for k in range(n)])
 
 
 def claim_rows(params=None):
-    """The slides' three conclusions (slide 'Conclusion') beside the simulated run.
+    """The slides' three conclusions (slide 'Conclusion') beside the simulated run, and
+    Kovalenko's spin-stabilised satellites (§7.3) beside it.
 
     The claims are verbal or a range; ``data/rotor/printed.csv`` holds our reading of
     each as a range, and the tolerance is its half-width. The model values come from
@@ -89,10 +90,18 @@ def claim_rows(params=None):
 
     * spin: the mean body spin |s| [rpm];
     * spin accuracy: the largest |s − mean s| of the run in units of ω0;
-    * pointing: the largest angle between the rotor axis and the velocity over the last
-      two orbits of the run [deg]. In the ideal model the error keeps decaying (it settles
-      to hundredths of a degree), so the slides' 10–15° is reproduced only as a transient
-      envelope; the row's note says so.
+    * pointing: the slides' "orientation accuracy 10–15°" read as the accuracy the mode
+      keeps, i.e. what is left once the start is forgotten; the model value is the
+      largest error in the *last* simulated orbit, an upper bound of that (the ideal
+      model keeps converging, to hundredths of a degree). The transient passes through
+      10–15° in the middle orbits; the row's note gives the maxima per orbit so that the
+      reader sees that this reading, not a chosen window, decides the verdict;
+    * Kovalenko's 1–2 % spin accuracy beside the run's largest |s − mean s|/|mean s|
+      (not the same spacecraft: the contrast the rotor buys);
+    * Kovalenko's (7.30) spin-axis turn during a spin correction, "much less than 1°",
+      beside :func:`relay_spin_correction` (a rigid spinning body under the relay law
+      (7.12)) for his δω = 2 % and a field ratio B∥/B⊥ = 0.5 (ours: his condition on
+      the arcs is lost in the transcription).
     """
     p = {**rotor_parameters(), **(params or chapter_parameters("ch06"))}
     run = default_run(p)
@@ -101,26 +110,109 @@ def claim_rows(params=None):
     spin = claims["rotor-spin-rate"]
     accuracy = claims["rotor-spin-accuracy"]
     pointing = claims["rotor-pointing-accuracy"]
+    kov = load_printed("kovalenko")
+    kov_spin, kov_turn = kov["kov-spin-accuracy"], kov["kov-spin-axis-precession"]
     maxima = orbit_maxima(run, w0)
-    last = maxima[-2:] if maxima.size >= 2 else maxima
     mean_spin = float(np.mean(run.spin_rate))
+    deviation = float(np.max(np.abs(run.spin_rate - mean_spin)))
     where = "rotor slides, Conclusion"
+    listed = ", ".join(f"{m:.1f}" for m in np.degrees(maxima))
+    delta_omega = kov_spin.value_high / 100.0
+    turn, achieved = relay_spin_correction(delta_omega, FIELD_RATIO)
     return [
         make_row("rotor-spin-rate", spin.quantity, f"{where}; {spin.conditions}", spin.value,
                  abs(mean_spin), spin.uncertainty_si, unit="rpm", scale=RPM, uncertainty=spin.uncertainty_si,
                  note="model: mean body spin of the simulated asymmetric spacecraft (spin set by the rotor, ours)"),
         make_row("rotor-spin-accuracy", accuracy.quantity, f"{where}; {accuracy.conditions}", accuracy.value,
-                 float(np.max(np.abs(run.spin_rate - mean_spin))) / w0, accuracy.uncertainty_si, unit="1",
+                 deviation / w0, accuracy.uncertainty_si, unit="1",
                  uncertainty=accuracy.uncertainty_si,
                  note="model: largest |s − mean s| / ω0 of the run; the equilibrium itself swings the spin "
                       "by H0/I11 twice per orbit"),
-        make_row("rotor-pointing-accuracy", pointing.quantity, f"{where} (plot lost)", pointing.value,
-                 float(np.max(last)), pointing.uncertainty_si, unit="deg", scale=DEG,
+        make_row("rotor-pointing-accuracy", pointing.quantity,
+                 f"{where} (plot lost); read as the accuracy kept after the transient", pointing.value,
+                 float(maxima[-1]), pointing.uncertainty_si, unit="deg", scale=DEG,
                  uncertainty=pointing.uncertainty_si,
-                 note=(f"model: largest pointing error over orbits {maxima.size - last.size + 1}–{maxima.size} of "
-                       "the simulated run; in the ideal model the error keeps decaying, so 10–15° is only a "
-                       "transient envelope (it depends on our asymmetry and initial error)")),
+                 note=(f"model: largest pointing error in the last simulated orbit (orbit {maxima.size}), an upper "
+                       f"bound of the accuracy the ideal model keeps (it converges further); maxima per orbit "
+                       f"{listed}° from our start (20°, −15°): 10–15° appears only as a transient envelope")),
+        make_row("kov-spin-accuracy", kov_spin.quantity,
+                 f"Kovalenko (1975) §7.3, p. {kovalenko_page(kov_spin.seed_line)}; {kov_spin.method}",
+                 kov_spin.value, deviation / abs(mean_spin), kov_spin.uncertainty_si, unit="%", scale=0.01,
+                 uncertainty=kov_spin.uncertainty_si,
+                 note="model: largest |s − mean s|/|mean s| of the rotor run. Not the same spacecraft: his satellites "
+                      "carry their momentum in the body's spin, here the rotor carries it and the spin's forced "
+                      "swing of order ω0 is a small fraction of 30 rpm"),
+        make_row("kov-spin-axis-precession", kov_turn.quantity,
+                 f"Kovalenko (1975) §7.3, eq. (7.30), p. {kovalenko_page(kov_turn.seed_line)}; {kov_turn.conditions}",
+                 kov_turn.value, turn, kov_turn.uncertainty_si, unit="deg", scale=DEG,
+                 uncertainty=kov_turn.uncertainty_si,
+                 note=(f"model: turn of the angular momentum of a rigid spinning body while the relay law (7.12) "
+                       f"changes its spin by {achieved:.2%} (his δω = {delta_omega:.0%}), field ratio "
+                       f"B∥/B⊥ = {FIELD_RATIO:g} (ours: his condition on the arcs is lost); (7.30) gives "
+                       f"δω B∥/B⊥ = {math.degrees(delta_omega * FIELD_RATIO):.2f}°")),
     ]
+
+
+#: B∥/B⊥ of the relay spin correction (ours: Kovalenko's condition on the arcs is lost).
+FIELD_RATIO = 0.5
+
+
+def relay_spin_correction(relative_change, field_ratio, *, torque_number=2e-4, axial_ratio=1.5):
+    """Turn of the spin axis while Kovalenko's relay law (7.12) corrects the spin (his (7.27)–(7.30)).
+
+    A rigid axisymmetric body (transverse inertia 1, axial ``axial_ratio``, spin 1) in a
+    constant field with transverse part B⊥ = 1 and axial part ``field_ratio``; the relay
+    dipole L_x = −L0 sign B_y, L_y = L0 sign B_x in body axes (sign Δω = +1, L0 B⊥ =
+    ``torque_number`` J3 ω3², small so that the correction lasts many spin turns) acts
+    until the spin has changed by ``relative_change``.
+
+    Parameters
+    ----------
+    relative_change : float
+        δω = Δω3/ω3 the correction makes, in (0, 0.5) [-].
+    field_ratio : float
+        B∥/B⊥ during the correction, in [0, 10] [-].
+    torque_number : float, optional
+        L0 B⊥/(J3 ω3²) [-].
+    axial_ratio : float, optional
+        J3 over the transverse inertia [-].
+
+    Returns
+    -------
+    turn : float
+        Angle between the angular momentum's initial and final directions [rad].
+    achieved : float
+        The spin's relative change at the end [-].
+    """
+    from scipy.integrate import solve_ivp
+
+    if not 0.0 < relative_change < 0.5:
+        raise ValueError(f"relative_change must be in (0, 0.5), got {relative_change!r}")
+    if not 0.0 <= field_ratio <= 10.0:
+        raise ValueError(f"field_ratio must be in [0, 10], got {field_ratio!r}")
+    j1, j3, l0 = 1.0, float(axial_ratio), float(torque_number) * float(axial_ratio)
+    b_inertial = np.array([1.0, 0.0, float(field_ratio)])
+
+    def rhs(t, y):
+        r = y[:9].reshape(3, 3)                      # body -> inertial
+        w = y[9:]
+        b = r.T @ b_inertial
+        lx, ly = -l0 * math.copysign(1.0, b[1]), l0 * math.copysign(1.0, b[0])
+        torque = np.array([ly * b[2], -lx * b[2], lx * b[1] - ly * b[0]])
+        jw = np.array([j1 * w[0], j1 * w[1], j3 * w[2]])
+        wdot = (torque - np.cross(w, jw)) / np.array([j1, j1, j3])
+        skew = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
+        return np.concatenate([(r @ skew).ravel(), wdot])
+
+    # Kovalenko (7.26)-(7.29): mean moment (4/π) L0, so t0 = δω J3 ω3 / ((4/π) L0 B⊥)
+    duration = relative_change * j3 / (4.0 / math.pi * l0)
+    y0 = np.concatenate([np.eye(3).ravel(), [0.0, 0.0, 1.0]])
+    sol = solve_ivp(rhs, (0.0, duration), y0, method="DOP853", rtol=1e-10, atol=1e-12, max_step=0.05)
+    r_end, w_end = sol.y[:9, -1].reshape(3, 3), sol.y[9:, -1]
+    k0 = np.array([0.0, 0.0, j3])
+    k1 = r_end @ np.array([j1 * w_end[0], j1 * w_end[1], j3 * w_end[2]])
+    cos = float(k0 @ k1 / (np.linalg.norm(k0) * np.linalg.norm(k1)))
+    return math.acos(min(1.0, cos)), abs(1.0 - w_end[2])
 
 
 def printed_damping_power(params=None, samples=64):
@@ -197,7 +289,7 @@ CHAPTER = Chapter(
     inputs=INPUTS,
     figure_modules=("magbench.chapters.ch06_rotor.figures",),
     comparisons=claim_rows,
-    row_kinds=(("rotor-", "printed"),),
+    row_kinds=(("rotor-", "printed"), ("kov-spin-accuracy", "printed"), ("kov-spin-axis-precession", "printed")),
     source_checks=(damping_checks, kovalenko_checks),
     cites="rotor slides (equations, control law, damping projection; the two lost plots); Kovalenko ch. 7",
     finds=("that the slides' law holds the reference exactly for any gain, that the printed damping sign "

@@ -5,6 +5,7 @@ The ids are those of ``shared/reference/rotor_spin.md`` §14–§15. The two los
 numeric default except the field and the inclination is ours (``data/rotor/params.toml``).
 """
 
+import functools
 import math
 
 import numpy as np
@@ -366,3 +367,199 @@ register(FigureSpec("rotor-damping-sign", "The damping projection: corrected sig
 register(FigureSpec("rotor-floquet-slice", "Floquet multiplier against the damping gain",
                     f"{SOURCE}, slide 'Ensuring stability'",
                     compute_floquet_slice, plot_floquet_slice, _slice_parameters))
+
+
+# --- beyond the slides: robustness (ours, rotor_spin.md §9) -------------------------------------
+
+def _thesis_tilt():
+    from ...io import load_parameter_set
+
+    return load_parameter_set("thesis")["earth_dipole_tilt"].value_si
+
+
+def _field_model_parameters():
+    return {
+        "real_tilt": FigureParameter(_thesis_tilt(), "rad", "tilt of the real dipole (the thesis's printed 11.5°)"),
+        "small_tilt": FigureParameter(1.0 * DEG, "rad", "a small tilt for the error per degree (ours)"),
+        "orbits": FigureParameter(2.0, "1", "orbits simulated per run (slow: about 4 s per orbit)"),
+    }
+
+
+def _pointing_series(label, run, w0):
+    return Series(label, {"time": ("orbit", run.time * w0 / (2.0 * math.pi)),
+                          "pointing_error": ("deg", np.degrees(run.pointing_error)),
+                          "orbit_maxima": ("deg", np.degrees(orbit_maxima(run, w0)))})
+
+
+def _whole_orbits(orbits):
+    n = int(orbits)
+    if n < 1:
+        raise ValueError(f"orbits must be >= 1, got {orbits!r}")
+    return n
+
+
+@functools.lru_cache(maxsize=8)
+def _tilted_run(items, tilt, orbits):
+    """The default spacecraft made symmetric (I22 = I33 = B, so that the reference is an exact solution)
+    from the reference under a real dipole tilted by ``tilt`` (cached: the figure, its style check and the
+    chapter's tests share the runs)."""
+    from ...sim.spinning import simulate_rotor
+
+    p = dict(items)
+    b = 0.5 * (p["transverse_inertia_2"] + p["transverse_inertia_3"])
+    p.update(transverse_inertia_2=b, transverse_inertia_3=b)
+    orbit = default_rotor_orbit({**p, "dipole_tilt": tilt})
+    return simulate_rotor(default_rotor_satellite(p), orbit, orbits * 2.0 * math.pi / orbit.mean_motion,
+                          sample_interval=p["sample_interval"], rtol=p["relative_tolerance"],
+                          atol=1e-2 * p["relative_tolerance"])
+
+
+def compute_field_model(real_tilt, small_tilt, orbits):
+    """Program field = the direct dipole, real field = a tilted dipole: our spacecraft made symmetric
+    (I22 = I33 = B; for the asymmetric one the reference is not an exact solution) and started on the
+    reference, so every pointing error is the mismatch's."""
+    n = _whole_orbits(orbits)
+    p = chapter_parameters(CHAPTER.key)
+    w0 = default_rotor_orbit(p).mean_motion
+    series = [_pointing_series(f"real dipole tilted {math.degrees(tilt):.1f}°",
+                               _tilted_run(tuple(sorted(p.items())), float(tilt), n), w0)
+              for tilt in (small_tilt, real_tilt)]
+    small_last = float(series[0].columns["orbit_maxima"][1][-1])
+    return FigureData("", "", "", {}, series,
+                      extra={"per_degree": small_last / math.degrees(small_tilt) if small_tilt else math.nan})
+
+
+def plot_field_model(data):
+    """Pointing error for the two tilts, with the slides' 10–15° band."""
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.4, 3.6))
+    ax.axhspan(10, 15, color="C1", alpha=0.25, label="slides: 10–15°")
+    for s, colour in zip(data.series, ("C0", "C3")):
+        ax.plot(s.columns["time"][1], s.columns["pointing_error"][1], colour, linewidth=0.7, label=s.label)
+    ax.set_xlabel("time [orbits]")
+    ax.set_ylabel("pointing error [deg]")
+    ax.legend(loc="upper left")
+    ax.set_title("Program field: direct dipole; real field: tilted dipole\n(symmetric body, start on the reference)")
+    return fig
+
+
+def _inertia_parameters():
+    return {
+        "product_of_inertia": FigureParameter(0.002, "kg m^2", "I12 = I13 (ours, 0.8 % of B)"),
+        "orbits": FigureParameter(2.0, "1", "orbits simulated per run (slow: about 4 s per orbit)"),
+    }
+
+
+def inertia_with_products(params, product):
+    """The default spacecraft's inertia with I12 = I13 = ``product`` [kg·m²] (axis 1 no longer principal)."""
+    j = np.diag([params["axial_inertia"], params["transverse_inertia_2"], params["transverse_inertia_3"]])
+    j[0, 1] = j[1, 0] = j[0, 2] = j[2, 0] = float(product)
+    return j
+
+
+@functools.lru_cache(maxsize=8)
+def _inertia_run(items, product, orbits, damping):
+    """The default spacecraft with products of inertia from (α0, β0) with the momentum the reference
+    needs (cached like :func:`_tilted_run`); returns the run and the start's rate offset [rad/s]."""
+    from dataclasses import replace
+
+    from ...dynamics.gyrostat import airplane_231_matrix
+    from ...sim.spinning import simulate_rotor
+
+    p = dict(items)
+    orbit = default_rotor_orbit(p)
+    w0 = orbit.mean_motion
+    j = inertia_with_products(p, product)
+    sat = replace(default_rotor_satellite(p), inertia=j)
+    angles = (p["initial_alpha"], p["initial_beta"], p["initial_gamma"])
+    c0 = airplane_231_matrix(*angles)
+    e1 = np.array([1.0, 0.0, 0.0])
+    hr = sat.rotor_inertia * sat.rotor_rate
+    omega_needed = np.linalg.solve(j, sat.axial_momentum * e1 + sat.transverse_inertia * w0 * c0[:, 1] - hr * e1)
+    omega_default = w0 * c0[:, 1] + (sat.axial_momentum - hr) / j[0, 0] * e1
+    run = simulate_rotor(sat, orbit, orbits * 2.0 * math.pi / w0, initial_angles=angles,
+                         initial_rate_error=omega_needed - omega_default, sample_interval=p["sample_interval"],
+                         rtol=p["relative_tolerance"], atol=1e-2 * p["relative_tolerance"], damping=damping)
+    return run, float(np.linalg.norm(omega_needed - omega_default))
+
+
+def compute_products_of_inertia(product_of_inertia, orbits):
+    """Rate-error damping (the slides) against momentum-error damping (Kovalenko (4.30)–(4.32), (7.5)) when the
+    rotor axis is not a principal axis.
+
+    Both start turned by the chapter's (α0, β0) with the momentum the reference needs,
+    I ω + J_f ν e1 = H0 e1 + B ω0 o2 (with products of inertia the rate ω0 o2 + s e1 would
+    carry a transverse momentum s I12 several times H0, and the body would cone at once).
+    """
+    n = _whole_orbits(orbits)
+    p = chapter_parameters(CHAPTER.key)
+    w0 = default_rotor_orbit(p).mean_motion
+    series = []
+    for damping, label in (("rate", "rate error damped (slides)"), ("momentum", "momentum error damped (Kovalenko)")):
+        run, offset = _inertia_run(tuple(sorted(p.items())), float(product_of_inertia), n, damping)
+        series.append(_pointing_series(label, run, w0))
+    return FigureData("", "", "", {}, series, extra={"rate_offset": offset / w0})
+
+
+def plot_products_of_inertia(data):
+    """Pointing error of the two damping variants."""
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.4, 3.6))
+    ax.axhspan(10, 15, color="C1", alpha=0.25, label="slides: 10–15°")
+    for s, colour in zip(data.series, ("C3", "C0")):
+        ax.plot(s.columns["time"][1], s.columns["pointing_error"][1], colour, linewidth=0.7, label=s.label)
+    ax.set_xlabel("time [orbits]")
+    ax.set_ylabel("pointing error [deg]")
+    ax.legend(loc="upper right")
+    ax.set_title("Rotor axis not principal: which error to damp")
+    return fig
+
+
+def _relay_parameters():
+    return {"samples": FigureParameter(720.0, "1", "points over one turn of the transverse field")}
+
+
+def compute_spin_relay(samples):
+    """Kovalenko's relay spin law (7.12) over a turn of the transverse field: its spin-axis torque per L0 B⊥."""
+    n = int(samples)
+    if n < 8:
+        raise ValueError(f"samples must be >= 8, got {samples!r}")
+    alpha = (np.arange(n) + 0.5) * (2.0 * math.pi / n)
+    bx, by = np.cos(alpha), np.sin(alpha)
+    lx, ly = -np.sign(by), np.sign(bx)
+    torque = lx * by - ly * bx
+    return FigureData("", "", "", {}, [Series("relay (7.12)", {"angle": ("deg", np.degrees(alpha)),
+                                                               "torque": ("1", torque)})],
+                      extra={"mean": float(np.mean(np.abs(torque)))})
+
+
+def plot_spin_relay(data):
+    """|(L × B)_z|/(L0 B⊥) against the field's angle, its mean and 4/π."""
+    import matplotlib.pyplot as plt
+
+    c = data.series[0].columns
+    fig, ax = plt.subplots(figsize=(6.4, 3.2))
+    ax.plot(c["angle"][1], np.abs(c["torque"][1]), "C0", label="|cos α| + |sin α| (relay law (7.12))")
+    ax.axhline(data.extra["mean"], color="C3", linestyle="--", label=f"mean over a turn {data.extra['mean']:.4f}")
+    ax.axhline(4 / math.pi, color="k", linewidth=0.6, linestyle=":", label="4/π")
+    ax.set_xlabel("angle α of the transverse field [deg]")
+    ax.set_ylabel("spin torque / (L0 B⊥) [-]")
+    ax.set_xticks(np.arange(0, 361, 90))
+    ax.set_ylim(0.6, 1.5)
+    ax.legend(loc="lower center", ncols=2)
+    ax.set_title("Kovalenko (7.26): the relay law's mean moment is 4/π L0")
+    return fig
+
+
+register(FigureSpec("rotor-field-model", "Program field against the real one: a tilted dipole (beyond the slides; "
+                    "slow)", f"ours, beyond the {SOURCE}; Kovalenko (1975) eq. (2.36) for the tilted dipole",
+                    compute_field_model, plot_field_model, _field_model_parameters))
+register(FigureSpec("rotor-products-of-inertia", "Products of inertia: rate damping against momentum damping "
+                    "(beyond the slides; slow)",
+                    f"ours, beyond the {SOURCE}; Kovalenko (1975) eqs. (4.30)–(4.32), (7.5)",
+                    compute_products_of_inertia, plot_products_of_inertia, _inertia_parameters))
+register(FigureSpec("kovalenko-spin-relay", "Kovalenko's relay spin law over a turn of the field",
+                    "Kovalenko (1975) §7.3, eqs. (7.12), (7.26)", compute_spin_relay, plot_spin_relay,
+                    _relay_parameters))
