@@ -38,15 +38,21 @@ def two_sided_rest(gyro, accel, dt, **detector):
     Returns
     -------
     ndarray of bool, shape (N,)
-        True where either pass classifies the sample as rest [-].
+        True where the sample is quiet seen from both directions (low-passed rate and
+        accelerometer within the thresholds) and the quiet lasts ``min_rest_time`` in at
+        least one of them [-].
 
     Notes
     -----
     Not in the sources. The causal detector needs ``min_rest_time`` of quiet before it
-    calls a sample rest, so it misses the first part of every rest period; the pass over
-    the time-reversed record (gyro negated, which its rate-norm test ignores) misses the
-    last part instead, and their union covers the whole period. Reversing the record
-    swaps the two passes, so the union is unchanged.
+    calls a sample rest, so it misses the first part of every rest period, and its
+    low-passes lag, so it still calls the first sample of a motion rest. Run over the
+    time-reversed record (gyro negated, which its rate-norm test ignores) it misses the
+    last part of a rest period instead and calls the last sample of a motion rest.
+    Requiring quiet in both directions removes those motion samples; the duration test
+    from either direction keeps the whole of a long rest period but the low-passes'
+    settling time after motion. Reversing the record swaps the two passes, so the result
+    is reversed with it.
 
     Examples
     --------
@@ -54,13 +60,17 @@ def two_sided_rest(gyro, accel, dt, **detector):
     >>> bool(rest.all())    # the causal detector alone misses the first 1.5 s
     True
     """
-    _, forward = rest_gyro_bias(gyro, accel, dt, **detector)
     rate = np.asarray(gyro, dtype=float)
-    _, backward = rest_gyro_bias(-rate[::-1], np.asarray(accel, dtype=float)[::-1], dt, **detector)
-    return forward | backward[::-1]
+    acc = np.asarray(accel, dtype=float)
+    instant = {**detector, "min_rest_time": 0.0}
+    _, forward = rest_gyro_bias(rate, acc, dt, **detector)
+    _, backward = rest_gyro_bias(-rate[::-1], acc[::-1], dt, **detector)
+    _, quiet_forward = rest_gyro_bias(rate, acc, dt, **instant)
+    _, quiet_backward = rest_gyro_bias(-rate[::-1], acc[::-1], dt, **instant)
+    return (forward | backward[::-1]) & quiet_forward & quiet_backward[::-1]
 
 
-def offline_tilt(gyro, accel, dt, *, tau=3.0, rest_bias=True):
+def offline_tilt(gyro, accel, dt, *, tau=3.0, rest_bias=True, rest_detector=None):
     r"""3-D tilt (inclination) of a logged record, using the past and the future of each sample.
 
     Parameters
@@ -82,6 +92,11 @@ def offline_tilt(gyro, accel, dt, *, tau=3.0, rest_bias=True):
         Subtract one constant gyro bias, the mean gyro over every rest sample of the
         record (:func:`two_sided_rest`), before integrating [-]; default True. Without rest
         samples no bias is subtracted. False integrates the raw gyro.
+    rest_detector : dict, optional
+        Thresholds passed to the rest detector (keywords of
+        :func:`~magbench.estimation.rest_gyro_bias`: ``rate_threshold`` [rad/s],
+        ``accel_threshold`` [m/s²], ``min_rest_time`` [s], ``rest_filter_tau`` [s]);
+        default: its defaults (VQF's).
 
     Returns
     -------
@@ -107,7 +122,8 @@ def offline_tilt(gyro, accel, dt, *, tau=3.0, rest_bias=True):
 
     1. The gyro bias is one constant: the mean gyro over all rest samples, found by
        VQF's rest detector run in both directions (:func:`two_sided_rest`), instead of
-       the causal running mean that is zero until the first rest.
+       the causal running mean that is zero until the first rest (and that takes in
+       the first sample of each motion, which its low-passes have not yet seen).
     2. The low-pass runs forwards and backwards (``scipy.signal.filtfilt``): zero phase,
        so it does not lag the gyro drift it corrects, with magnitude response
        :math:`|H|^2 = 1/(1 + (f/f_c)^4)` and :math:`f_c = \sqrt2/(2\pi\tau)` (the
@@ -154,7 +170,7 @@ def offline_tilt(gyro, accel, dt, *, tau=3.0, rest_bias=True):
         raise ValueError(f"tau must exceed {2.0 * np.sqrt(2.0) * step / (2.0 * np.pi):g} s (cut-off below the "
                          f"Nyquist frequency {0.5 / step:g} Hz), got {time_constant!r}")
     if rest_bias:
-        rest = two_sided_rest(rate, acc, step)
+        rest = two_sided_rest(rate, acc, step, **(rest_detector or {}))
         if rest.any():
             rate = rate - rate[rest].mean(axis=0)
     gyro_frame = strapdown_orientation(rate, step)
