@@ -19,7 +19,7 @@ __all__ = ["two_sided_rest", "offline_tilt"]
 MIN_SAMPLES = 8
 
 
-def two_sided_rest(gyro, accel, dt, **detector):
+def two_sided_rest(gyro, accel, dt, rest_detector=None):
     r"""Rest samples of a whole record: VQF's rest detector run forwards and backwards.
 
     Parameters
@@ -30,10 +30,10 @@ def two_sided_rest(gyro, accel, dt, **detector):
         Specific force in the sensor frame [m/s²].
     dt : float
         Sample interval [s], > 0.
-    **detector
-        Thresholds of :func:`~magbench.estimation.rest_gyro_bias` (``rate_threshold``
-        [rad/s], ``accel_threshold`` [m/s²], ``min_rest_time`` [s], ``rest_filter_tau`` [s]);
-        its defaults otherwise.
+    rest_detector : dict, optional
+        Thresholds passed to :func:`~magbench.estimation.rest_gyro_bias` (its keywords
+        ``rate_threshold`` [rad/s], ``accel_threshold`` [m/s²], ``min_rest_time`` [s],
+        ``rest_filter_tau`` [s]); default: its defaults (VQF's).
 
     Returns
     -------
@@ -62,6 +62,7 @@ def two_sided_rest(gyro, accel, dt, **detector):
     """
     rate = np.asarray(gyro, dtype=float)
     acc = np.asarray(accel, dtype=float)
+    detector = dict(rest_detector or {})
     instant = {**detector, "min_rest_time": 0.0}
     _, forward = rest_gyro_bias(rate, acc, dt, **detector)
     _, backward = rest_gyro_bias(-rate[::-1], acc[::-1], dt, **detector)
@@ -170,7 +171,7 @@ def offline_tilt(gyro, accel, dt, *, tau=3.0, rest_bias=True, rest_detector=None
         raise ValueError(f"tau must exceed {2.0 * np.sqrt(2.0) * step / (2.0 * np.pi):g} s (cut-off below the "
                          f"Nyquist frequency {0.5 / step:g} Hz), got {time_constant!r}")
     if rest_bias:
-        rest = two_sided_rest(rate, acc, step, **(rest_detector or {}))
+        rest = two_sided_rest(rate, acc, step, rest_detector)
         if rest.any():
             rate = rate - rate[rest].mean(axis=0)
     gyro_frame = strapdown_orientation(rate, step)
