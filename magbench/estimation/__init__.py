@@ -2,9 +2,9 @@ r"""Attitude estimation from inertial sensors.
 
 Thesis §4.2, eq. (39): the complementary filter that blends the integrated gyro rate
 with an absolute angle from another sensor (:mod:`.complementary`). Further estimators
-build on it: 3-D tilt from gyro and accelerometer (:mod:`.tilt`) and heading from the
-magnetometer (:mod:`.heading`), and two-vector attitude on orbit (:mod:`.triad`,
-SamSat-218D), and linear vs exponential decay fits (:mod:`.decay_fit`, TNS-0 Fig. 14).
+build on it: 3-D tilt from gyro and accelerometer (:mod:`.tilt`), tilt of a whole logged
+record (:mod:`.offline`), heading from the magnetometer (:mod:`.heading`), two-vector
+attitude on orbit (:mod:`.triad`, SamSat-218D), and linear vs exponential decay fits (:mod:`.decay_fit`, TNS-0 Fig. 14).
 Re-exports the public functions of its modules.
 """
 
@@ -14,10 +14,12 @@ from .heading import magnetometer_heading
 from .triad import (magnitude_consistent, samsat_triad_frame, triad_attitude, triad_covariance,
                     vectors_well_separated)
 from .tilt import accelerometer_tilt, complementary_tilt, rest_gyro_bias, strapdown_orientation
+from .offline import offline_tilt, two_sided_rest
 
 __all__ = [
     "complementary_filter", "complementary_filter_step", "complementary_time_constant",
     "accelerometer_tilt", "strapdown_orientation", "rest_gyro_bias", "complementary_tilt",
+    "offline_tilt", "two_sided_rest",
     "magnetometer_heading", "triad_attitude", "samsat_triad_frame", "triad_covariance",
     "magnitude_consistent", "vectors_well_separated", "DecayFit", "fit_linear_decay", "fit_exponential_decay",
     "corrected_aic",

@@ -169,9 +169,11 @@ def inclination_rmse(estimate, reference, movement):
 
 
 def evaluate_trial(trial, *, tau=3.0, order=2, rest_bias=True):
-    """Inclination RMSE [rad] of :func:`~magbench.estimation.complementary_tilt` and of two baselines.
+    """Inclination RMSE [rad] of :func:`~magbench.estimation.complementary_tilt`, of
+    :func:`~magbench.estimation.offline_tilt` and of two baselines.
 
-    Returns a dict with ``complementary`` (the filter with these options),
+    Returns a dict with ``complementary`` (the filter with these options), ``offline``
+    (:func:`~magbench.estimation.offline_tilt` with its defaults),
     ``accelerometer`` (:func:`~magbench.estimation.accelerometer_tilt` alone) and ``gyro``
     (:func:`~magbench.estimation.strapdown_orientation` of the raw gyro, started from the
     first accelerometer sample's tilt).
@@ -182,6 +184,8 @@ def evaluate_trial(trial, *, tau=3.0, order=2, rest_bias=True):
     gyro_only = estimation.strapdown_orientation(trial.gyro, trial.dt, accel_only[0])
     return {
         "complementary": inclination_rmse(filtered, trial.reference, trial.movement),
+        "offline": inclination_rmse(estimation.offline_tilt(trial.gyro, trial.accel, trial.dt),
+                                    trial.reference, trial.movement),
         "accelerometer": inclination_rmse(accel_only, trial.reference, trial.movement),
         "gyro": inclination_rmse(gyro_only, trial.reference, trial.movement),
     }

@@ -390,3 +390,104 @@ register(FigureSpec("ch04-tau-sensitivity", "Sensitivity of the BROAD RMSE to th
                     {"tau_min": FigureParameter(0.3, "s", "smallest τ"),
                      "tau_max": FigureParameter(30.0, "s", "largest τ"),
                      "default_tau": FigureParameter(3.0, "s", "the filter's default τ")}))
+
+
+# --- BROAD: the offline (post-processing) estimator -----------------------------------------
+
+#: The time constants the offline sweep evaluates [s]: the default 3 s, ±50 %, and a
+#: factor of three either way (a log-spaced grid around VQF's published default).
+OFFLINE_TAUS = (1.0, 1.5, 2.0, 3.0, 4.5, 6.0, 9.0)
+
+
+def _vqf_estimates(trial):
+    """vqf's causal and offline 6-D quaternions for one trial, or None without the package."""
+    try:
+        import vqf
+    except ImportError:
+        return None
+    gyro, accel = np.ascontiguousarray(trial.gyro), np.ascontiguousarray(trial.accel)
+    return {"vqf": vqf.VQF(trial.dt).updateBatch(gyro, accel)["quat6D"],
+            "vqf_offline": vqf.offlineVQF(gyro, accel, None, trial.dt)["quat6D"]}
+
+
+def compute_offline_tilt(tau):
+    """Inclination RMSE of six estimators on every trial, and of offline_tilt against its τ.
+
+    The six: accelerometer alone, gyro alone (from the first accelerometer tilt),
+    complementary_tilt (causal, defaults), VQF causal and VQF offline (the peer package
+    ``vqf``, its defaults; NaN when it is not installed), offline_tilt with ``tau``.
+    """
+    names = broad.available_trials()
+    if not names:
+        return _missing("ch04-offline-tilt")
+    keys = ("accelerometer", "gyro", "complementary", "vqf", "vqf_offline", "offline")
+    rmse = {k: [] for k in keys}
+    sweep = {t: [] for t in OFFLINE_TAUS}
+    for name in names:
+        trial = _trial(name)
+        score = lambda q: broad.inclination_rmse(q, trial.reference, trial.movement)  # noqa: E731
+        accel_only = estimation.accelerometer_tilt(trial.accel)
+        rmse["accelerometer"].append(score(accel_only))
+        rmse["gyro"].append(score(estimation.strapdown_orientation(trial.gyro, trial.dt, accel_only[0])))
+        rmse["complementary"].append(score(estimation.complementary_tilt(trial.gyro, trial.accel, trial.dt)))
+        peer = _vqf_estimates(trial)
+        rmse["vqf"].append(score(peer["vqf"]) if peer else np.nan)
+        rmse["vqf_offline"].append(score(peer["vqf_offline"]) if peer else np.nan)
+        rmse["offline"].append(score(estimation.offline_tilt(trial.gyro, trial.accel, trial.dt, tau=tau)))
+        for t in OFFLINE_TAUS:
+            sweep[t].append(rmse["offline"][-1] if t == tau else
+                            score(estimation.offline_tilt(trial.gyro, trial.accel, trial.dt, tau=t)))
+    series = [Series("rmse", {k: ("rad", np.array(v)) for k, v in rmse.items()}),
+              Series("tau sweep", {"tau": ("s", np.array(OFFLINE_TAUS)),
+                                   **{f"trial_{i}": ("rad", np.array([sweep[t][i] for t in OFFLINE_TAUS]))
+                                      for i in range(len(names))}})]
+    return FigureData("ch04-offline-tilt", "", "", {}, series, extra={"trials": names})
+
+
+def plot_offline_tilt(data):
+    """Left: RMSE per trial of the four gyro+accelerometer estimators; right: mean RMSE against τ."""
+    import matplotlib.pyplot as plt
+
+    if "missing" in data.extra:
+        return _plot_missing(data)
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(7.0, 4.3), gridspec_kw={"width_ratios": [1.7, 1]},
+                                   layout="constrained")
+    r = data.series[0].columns
+    names = data.extra["trials"]
+    x = np.arange(len(names))
+    styles = (("complementary", "complementary_tilt (causal)", "C0", "o", "none"),
+              ("vqf", "VQF (causal)", "C2", "s", "none"),
+              ("vqf_offline", "VQF offline", "C1", "D", "none"),
+              ("offline", "offline_tilt", "C3", "o", "C3"))
+    for k, (key, label, color, marker, face) in enumerate(styles):
+        values = np.degrees(r[key][1])
+        if np.all(np.isnan(values)):
+            continue
+        ax1.plot(x + (k - 1.5) * 0.12, values, marker, color=color, mfc=face, ms=4.5, label=label)
+    ax1.axhline(1.0, color="0.4", lw=0.8, ls="--", label="target per trial (1°)")
+    ax1.set_xticks(x, [n[:2] for n in names])
+    ax1.set_xlabel("BROAD trial")
+    ax1.set_ylabel("inclination RMSE, movement phases [°]")
+    ax1.set_ylim(0, None)
+    ax1.legend(fontsize=7, loc="upper left")
+    sweep = data.series[1].columns
+    taus = sweep["tau"][1]
+    per_trial = np.degrees(np.array([sweep[f"trial_{i}"][1] for i in range(len(names))]))
+    ax2.plot(taus, per_trial.T, color="0.8", lw=0.7)
+    ax2.plot(taus, per_trial.mean(axis=0), "o-", color="C3", lw=1.5, ms=4, label="mean over trials")
+    ax2.axhline(0.53, color="0.4", lw=0.8, ls="--", label="target for the mean (0.53°)")
+    default = data.parameters.get("tau", 3.0)
+    ax2.axvspan(0.5 * default, 1.5 * default, color="0.93", label="default τ ±50 %")
+    ax2.set_xscale("log")
+    ax2.set_xticks(taus, [f"{t:g}" for t in taus])
+    ax2.minorticks_off()
+    ax2.set_xlabel("offline_tilt time constant τ [s]")
+    ax2.set_ylabel("inclination RMSE [°]")
+    ax2.set_ylim(0, None)
+    ax2.legend(fontsize=7, loc="upper right")
+    return fig
+
+
+register(FigureSpec("ch04-offline-tilt", "offline_tilt on BROAD beside the causal filters and VQF",
+                    BROAD_SOURCE, compute_offline_tilt, plot_offline_tilt,
+                    {"tau": FigureParameter(3.0, "s", "offline_tilt's time constant (default)")}))
