@@ -17,7 +17,7 @@ from ...io import load_parameter_set, load_printed
 from .._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "capture_run", "decay_fits", "decay_balance", "full_run", "orbit_from",
-           "satellite_from", "capture_rows", "full_run_rows", "cone_checks", "table_checks"]
+           "satellite_from", "capture_rows", "full_run_rows", "session_fits", "cone_checks", "table_checks"]
 
 
 #: The chapter's inputs: names in ``magbench/data/tns0/params.toml``.
@@ -275,6 +275,63 @@ def full_run_rows(params=None):
                  "TNS-0 Table 2 (fit of one orbit of flight data)", printed["tns0-table2-angular-momentum"].value,
                  run["final_momentum"], spread_l, unit="kg m^2/s", note=note),
     ]
+
+
+#: The synthetic session (ours): length, sampling, noise and its seed; row 1's lost second
+#: phase is set to 1 rad (any value would do: the fit does not know it).
+SESSION_DURATION, SESSION_RATE, SESSION_NOISE, SESSION_SEED, SESSION_LOST_PHASE = 60.0, 10.0, 0.01, 1, 1.0
+
+
+@lru_cache(maxsize=2)
+def _session_fits(a, c):
+    from ...io.tns0 import load_table1
+    from . import sessions
+
+    t1 = load_table1()
+
+    def value(name, default):
+        v = float(t1.values[name][0])
+        return default if np.isnan(v) else v
+
+    big_l, theta = value("angular_momentum", 0.0), value("nutation", 0.0)
+    t0 = value("start_time", 0.0)
+    psi_rate = big_l / a
+    phi_rate = big_l * np.cos(theta) * (1.0 / c - 1.0 / a)
+    printed = np.array([big_l, theta, value("phase_a", 0.0), value("phase_b", SESSION_LOST_PHASE),
+                        value("sun_angle", 0.0)])
+    # Table 1's t0 folded into the phases: the same motion with t0 = 0 (t0 is not identifiable).
+    truth = printed.copy()
+    truth[2] = np.mod(printed[2] - psi_rate * t0, 2 * np.pi)
+    truth[3] = np.mod(printed[3] - phi_rate * t0, 2 * np.pi)
+    time, signals = sessions.synthetic_session(truth, a, c, duration=SESSION_DURATION, rate=SESSION_RATE,
+                                               noise=SESSION_NOISE, seed=SESSION_SEED)
+    fits = [f(time, signals, a, c) for f in (sessions.fit_nested_grid, sessions.fit_multistart,
+                                             sessions.fit_frequency_first)]
+    for fit in fits:
+        fit["recovered"] = sessions.recovered(fit, truth)
+    return {"truth": truth, "printed": printed, "start_time": t0, "time": time, "signals": signals, "fits": fits,
+            "singular_values": sessions.identifiability(truth, time, a, c)}
+
+
+def session_fits(params=None):
+    """Table 1 row 1 as a synthetic session, fitted by the three methods (cached).
+
+    Parameters
+    ----------
+    params : dict, optional
+        Chapter-7 parameters (SI): the inertia A and C.
+
+    Returns
+    -------
+    dict
+        ``truth`` (the five constants with t0 folded into the phases), ``printed`` (row 1's,
+        the lost phase set to :data:`SESSION_LOST_PHASE`), ``start_time`` (row 1's t0) [s],
+        ``time`` (n,) [s], ``signals`` (3, n) [-], ``fits`` (one dict per method: ``method``,
+        ``params``, ``rms``, ``evaluations``, ``seconds``, ``recovered``) and
+        ``singular_values`` of the Jacobian in (L, θ, ψ0, φ0, σ, t0).
+    """
+    p = _params(params)
+    return _session_fits(float(p["transverse_inertia"]), float(p["axial_inertia"]))
 
 
 def capture_rows(params=None):

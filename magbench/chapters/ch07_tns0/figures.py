@@ -8,7 +8,7 @@ decay fits, a session model (model only) and the capture Monte Carlo.
 import numpy as np
 
 from ...constants import MU_0
-from . import CHAPTER, capture_run, decay_balance, decay_fits, full_run, orbit_from
+from . import CHAPTER, capture_run, decay_balance, decay_fits, full_run, orbit_from, session_fits
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 
@@ -336,6 +336,68 @@ def _session_parameters():
             "axial_inertia": FigureParameter(p["axial_inertia"], "kg m^2", "C (ours)")}
 
 
+# --- the session fit on a synthetic session ------------------------------------------------
+
+def compute_session_fit(transverse_inertia, axial_inertia):
+    """A synthetic session from Table 1 row 1 (+ noise) and the three methods' fits."""
+    from .sessions import mirror, sensor_signals
+
+    fits = session_fits({"transverse_inertia": transverse_inertia, "axial_inertia": axial_inertia})
+    t, data, truth = fits["time"], fits["signals"], fits["truth"]
+    a, c = transverse_inertia, axial_inertia
+
+    def cols(signals):
+        out = {"t": ("s", t)}
+        out.update({f"s{j + 1}": ("1", signals[j]) for j in range(3)})
+        return out
+
+    series = [Series("synthetic data", cols(data)), Series("truth", cols(sensor_signals(t, truth, a, c))),
+              Series("mirror of the truth", cols(sensor_signals(t, mirror(truth), a, c)))]
+    for fit in fits["fits"]:
+        series.append(Series(fit["method"], cols(sensor_signals(t, fit["params"], a, c))))
+    series.append(Series("methods", {"rms": ("1", [f["rms"] for f in fits["fits"]]),
+                                     "evaluations": ("1", [f["evaluations"] for f in fits["fits"]]),
+                                     "recovered": ("1", [float(f["recovered"]) for f in fits["fits"]])}))
+    return FigureData("", "", "", {}, series, extra={"names": [f["method"] for f in fits["fits"]],
+                                                     "noise": float(np.std(data - sensor_signals(t, truth, a, c)))})
+
+
+def plot_session_fit(data):
+    """Left: ДС1 and ДС2 over 20 s, data and fits. Right: rms residual of each method."""
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(1, 2, figsize=(6.8, 3.0), width_ratios=(1.7, 1.0))
+    data_s, truth, _, *fits = data.series[:-1]
+    t = data_s.columns["t"][1]
+    show = t <= 20.0
+    ax = axes[0]
+    for j, offset in ((1, 0.0), (2, 1.3)):
+        ax.plot(t[show], data_s.columns[f"s{j}"][1][show] + offset, ".", color="0.6", markersize=2,
+                label="synthetic data" if j == 1 else None)
+        for k, s in enumerate(fits):
+            ax.plot(t[show], s.columns[f"s{j}"][1][show] + offset, color=f"C{k}", linewidth=0.9,
+                    label=s.label if j == 1 else None)
+    ax.set_yticks([0.0, 1.0, 1.3, 2.3], ["0", "1", "0", "1"])
+    ax.text(0.2, 1.05, "ДС1 (+x)", fontsize=7.5)
+    ax.text(0.2, 2.35, "ДС2 (+z)", fontsize=7.5)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("signal (offset)")
+    ax.set_title("Synthetic session from Table 1 row 1 (model only)", fontsize=8.5)
+    ax.legend(fontsize=7, loc="lower right")
+    m = data.series[-1].columns
+    ax = axes[1]
+    ax.bar(range(len(m["rms"][1])), m["rms"][1], color=[f"C{k}" for k in range(len(m["rms"][1]))])
+    ax.axhline(data.extra["noise"], color="k", linestyle="--", linewidth=0.8, label="noise level")
+    ax.set_xticks(range(len(m["rms"][1])), ["grid", "multi-start", "frequency"], fontsize=7.5)
+    ax.set_ylabel("rms residual")
+    ax.set_yscale("log")
+    ax.set_title("Fit quality", fontsize=8.5)
+    ax.legend(fontsize=7)
+    for ax in axes:
+        ax.grid(alpha=0.3)
+    return fig
+
+
 # --- the capture Monte Carlo ------------------------------------------------------------
 
 _CAPTURE_NAMES = ("magnet_moment", "rod_volume", "capture_initial_momentum", "capture_initial_nutation",
@@ -500,6 +562,10 @@ register(FigureSpec("tns0-rod-loops", "Hysteresis-rod loops and the energy lost 
 register(FigureSpec("tns0-session-model", "Euler-case sun-sensor model for a Table 1 row (model only)",
                     f"{SOURCE}, §2, Table 1 (sensor normals ours)", compute_session_model, plot_session_model,
                     _session_parameters))
+register(FigureSpec("tns0-session-fit", "Fitting a session: three methods on a synthetic session from Table 1 row 1",
+                    f"{SOURCE}, §2, Table 1 (synthetic data; sensor normals ours)", compute_session_fit,
+                    plot_session_fit, lambda: {k: v for k, v in _session_parameters().items()
+                                               if k in ("transverse_inertia", "axial_inertia")}))
 register(FigureSpec("tns0-capture", "Capture into rotation about B, Monte Carlo",
                     f"{SOURCE}, Table 2, conclusions", compute_capture, plot_capture, _capture_parameters))
 register(FigureSpec("tns0-full-run", "From session 1 to the capture about B: full dynamics and the energy balance "
