@@ -20,6 +20,7 @@ CHAPTER_KEY = "ch07"
 EXPECTED_ERRATA = {
     "tns0-field-cone-rate": ("the averaged model's field direction turns at a constant twice the orbital rate; "
                              "the exact dipole direction turns between about 1.6 and 2.7 times it at 51.6°"),
+    "kovalenko-kphi-test-field-si": "68 mOe is 5.41 A/m, which rounds to 5.4, not the printed 'about 5.5'",
 }
 
 # Table 1, column 1 (seed lines 189, 209, ..., 307) and the session stamps (L327-L357), as printed.
@@ -135,6 +136,19 @@ def test_capture_rows_have_kinds_and_agree_with_their_figure():
     # The rows and the figure share one run: the same mean to float rounding.
     assert_allclose(rows[0].model, np.mean(final), rtol=1e-12)
     assert 0.0 < np.min(final) and np.max(final) < 90.0      # the magnet ends on the +B side
+
+
+def test_kovalenko_transit_numbers_reproduce():
+    # Kovalenko (1975) p. 229 (seed line 229): 0.3 Oe ≈ 24 A/m, 450 G·Oe ≈ 3.6 J/m³, and the
+    # mean damping torque (12.1) of a rod of 1 cm³ turning in that field with k_φ = 0.72 (p. 221).
+    from magbench.hardware import hysteresis_damping_torque
+
+    h0 = 0.3 * 1000 / (4 * np.pi)          # the CGS definition of the oersted, typed here
+    loop = 450 * 1e-4 * 1000 / (4 * np.pi)
+    assert_allclose(h0, 24, atol=0.5)      # half a unit of the printed 24
+    assert_allclose(loop, 3.6, atol=0.05)  # half a unit of the printed 3.6
+    # (12.1): M = k_φ V (∮H dB)/2π, the energy per revolution over 2π (float rounding only).
+    assert_allclose(hysteresis_damping_torque(1e-6, loop, 0.72), 0.72 * 1e-6 * loop / (2 * np.pi), rtol=1e-15)
 
 
 def test_chapter_record():

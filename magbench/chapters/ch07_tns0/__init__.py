@@ -17,7 +17,8 @@ from ...io import load_parameter_set, load_printed
 from .._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "capture_run", "decay_fits", "decay_balance", "full_run", "orbit_from",
-           "satellite_from", "capture_rows", "full_run_rows", "session_fits", "cone_checks", "table_checks"]
+           "satellite_from", "capture_rows", "full_run_rows", "session_fits", "cone_checks", "table_checks",
+           "kovalenko_checks"]
 
 
 #: The chapter's inputs: names in ``magbench/data/tns0/params.toml``.
@@ -420,6 +421,32 @@ def table_checks():
     ]
 
 
+def kovalenko_checks():
+    """Kovalenko (1975) ch. 12: the rods' numbers in SI, from the oersted and gauss-oersted he prints."""
+    from ...units import oersted_to_ampere_per_meter
+
+    printed = load_printed("kovalenko")
+    field, loop, test = (printed[k] for k in ("kov-transit-field-si", "kov-transit-loop-si", "kov-kphi-test-field-si"))
+    gauss_oersted = 1e-4 * oersted_to_ampere_per_meter(1.0)     # 1 G·Oe = 1e-4 T × 1000/4π A/m [J/m³]
+    return [
+        printed_check(field, id="kovalenko-transit-field-si", chapter="ch07", location="§12.2, p. 229",
+                      computed=float(oersted_to_ampere_per_meter(0.3)),
+                      explanation="0.3 Oe × 1000/4π A/m per Oe: the book's 'about 24 A/m' rounds it correctly.",
+                      computation="magbench.units.oersted_to_ampere_per_meter"),
+        printed_check(loop, id="kovalenko-transit-loop-si", chapter="ch07", location="§12.2, p. 229",
+                      computed=float(450.0 * gauss_oersted),
+                      explanation=("450 G·Oe × 10⁻⁴ T/G × 1000/4π A/m per Oe; the book's 'about 3.6' rounds it "
+                                   "correctly. This is the loss per cycle the chapter uses for the Transit rods."),
+                      computation="magbench.units.oersted_to_ampere_per_meter"),
+        printed_check(test, id="kovalenko-kphi-test-field-si", chapter="ch07", location="§12.1, p. 221",
+                      computed=float(oersted_to_ampere_per_meter(0.068)),
+                      explanation=(f"68 mOe is {float(oersted_to_ampere_per_meter(0.068)):.2f} A/m, which rounds to "
+                                   "5.4, not the printed 'about 5.5' A/m: a rounding slip of under 2 % in a number "
+                                   "the book only quotes; nothing in it depends on the value."),
+                      computation="magbench.units.oersted_to_ampere_per_meter"),
+    ]
+
+
 CHAPTER = Chapter(
     key="ch07", title="Passive magnetic attitude in flight: TNS-0's magnet and hysteresis rods",
     short_title="TNS-0's passive attitude",
@@ -428,7 +455,7 @@ CHAPTER = Chapter(
     figure_modules=("magbench.chapters.ch07_tns0.figures",),
     comparisons=capture_rows,
     row_kinds=(("tns0-final-angle-", "measurement"), ("tns0-full-run-", "measurement")),
-    source_checks=(cone_checks, table_checks),
+    source_checks=(cone_checks, table_checks, kovalenko_checks),
     cites="TNS-0 preprint (Ilyin et al. 2006), §1–§4, Tables 1–2, Figs. 3 and 14; Kovalenko ch. 12",
     finds=("how far the averaged field cone is from the real field, that Table 1's spin decays linearly "
            "(the signature of rate-independent hysteresis) and what rod volume that implies, and whether a "
