@@ -9,7 +9,7 @@ satellite; the loops are imported from their modules.
 
 from .detumble import DetumbleRun, detumble_monte_carlo, detumble_time, simulate_detumble
 from .integrate import rk4_step
-from .passive import PassiveRun, PassiveSatellite, initial_passive_state, simulate_passive
+from .passive import PassiveRun, PassiveSatellite, flat_spin_decay_rate, initial_passive_state, simulate_passive
 from .result import SimulationResult
 from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimensionless, rotor_finite_difference_monodromy,
                        rotor_floquet_multipliers, rotor_linearised_matrices, rotor_normalised_rhs,
@@ -18,7 +18,7 @@ from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimension
 
 __all__ = ["rk4_step", "SimulationResult", "DetumbleRun", "simulate_detumble", "detumble_time",
            "detumble_monte_carlo",
-           "PassiveSatellite", "PassiveRun", "simulate_passive", "initial_passive_state",
+           "PassiveSatellite", "PassiveRun", "simulate_passive", "initial_passive_state", "flat_spin_decay_rate",
            "RotorSatellite", "RotorRun", "rotor_dimensionless",
            "rotor_satellite_from_dimensionless", "rotor_normalised_rhs", "rotor_linearised_matrices",
            "rotor_floquet_multipliers", "rotor_stability_map", "rotor_finite_difference_monodromy",

@@ -8,7 +8,7 @@ decay fits, a session model (model only) and the capture Monte Carlo.
 import numpy as np
 
 from ...constants import MU_0
-from . import CHAPTER, capture_run, decay_fits, orbit_from
+from . import CHAPTER, capture_run, decay_balance, decay_fits, full_run, orbit_from, session_fits
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 
@@ -336,6 +336,68 @@ def _session_parameters():
             "axial_inertia": FigureParameter(p["axial_inertia"], "kg m^2", "C (ours)")}
 
 
+# --- the session fit on a synthetic session ------------------------------------------------
+
+def compute_session_fit(transverse_inertia, axial_inertia):
+    """A synthetic session from Table 1 row 1 (+ noise) and the three methods' fits."""
+    from .sessions import mirror, sensor_signals
+
+    fits = session_fits({"transverse_inertia": transverse_inertia, "axial_inertia": axial_inertia})
+    t, data, truth = fits["time"], fits["signals"], fits["truth"]
+    a, c = transverse_inertia, axial_inertia
+
+    def cols(signals):
+        out = {"t": ("s", t)}
+        out.update({f"s{j + 1}": ("1", signals[j]) for j in range(3)})
+        return out
+
+    series = [Series("synthetic data", cols(data)), Series("truth", cols(sensor_signals(t, truth, a, c))),
+              Series("mirror of the truth", cols(sensor_signals(t, mirror(truth), a, c)))]
+    for fit in fits["fits"]:
+        series.append(Series(fit["method"], cols(sensor_signals(t, fit["params"], a, c))))
+    series.append(Series("methods", {"rms": ("1", [f["rms"] for f in fits["fits"]]),
+                                     "evaluations": ("1", [f["evaluations"] for f in fits["fits"]]),
+                                     "recovered": ("1", [float(f["recovered"]) for f in fits["fits"]])}))
+    return FigureData("", "", "", {}, series, extra={"names": [f["method"] for f in fits["fits"]],
+                                                     "noise": float(np.std(data - sensor_signals(t, truth, a, c)))})
+
+
+def plot_session_fit(data):
+    """Left: ДС1 and ДС2 over 20 s, data and fits. Right: rms residual of each method."""
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(1, 2, figsize=(6.8, 3.0), width_ratios=(1.7, 1.0))
+    data_s, truth, _, *fits = data.series[:-1]
+    t = data_s.columns["t"][1]
+    show = t <= 20.0
+    ax = axes[0]
+    for j, offset in ((1, 0.0), (2, 1.3)):
+        ax.plot(t[show], data_s.columns[f"s{j}"][1][show] + offset, ".", color="0.6", markersize=2,
+                label="synthetic data" if j == 1 else None)
+        for k, s in enumerate(fits):
+            ax.plot(t[show], s.columns[f"s{j}"][1][show] + offset, color=f"C{k}", linewidth=0.9,
+                    label=s.label if j == 1 else None)
+    ax.set_yticks([0.0, 1.0, 1.3, 2.3], ["0", "1", "0", "1"])
+    ax.text(0.2, 1.05, "ДС1 (+x)", fontsize=7.5)
+    ax.text(0.2, 2.35, "ДС2 (+z)", fontsize=7.5)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("signal (offset)")
+    ax.set_title("Synthetic session from Table 1 row 1 (model only)", fontsize=8.5)
+    ax.legend(fontsize=7, loc="lower right")
+    m = data.series[-1].columns
+    ax = axes[1]
+    ax.bar(range(len(m["rms"][1])), m["rms"][1], color=[f"C{k}" for k in range(len(m["rms"][1]))])
+    ax.axhline(data.extra["noise"], color="k", linestyle="--", linewidth=0.8, label="noise level")
+    ax.set_xticks(range(len(m["rms"][1])), ["grid", "multi-start", "frequency"], fontsize=7.5)
+    ax.set_ylabel("rms residual")
+    ax.set_yscale("log")
+    ax.set_title("Fit quality", fontsize=8.5)
+    ax.legend(fontsize=7)
+    for ax in axes:
+        ax.grid(alpha=0.3)
+    return fig
+
+
 # --- the capture Monte Carlo ------------------------------------------------------------
 
 _CAPTURE_NAMES = ("magnet_moment", "rod_volume", "capture_initial_momentum", "capture_initial_nutation",
@@ -343,7 +405,7 @@ _CAPTURE_NAMES = ("magnet_moment", "rod_volume", "capture_initial_momentum", "ca
 
 
 def compute_capture(**params):
-    """The capture Monte Carlo (slow: ~15–30 s): angle between B and the axis over time, final angles."""
+    """The capture Monte Carlo (a few seconds compiled): angle between B and the axis over time, final angles."""
     p = _defaults()
     p.update(params)
     cap = capture_run(p)
@@ -406,6 +468,85 @@ def _capture_parameters():
     return {name: FigureParameter(p[name], *units[name]) for name in _CAPTURE_NAMES}
 
 
+# --- the full run from session 1, with the energy-balance line ---------------------------
+
+_FULL_NAMES = ("magnet_moment", "rod_volume", "full_run_duration", "capture_seed")
+
+
+def compute_full_run(**params):
+    """Full dynamics from session 1 (slow: ~30–70 s): L, nutation and angle(B, axis) over time."""
+    from ...io import load_printed
+    from ...io.tns0 import load_table1
+
+    p = _defaults()
+    p.update(params)
+    full, balance = full_run(p), decay_balance(p)
+    run, hours = full["run"], full["hours"]
+    t1 = load_table1()
+    printed = load_printed("tns0")
+    line_t = np.linspace(0.0, min(hours[-1], -balance["start"] / balance["mean"] / 3600.0), 50)
+    line = balance["start"] + balance["mean"] * line_t * 3600.0
+    band = balance["std"] * line_t * 3600.0
+    return FigureData("", "", "", {}, [
+        Series("simulation", {"t": ("h", hours), "L": ("kg m^2/s", run.angular_momentum),
+                              "theta": ("deg", np.degrees(run.nutation)),
+                              "axis_field_angle": ("deg", np.degrees(run.axis_field_angle))}),
+        Series("Table 1", {"t": ("h", full["session_hours"]), "L": ("kg m^2/s", t1.angular_momentum),
+                           "theta": ("deg", np.degrees(t1.nutation))}),
+        Series("energy balance", {"t": ("h", line_t), "L": ("kg m^2/s", line), "L_low": ("kg m^2/s", line - band),
+                                  "L_high": ("kg m^2/s", line + band)}),
+        Series("Table 2", {"angle": ("deg", [np.degrees(printed["tns0-table2-nutation"].value)]),
+                           "L": ("kg m^2/s", [printed["tns0-table2-angular-momentum"].value])}),
+    ], extra={"orbit_samples": max(2, int(np.ceil(orbit_from(p).period / 300.0))),
+              "capture_hours": full["capture_hours"], "relaxed_hours": full["relaxed_hours"],
+              "conclusion": float(np.degrees(printed["tns0-final-angle"].value))})
+
+
+def plot_full_run(data):
+    """Three panels over time: L with Table 1 and the balance line; the nutation; angle(B, axis)."""
+    import matplotlib.pyplot as plt
+    from scipy.ndimage import uniform_filter1d
+
+    sim, tab, line, tab2 = (s.columns for s in data.series)
+    fig, axes = plt.subplots(3, 1, figsize=(6.4, 6.6), sharex=True)
+    t = sim["t"][1]
+    ax = axes[0]
+    ax.fill_between(line["t"][1], line["L_low"][1], line["L_high"][1], color="C1", alpha=0.2)
+    ax.plot(line["t"][1], line["L"][1], "C1--", label="energy balance (mean ± sd over directions)")
+    ax.plot(t, sim["L"][1], "C0-", label="full dynamics (one direction of L)")
+    ax.plot(tab["t"][1], tab["L"][1], "ko", label="Table 1")
+    ax.set_ylabel("L [kg·m²/s]")
+    ax.legend(fontsize=7.5)
+    ax = axes[1]
+    ax.plot(t, sim["theta"][1], "C0-", label="full dynamics")
+    ax.plot(tab["t"][1], tab["theta"][1], "ko", label="Table 1")
+    ax.set_ylabel("nutation θ [°]")
+    ax.legend(fontsize=7.5)
+    ax = axes[2]
+    ax.plot(t, uniform_filter1d(sim["axis_field_angle"][1], data.extra["orbit_samples"], mode="nearest"), "C0-",
+            label="full dynamics (one-orbit running mean)")
+    ax.axhline(tab2["angle"][1][0], color="k", linestyle="--", linewidth=1.0, label="Table 2: 0.85 rad")
+    ax.axhline(data.extra["conclusion"], color="0.5", linestyle=":", linewidth=1.0, label="conclusion: ≈ 45°")
+    ax.axvline(data.extra["capture_hours"], color="C3", linewidth=0.8, label="capture (L at twice its final value)")
+    ax.set_ylabel("angle(B, axis) [°]")
+    ax.set_xlabel("hours since session 1 [h]")
+    ax.set_ylim(0.0, 200.0)
+    ax.legend(fontsize=7, loc="upper right", ncol=2)
+    for ax in axes:
+        ax.grid(alpha=0.3)
+    axes[0].set_title("From session 1 to the capture about B (model: rods calibrated, magnet chosen)", fontsize=9)
+    return fig
+
+
+def _full_parameters():
+    p = _defaults()
+    units = {"magnet_moment": ("A m^2", "magnet moment m (ours)"),
+             "rod_volume": ("m^3", "volume of each rod (ours, calibrated)"),
+             "full_run_duration": ("s", "length of the run from session 1"),
+             "capture_seed": ("1", "seed of the direction of L")}
+    return {name: FigureParameter(p[name], *units[name]) for name in _FULL_NAMES}
+
+
 register(FigureSpec("tns0-fig03", "The field cone at the ISS inclination (TNS-0 Fig. 3)", f"{SOURCE}, §1, Fig. 3",
                     compute_fig03, plot_fig03, _fig03_parameters))
 register(FigureSpec("tns0-cone-deviation", "The exact field against the averaged cone model",
@@ -421,5 +562,12 @@ register(FigureSpec("tns0-rod-loops", "Hysteresis-rod loops and the energy lost 
 register(FigureSpec("tns0-session-model", "Euler-case sun-sensor model for a Table 1 row (model only)",
                     f"{SOURCE}, §2, Table 1 (sensor normals ours)", compute_session_model, plot_session_model,
                     _session_parameters))
-register(FigureSpec("tns0-capture", "Capture into rotation about B, Monte Carlo (slow: about 15–30 s)",
+register(FigureSpec("tns0-session-fit", "Fitting a session: three methods on a synthetic session from Table 1 row 1",
+                    f"{SOURCE}, §2, Table 1 (synthetic data; sensor normals ours)", compute_session_fit,
+                    plot_session_fit, lambda: {k: v for k, v in _session_parameters().items()
+                                               if k in ("transverse_inertia", "axial_inertia")}))
+register(FigureSpec("tns0-capture", "Capture into rotation about B, Monte Carlo",
                     f"{SOURCE}, Table 2, conclusions", compute_capture, plot_capture, _capture_parameters))
+register(FigureSpec("tns0-full-run", "From session 1 to the capture about B: full dynamics and the energy balance "
+                    "(slow: about 30–70 s)", f"{SOURCE}, Tables 1 and 2, Fig. 14", compute_full_run, plot_full_run,
+                    _full_parameters))
