@@ -541,8 +541,9 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
     ----------
     setup : BenchSetup
         The bench [-].
-    psi_des : float
-        Target angle ψ_des from the field to coil 1 [rad] (Figs. 19–20: π/3, 2π/3).
+    psi_des : float or array_like
+        Target angle ψ_des from the field to coil 1 [rad] (Figs. 19–20: π/3, 2π/3), one
+        for all or one per member.
     duration : float
         Simulated time [s], a whole number of samples.
     release_angle, release_rate : array_like, optional
@@ -624,10 +625,16 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
     >>> bool(run.error_band[0] < np.radians(1.0))
     True
     """
-    psi_des = float(as_finite("psi_des", psi_des))
+    psi_des = as_finite("psi_des", psi_des)
+    if psi_des.ndim == 0:
+        psi_des = float(psi_des)
+    elif members is None:
+        members = psi_des.size
     steps, window, members, psi, omega, kappa, scale, every, g_err, m_err = _loop_inputs(
         setup, duration, window, members, release_angle, release_rate, moment_scale, thread_stiffness,
         rng, sensor_errors, record_interval)
+    if not isinstance(psi_des, float):
+        psi_des = _member_array("psi_des", psi_des, members)
     err = _error_arrays(members, {
         "gyro_offset": gyro_offset, "gyro_drift": gyro_drift, "magnetometer_offset": magnetometer_offset,
         "magnetometer_matrix": magnetometer_matrix, "magnetometer_misalignment": magnetometer_misalignment,

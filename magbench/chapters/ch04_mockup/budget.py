@@ -27,11 +27,12 @@ from ...constants import MU_0
 from ...io.data import DATA_DIR, DataError, to_si, verify_checksum
 
 __all__ = ["ErrorSource", "load_error_sources", "nominal_values", "simulate_sources", "one_at_a_time",
-           "sobol_budget", "from_unit_cube", "SAMPLE_INTERVALS"]
+           "sobol_design", "sobol_analysis", "sobol_budget", "from_unit_cube",
+           "SAMPLE_INTERVALS"]
 
 #: Controller periods the budget runs [s]: draws of ``sample_interval`` are rounded to the
 #: nearest (in log) so that members share a time grid and stay vectorised.
-SAMPLE_INTERVALS = (0.005, 0.01, 0.02)
+SAMPLE_INTERVALS = (0.01, 0.02)
 
 _PATH = DATA_DIR / "bench" / "error_sources.toml"
 _EXTRA_UNITS = {"uT/(A m^2)": 1e-6}     # T per A·m²
@@ -178,8 +179,8 @@ def simulate_sources(setup, psi_des, values, *, duration, window, field_h, seed=
     ----------
     setup : magbench.sim.bench.BenchSetup
         The bench as designed [-]; its field is ``field_h`` with no background.
-    psi_des : float
-        Target [rad].
+    psi_des : float or array_like
+        Target [rad], one for all or one per member.
     values : dict of str to array_like
         Per-member values [SI] of every source of :func:`nominal_values` (missing names
         take the nominal value); ``gyro_drift`` is the change of the offset over the run
@@ -207,10 +208,11 @@ def simulate_sources(setup, psi_des, values, *, duration, window, field_h, seed=
 
     vals = dict(nominal_values(setup))
     vals.update(values)
-    size = max(np.size(v) for v in vals.values())
+    size = max([np.size(v) for v in vals.values()] + [np.size(psi_des)])
+    target = np.broadcast_to(np.asarray(psi_des, float), (size,))
     v = {k: np.broadcast_to(np.asarray(x, float), (size,)) for k, x in vals.items()}
     levels = np.asarray(SAMPLE_INTERVALS)
-    # Nearest period in log: the range's ends are at factors of 2 from the middle.
+    # Nearest period in log (a draw between two levels goes to the nearer by ratio).
     pick = np.argmin(np.abs(np.log(v["sample_interval"])[:, None] - np.log(levels)[None, :]), axis=1)
     hb, beta = v["background_h"], v["background_azimuth"]
     total = bench.horizontal_field(field_h, hb, beta)
@@ -226,9 +228,9 @@ def simulate_sources(setup, psi_des, values, *, duration, window, field_h, seed=
         sub = replace(setup, sample_interval=float(dt))
         rng = None if seed is None else np.random.default_rng([int(seed), k])
         run = bench.simulate_bench(
-            sub, psi_des, duration=duration, window=window, members=idx.size, rng=rng,
+            sub, target[idx], duration=duration, window=window, members=idx.size, rng=rng,
             record_interval=duration,
-            release_angle=psi_des + v["release_angle"][idx], release_rate=v["release_rate"][idx],
+            release_angle=target[idx] + v["release_angle"][idx], release_rate=v["release_rate"][idx],
             moment_scale=np.stack([1 + v["moment_scale_1"][idx], 1 + v["moment_scale_2"][idx]], -1),
             thread_stiffness=v["thread_stiffness"][idx],
             gyro_offset=v["gyro_offset"][idx], gyro_drift=v["gyro_drift"][idx] / duration,
@@ -238,81 +240,71 @@ def simulate_sources(setup, psi_des, values, *, duration, window, field_h, seed=
             coil_misalignment=np.stack([v["coil_misalignment_1"][idx], v["coil_misalignment_2"][idx]], -1),
             coil_field_coupling=v["coil_field_coupling"][idx],
             field_scale=total[idx] / setup.field, field_azimuth=gamma[idx],
-            thread_neutral_angle=psi_des + v["thread_neutral_angle"][idx],
+            thread_neutral_angle=target[idx] + v["thread_neutral_angle"][idx],
             filter_coefficient=v["filter_coefficient"][idx], pwm_levels=np.rint(v["pwm_levels"][idx]))
         band[idx], indicated[idx] = run.error_band, run.indicated_error_band
     return band, indicated
 
 
-def one_at_a_time(setup, psi_des, sources, *, points, duration, window, field_h, seed=None):
+def one_at_a_time(setup, targets, sources, *, points, duration, window, field_h, seed=None):
     """Error band against each source across its range, every other source nominal.
 
     Parameters
     ----------
-    setup, psi_des, duration, window, field_h, seed
+    setup, duration, window, field_h, seed
         As :func:`simulate_sources`.
+    targets : sequence of float
+        Targets ψ_des [rad]; all run in one batch of members.
     sources : dict of str to ErrorSource
     points : int
         Values per source, evenly spaced (in log for a log scale) from low to high [-], ≥ 2.
 
     Returns
     -------
-    dict of str to (values (points,), band (points,), indicated (points,))
-        SI values and bands [rad]. All sources run in one batch of members.
+    dict of str to (values (points,), band (T, points), indicated (T, points))
+        SI values and, per target, the bands [rad].
     """
     points = int(points)
     if points < 2:
         raise ValueError(f"points must be >= 2, got {points!r}")
+    targets = np.atleast_1d(np.asarray(targets, float))
     names = list(sources)
     grid = np.linspace(0.0, 1.0, points)
+    xs = from_unit_cube(np.tile(grid[:, None], (1, len(names))), sources)
     nominal = nominal_values(setup)
-    values = {n: np.full(len(names) * points, float(nominal[n])) for n in nominal}
-    xs = {}
-    for i, n in enumerate(names):
-        x = from_unit_cube(np.tile(grid[:, None], (1, len(names))), sources)[n]
-        xs[n] = x
-        values[n][i * points:(i + 1) * points] = x
-    band, ind = simulate_sources(setup, psi_des, values, duration=duration, window=window,
+    block = len(names) * points
+    values = {n: np.full(block * targets.size, float(nominal[n])) for n in nominal}
+    for t in range(targets.size):
+        for i, n in enumerate(names):
+            start = t * block + i * points
+            values[n][start:start + points] = xs[n]
+    band, ind = simulate_sources(setup, np.repeat(targets, block), values, duration=duration, window=window,
                                  field_h=field_h, seed=seed)
-    return {n: (xs[n], band[i * points:(i + 1) * points], ind[i * points:(i + 1) * points])
-            for i, n in enumerate(names)}
+    band, ind = band.reshape(targets.size, len(names), points), ind.reshape(targets.size, len(names), points)
+    return {n: (xs[n], band[:, i], ind[:, i]) for i, n in enumerate(names)}
 
 
-def sobol_budget(setup, psi_des, sources, *, base_samples, duration, window, field_h, seed,
-                 threshold, fixed=None):
-    r"""Sobol indices of the final error band over the sources' ranges (SALib).
+def sobol_design(sources, *, base_samples, seed, fixed=None):
+    """Saltelli's sample over the sources' ranges (SALib), first and total order.
 
     Parameters
     ----------
-    setup, psi_des, duration, window, field_h
-        As :func:`simulate_sources`.
     sources : dict of str to ErrorSource
     base_samples : int
-        N of Saltelli's scheme, a power of 2 [-]; N·(D + 2) runs.
+        N, a power of 2 [-]; N·(D + 2) points for D sampled sources.
     seed : int
-        Seed of the Sobol sequence's scrambling, the bootstrap and the sensor noise [-].
-    threshold : float
-        Error band whose exceedance fraction is returned [rad] (the thesis's 10°).
+        Seed of the scrambled Sobol sequence [-].
     fixed : dict of str to float, optional
         Sources held at these values (SI) instead of sampled (not in the indices).
 
     Returns
     -------
-    dict
-        ``names``; ``S1``, ``S1_conf``, ``ST``, ``ST_conf`` (95 % bootstrap half-widths)
-        per name; ``band`` and ``indicated`` of the 2N independent points (the A and B
-        matrices) [rad]; ``fraction`` of them with band ≥ threshold and its 95 %
-        Clopper–Pearson interval ``fraction_ci``; ``runs`` the members simulated.
-
-    Notes
-    -----
-    Not in the thesis. Saltelli's sample (``SALib.sample.sobol``, scrambled Sobol
-    sequence) and Jansen's estimators with bootstrap intervals
-    (``SALib.analyze.sobol``), first and total order only.
+    problem : dict
+        SALib's problem (names, unit bounds).
+    values : dict of str to ndarray
+        Per-point source values [SI], ready for :func:`simulate_sources`.
     """
-    from SALib.analyze import sobol as sobol_analyze
     from SALib.sample import sobol as sobol_sample
-    from scipy.stats import binomtest
 
     n = int(base_samples)
     if n < 2 or n & (n - 1):
@@ -322,21 +314,68 @@ def sobol_budget(setup, psi_des, sources, *, base_samples, duration, window, fie
     if unknown:
         raise ValueError(f"fixed names unknown sources: {sorted(unknown)}")
     free = {k: s for k, s in sources.items() if k not in fixed}
+    if not free:
+        raise ValueError("every source is fixed: nothing to analyse")
     names = list(free)
     problem = {"num_vars": len(names), "names": names, "bounds": [[0.0, 1.0]] * len(names)}
     u = sobol_sample.sample(problem, n, calc_second_order=False, seed=seed)
     values = from_unit_cube(u, free)
     values.update({k: np.full(len(u), float(x)) for k, x in fixed.items()})
-    band, ind = simulate_sources(setup, psi_des, values, duration=duration, window=window,
-                                 field_h=field_h, seed=seed)
+    return problem, values
+
+
+def sobol_analysis(problem, values, band, indicated, *, threshold, seed):
+    r"""Sobol indices of the error band and its distribution over the independent points.
+
+    Parameters
+    ----------
+    problem, values
+        From :func:`sobol_design`.
+    band, indicated : ndarray
+        Error bands of every point [rad] (:func:`simulate_sources`).
+    threshold : float
+        Error band whose exceedance fraction is returned [rad] (the thesis's 10°).
+    seed : int
+        Seed of the bootstrap [-].
+
+    Returns
+    -------
+    dict
+        ``names``; ``S1``, ``S1_conf``, ``ST``, ``ST_conf`` (95 % bootstrap half-widths)
+        per name; ``band``, ``indicated`` and ``values`` of the 2N independent points (the
+        A and B matrices of Saltelli's scheme) [rad, SI]; ``fraction`` of them with
+        band ≥ threshold and its 95 % Clopper–Pearson interval ``fraction_ci``; ``runs``.
+
+    Notes
+    -----
+    Not in the thesis. Jansen's estimators with bootstrap intervals
+    (``SALib.analyze.sobol``), on the band in degrees.
+    """
+    from SALib.analyze import sobol as sobol_analyze
+    from scipy.stats import binomtest
+
+    names = problem["names"]
     res = sobol_analyze.analyze(problem, np.degrees(band), calc_second_order=False, conf_level=0.95,
                                 seed=seed, print_to_console=False)
     step = len(names) + 2
-    independent = np.concatenate([np.arange(0, len(u), step), np.arange(step - 1, len(u), step)])
+    independent = np.sort(np.concatenate([np.arange(0, len(band), step), np.arange(step - 1, len(band), step)]))
     reach = int(np.sum(band[independent] >= threshold))
     ci = binomtest(reach, independent.size).proportion_ci(0.95, method="exact")
     return {"names": names, "S1": dict(zip(names, res["S1"])), "S1_conf": dict(zip(names, res["S1_conf"])),
             "ST": dict(zip(names, res["ST"])), "ST_conf": dict(zip(names, res["ST_conf"])),
-            "band": band[independent], "indicated": ind[independent],
+            "band": band[independent], "indicated": indicated[independent],
             "values": {k: np.asarray(x)[independent] for k, x in values.items()},
-            "fraction": reach / independent.size, "fraction_ci": (ci.low, ci.high), "runs": len(u)}
+            "fraction": reach / independent.size, "fraction_ci": (float(ci.low), float(ci.high)),
+            "runs": len(band)}
+
+
+def sobol_budget(setup, psi_des, sources, *, base_samples, duration, window, field_h, seed,
+                 threshold, fixed=None):
+    """:func:`sobol_design`, :func:`simulate_sources` and :func:`sobol_analysis` in one call.
+
+    Parameters are those of the three; returns :func:`sobol_analysis`'s dict.
+    """
+    problem, values = sobol_design(sources, base_samples=base_samples, seed=seed, fixed=fixed)
+    band, ind = simulate_sources(setup, psi_des, values, duration=duration, window=window,
+                                 field_h=field_h, seed=seed)
+    return sobol_analysis(problem, values, band, ind, threshold=threshold, seed=seed)
