@@ -18,7 +18,7 @@ matplotlib.use("Agg")
 SLOW = {"ch04-montecarlo", "ch04-period-ratio", "ch04-tau-sensitivity", "ch04-broad-tilt",
         "thesis-fig03", "ch04-step-response", "rotor-simulation", "tns0-capture", "samsat-fig2",
         "ch05-rate-decay", "ch05-duty-estimators", "ch05-detumble-distribution", "ch05-basilisk-peer",
-        "ch05-gain-sweep"}
+        "ch05-gain-sweep", "ch04-budget-oat", "ch04-budget-sobol"}
 MIN_FONT_PT = 7.0
 
 

@@ -102,14 +102,14 @@ def plot_oat(data):
 
 def compute_sobol(budget_base_samples, budget_seed, **p):
     """Sobol indices and the distribution of the error band over the allowed space (ψ_des = π/3),
-    and the same distribution with the gyro's offset and drift held at zero."""
+    and the same distribution with the gyro's offset and drift held at zero (N/2)."""
     setup, kw = _common(p)
     sources = budget.load_error_sources()
     threshold = measurement("orientation-error").value
     n = int(round(budget_base_samples))
     seed = int(round(budget_seed))
     problem, values = budget.sobol_design(sources, base_samples=n, seed=seed)
-    problem_ng, values_ng = budget.sobol_design(sources, base_samples=max(2, n // 4), seed=seed + 1,
+    problem_ng, values_ng = budget.sobol_design(sources, base_samples=max(2, n // 2), seed=seed + 1,
                                                 fixed={"gyro_offset": 0.0, "gyro_drift": 0.0})
     # Both designs in one batch of members: the runs' cost is mostly per time step.
     m = len(next(iter(values.values())))
@@ -162,13 +162,14 @@ def plot_sobol(data):
     edges = np.logspace(np.floor(np.log10(max(low, 1e-4))), np.log10(5.0 * measured), 40)
     for s, v, c in zip(data.series[1:], allv, ("C0", "C2")):
         a2.hist(v, bins=edges, histtype="step", linewidth=1.4, color=c, density=False,
-                label=f"{s.label} ({v.size} runs)")
+                label=f"{s.label}: {v.size}")
     a2.axvline(measured, color="C3", linewidth=2, label=f"thesis: {measured:.0f}°")
     a2.set_xscale("log")
     a2.set_xlabel("final error band, ψ_des = 60° [deg]", fontsize=8)
     a2.set_ylabel("runs", fontsize=8)
     a2.tick_params(labelsize=7.5)
-    a2.legend(fontsize=7, loc="upper left")
+    a2.legend(fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), frameon=False,
+              title="independent runs", title_fontsize=7)
     fig.suptitle(f"Over the whole allowed space (N = {e['base_samples']}, {e['runs']} runs for the indices)",
                  fontsize=9)
     return fig
@@ -179,5 +180,5 @@ register(FigureSpec("ch04-budget-oat", "Error budget: each source alone across i
                         "budget_points": FigureParameter(5.0, "1", "values per source, ends included")})))
 register(FigureSpec("ch04-budget-sobol", "Error budget: Sobol indices and the error over the allowed space",
                     SOURCE, compute_sobol, plot_sobol, lambda: _budget_parameters({
-                        "budget_base_samples": FigureParameter(128.0, "1", "N of Saltelli's sample (power of 2)"),
+                        "budget_base_samples": FigureParameter(256.0, "1", "N of Saltelli's sample (power of 2)"),
                         "budget_seed": FigureParameter(14.0, "1", "seed of the Sobol sequence and noise")})))
