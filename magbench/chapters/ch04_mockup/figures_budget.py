@@ -126,7 +126,7 @@ def compute_sobol(budget_base_samples, budget_seed, **p):
             "ST_conf": ("1", np.array([res["ST_conf"][k] for k in names]))}),
         Series("all sources", {"error_band": ("deg", np.degrees(res["band"])),
                                "indicated_error_band": ("deg", np.degrees(res["indicated"]))}),
-        Series("gyro offset and drift zero", {"error_band": ("deg", np.degrees(no_gyro["band"])),
+        Series("no gyro offset, drift", {"error_band": ("deg", np.degrees(no_gyro["band"])),
                                               "indicated_error_band": ("deg", np.degrees(no_gyro["indicated"]))}),
     ]
     return FigureData("", "", "", {}, series, extra={
@@ -162,14 +162,13 @@ def plot_sobol(data):
     edges = np.logspace(np.floor(np.log10(max(low, 1e-4))), np.log10(5.0 * measured), 40)
     for s, v, c in zip(data.series[1:], allv, ("C0", "C2")):
         a2.hist(v, bins=edges, histtype="step", linewidth=1.4, color=c, density=False,
-                label=f"{s.label}: {v.size}")
+                label=f"{s.label} ({v.size})")
     a2.axvline(measured, color="C3", linewidth=2, label=f"thesis: {measured:.0f}°")
     a2.set_xscale("log")
     a2.set_xlabel("final error band, ψ_des = 60° [deg]", fontsize=8)
     a2.set_ylabel("runs", fontsize=8)
     a2.tick_params(labelsize=7.5)
-    a2.legend(fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), frameon=False,
-              title="independent runs", title_fontsize=7)
+    a2.legend(fontsize=7, loc="upper left", frameon=False)
     fig.suptitle(f"Over the whole allowed space (N = {e['base_samples']}, {e['runs']} runs for the indices)",
                  fontsize=9)
     return fig
