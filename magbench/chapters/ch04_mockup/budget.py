@@ -36,7 +36,7 @@ SAMPLE_INTERVALS = (0.01, 0.02)
 
 _PATH = DATA_DIR / "bench" / "error_sources.toml"
 _EXTRA_UNITS = {"uT/(A m^2)": 1e-6}     # T per A·m²
-_KEYS = {"low", "high", "unit", "scale", "source", "reference", "note", "computed"}
+_KEYS = {"low", "high", "unit", "scale", "source", "reference", "note", "computed", "seed_line"}
 
 
 @dataclass(frozen=True)
