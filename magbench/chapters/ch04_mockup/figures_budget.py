@@ -179,5 +179,5 @@ register(FigureSpec("ch04-budget-oat", "Error budget: each source alone across i
                         "budget_points": FigureParameter(5.0, "1", "values per source, ends included")})))
 register(FigureSpec("ch04-budget-sobol", "Error budget: Sobol indices and the error over the allowed space",
                     SOURCE, compute_sobol, plot_sobol, lambda: _budget_parameters({
-                        "budget_base_samples": FigureParameter(256.0, "1", "N of Saltelli's sample (power of 2)"),
+                        "budget_base_samples": FigureParameter(128.0, "1", "N of Saltelli's sample (power of 2)"),
                         "budget_seed": FigureParameter(14.0, "1", "seed of the Sobol sequence and noise")})))
