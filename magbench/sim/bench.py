@@ -58,7 +58,7 @@ from .result import SimulationResult
 
 __all__ = ["BenchSetup", "controller_step", "horizontal_field", "coil_full_scale_moment",
            "quantise_duty", "plant_step", "simulate_bench", "simulate_bench_reference",
-           "monte_carlo", "steady_error_band", "draw_sensor_errors"]
+           "monte_carlo", "steady_error_band", "draw_sensor_errors", "ERROR_INPUTS"]
 
 # Samples of sensor error drawn at once: bounds memory at members × block × 3 floats.
 _BLOCK = 256
@@ -260,7 +260,7 @@ def quantise_duty(duty, levels):
     [0.501961, -0.0, 0.003922]
     """
     d = np.asarray(duty, dtype=float)
-    if not levels:
+    if np.ndim(levels) == 0 and not levels:
         return d
     return np.rint(d * levels) / levels
 
@@ -367,7 +367,8 @@ def _member_array(name, value, members):
         raise ValueError(f"{name} must be a scalar or have shape ({members},), got shape {arr.shape}") from None
 
 
-def controller_step(setup, psi_des, gyro, bx, by, estimate, integral, full_1, full_2):
+def controller_step(setup, psi_des, gyro, bx, by, estimate, integral, full_1, full_2, *,
+                    filter_coefficient=None, pwm_levels=None):
     r"""One sample of the bench's controller: filter, PID, allocation and PWM (pure).
 
     Parameters
@@ -388,6 +389,10 @@ def controller_step(setup, psi_des, gyro, bx, by, estimate, integral, full_1, fu
         The PID integral before this sample [rad·s].
     full_1, full_2 : array_like
         Each coil's actual full-scale moment [A·m²], per member.
+    filter_coefficient : array_like, optional
+        A of eq. (39) per member [-]; default ``setup.filter_coefficient``.
+    pwm_levels : array_like, optional
+        Duty steps each way per member [-], > 0; default ``setup.pwm_levels``.
 
     Returns
     -------
@@ -406,14 +411,14 @@ def controller_step(setup, psi_des, gyro, bx, by, estimate, integral, full_1, fu
     if estimate is None:
         estimate = heading
     reference = estimate + wrap_angle(heading - estimate)
-    estimate = estimation.complementary_filter_step(estimate, gyro, reference, setup.sample_interval,
-                                                    setup.filter_coefficient)
+    alpha = setup.filter_coefficient if filter_coefficient is None else filter_coefficient
+    estimate = estimation.complementary_filter_step(estimate, gyro, reference, setup.sample_interval, alpha)
     error = wrap_angle(psi_des - estimate)
     u, integral = control.pid_step(error, -gyro, integral, setup.sample_interval, setup.kp, setup.ki,
                                    setup.kd, setup.moment_limit)
     u_over_b = u / np.sqrt(bx * bx + by * by)
     duty_gain = 1.0 / setup.full_scale_moments
-    levels = int(setup.pwm_levels)
+    levels = int(setup.pwm_levels) if pwm_levels is None else pwm_levels
     moment_1 = quantise_duty(u_over_b * by * duty_gain[0], levels) * full_1
     moment_2 = quantise_duty(u_over_b * bx * -duty_gain[1], levels) * full_2
     return moment_1, moment_2, estimate, integral
@@ -466,17 +471,79 @@ def _loop_inputs(setup, duration, window, members, release_angle, release_rate, 
     return steps, window, members, psi, omega, kappa, scale, every, g_err, m_err
 
 
+#: The hardware error sources :func:`simulate_bench` takes as keywords: name -> (unit,
+#: trailing shape per member, what the default leaves out). Chapter 4's error budget
+#: (magbench.chapters.ch04_mockup.budget) sets them per Monte Carlo member.
+ERROR_INPUTS = {
+    "gyro_offset": ("rad/s", (), "a constant gyro zero-rate offset added to setup.gyro_bias"),
+    "gyro_drift": ("rad/s^2", (), "a linear drift of the gyro offset, offset + drift·t"),
+    "magnetometer_offset": ("T", (2,), "hard-iron offset along coil 1 and coil 2"),
+    "magnetometer_matrix": ("1", (2, 2), "soft-iron, scale and cross-axis matrix S: reading = S·b + offset"),
+    "magnetometer_misalignment": ("rad", (), "rotation of the magnetometer from coil 1's axis about the vertical"),
+    "heading_ripple": ("rad", (), "field direction at the magnetometer off the axis's by a·sin 2ψ (non-uniformity)"),
+    "coil_misalignment": ("rad", (2,), "rotation of coil 1's and coil 2's axes from their body axes"),
+    "coil_field_coupling": ("T/(A m^2)", (), "coils' own field at the magnetometer per unit moment, k·(M_x, M_y)"),
+    "field_scale": ("1", (), "factor on the horizontal field B0 (uncancelled background, non-uniformity)"),
+    "field_azimuth": ("rad", (), "angle from the bench's reference axis to the field; the error is scored from that axis"),
+    "thread_neutral_angle": ("rad", (), "angle at which the thread is untwisted (default setup's)"),
+    "filter_coefficient": ("1", (), "A of eq. (39) (default setup's)"),
+    "pwm_levels": ("1", (), "duty steps each way, > 0 (default setup's)"),
+}
+
+
+def _error_arrays(members, values):
+    """Checked per-member arrays of the error sources given (None: left out)."""
+    out = {}
+    for name, value in values.items():
+        if value is None:
+            out[name] = None
+            continue
+        unit, shape, _ = ERROR_INPUTS[name]
+        arr = as_finite(name, value)
+        try:
+            arr = np.array(np.broadcast_to(arr, (members,) + shape), dtype=float)
+        except ValueError:
+            raise ValueError(f"{name} [{unit}] must broadcast to shape {(members,) + shape}, "
+                             f"got shape {arr.shape}") from None
+        out[name] = arr
+    if out.get("field_scale") is not None:
+        as_positive("field_scale", out["field_scale"])
+    if out.get("filter_coefficient") is not None:
+        as_in_range("filter_coefficient", out["filter_coefficient"], 0.0, 1.0)
+    if out.get("pwm_levels") is not None:
+        lv = out["pwm_levels"]
+        if np.any(lv < 1) or np.any(lv != np.rint(lv)):
+            bad = lv[(lv < 1) | (lv != np.rint(lv))].ravel()[0]
+            raise ValueError(f"pwm_levels must be whole numbers of duty steps >= 1, got {bad!r}")
+    if out.get("magnetometer_matrix") is not None:
+        det = np.linalg.det(out["magnetometer_matrix"])
+        if np.any(det <= 0):
+            raise ValueError("magnetometer_matrix must have a positive determinant (a sensor, not a "
+                             f"mirror or a collapse), got determinant {float(det[det <= 0].ravel()[0])!r}")
+    for name in ("magnetometer_misalignment", "heading_ripple", "field_azimuth"):
+        if out.get(name) is not None:
+            as_in_range(name, out[name], -np.pi, np.pi, unit="rad")
+    if out.get("coil_misalignment") is not None:
+        as_in_range("coil_misalignment", out["coil_misalignment"], -np.pi / 4, np.pi / 4, unit="rad")
+    return out
+
+
 def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=0.0, members=None,
                    moment_scale=1.0, thread_stiffness=None, rng=None, sensor_errors=None,
-                   record_interval=None, window=20.0):
+                   record_interval=None, window=20.0, gyro_offset=None, gyro_drift=None,
+                   magnetometer_offset=None, magnetometer_matrix=None, magnetometer_misalignment=None,
+                   heading_ripple=None, coil_misalignment=None, coil_field_coupling=None,
+                   field_scale=None, field_azimuth=None, thread_neutral_angle=None,
+                   filter_coefficient=None, pwm_levels=None):
     r"""Simulate the bench's closed loop, vectorised over Monte Carlo members.
 
     Parameters
     ----------
     setup : BenchSetup
         The bench [-].
-    psi_des : float
-        Target angle ψ_des from the field to coil 1 [rad] (Figs. 19–20: π/3, 2π/3).
+    psi_des : float or array_like
+        Target angle ψ_des from the field to coil 1 [rad] (Figs. 19–20: π/3, 2π/3), one
+        for all or one per member.
     duration : float
         Simulated time [s], a whole number of samples.
     release_angle, release_rate : array_like, optional
@@ -498,6 +565,37 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
         every sample.
     window : float, optional
         Length of the final window over which the error band is taken [s].
+    gyro_offset, gyro_drift : array_like, optional
+        Per member: constant gyro offset [rad/s] (on top of ``setup.gyro_bias``) and its
+        linear drift [rad/s²]; the gyro reads ω + offset + drift·t + noise.
+    magnetometer_offset : array_like, optional
+        Hard-iron offset along coil 1 and coil 2 [T], shape (members, 2) or (2,).
+    magnetometer_matrix : array_like, optional
+        Soft-iron, scale-factor and cross-axis matrix S [-], shape (members, 2, 2) or
+        (2, 2), det S > 0: the magnetometer reads S·b + offset.
+    magnetometer_misalignment : array_like, optional
+        Angle by which the magnetometer's heading exceeds coil 1's [rad], in [−π, π].
+    heading_ripple : array_like, optional
+        Amplitude a [rad] of the field direction's deviation at the magnetometer,
+        a·sin 2ψ (the second-order non-uniformity of a coil pair sampled on a circle).
+    coil_misalignment : array_like, optional
+        Rotation of each coil's axis from its body axis about the vertical [rad],
+        shape (members, 2) or (2,), within ±π/4.
+    coil_field_coupling : array_like, optional
+        The coils' own field at the magnetometer per unit moment [T/(A·m²)]: it reads
+        k·(M_x, M_y) of the moments held since the last sample.
+    field_scale : array_like, optional
+        Factor on ``setup.field`` per member [-], > 0.
+    field_azimuth : array_like, optional
+        Angle from the bench's reference axis (the simulator's) to the field the mock-up
+        sees [rad], counted like ψ; the error band is then max |ψ + field_azimuth − ψ_des|,
+        the error an observer sees against the bench.
+    thread_neutral_angle : array_like, optional
+        Angle at which the thread is untwisted, per member [rad]; default the setup's.
+    filter_coefficient : array_like, optional
+        A of eq. (39) per member, in [0, 1] [-]; default the setup's.
+    pwm_levels : array_like, optional
+        Duty steps each way per member, whole numbers ≥ 1 [-]; default the setup's.
 
     Returns
     -------
@@ -527,12 +625,42 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
     >>> bool(run.error_band[0] < np.radians(1.0))
     True
     """
-    psi_des = float(as_finite("psi_des", psi_des))
+    psi_des = as_finite("psi_des", psi_des)
+    if psi_des.ndim == 0:
+        psi_des = float(psi_des)
+    elif members is None:
+        members = psi_des.size
     steps, window, members, psi, omega, kappa, scale, every, g_err, m_err = _loop_inputs(
         setup, duration, window, members, release_angle, release_rate, moment_scale, thread_stiffness,
         rng, sensor_errors, record_interval)
+    if not isinstance(psi_des, float):
+        psi_des = _member_array("psi_des", psi_des, members)
+    err = _error_arrays(members, {
+        "gyro_offset": gyro_offset, "gyro_drift": gyro_drift, "magnetometer_offset": magnetometer_offset,
+        "magnetometer_matrix": magnetometer_matrix, "magnetometer_misalignment": magnetometer_misalignment,
+        "heading_ripple": heading_ripple, "coil_misalignment": coil_misalignment,
+        "coil_field_coupling": coil_field_coupling, "field_scale": field_scale,
+        "field_azimuth": field_azimuth, "thread_neutral_angle": thread_neutral_angle,
+        "filter_coefficient": filter_coefficient, "pwm_levels": pwm_levels})
     dt, b0 = setup.sample_interval, setup.field
-    plant = replace(setup.plant, thread_stiffness=kappa)
+    if err["field_scale"] is not None:
+        b0 = b0 * err["field_scale"]
+    plant = replace(setup.plant, thread_stiffness=kappa, field=b0)
+    if err["thread_neutral_angle"] is not None:
+        plant = replace(plant, thread_neutral_angle=err["thread_neutral_angle"])
+    # Error sources as the loop applies them (None: the nominal model's arithmetic, untouched).
+    g_off, g_drift = err["gyro_offset"], err["gyro_drift"]
+    m_off, m_mat, m_rot, ripple = (err["magnetometer_offset"], err["magnetometer_matrix"],
+                                   err["magnetometer_misalignment"], err["heading_ripple"])
+    coupling, azimuth = err["coil_field_coupling"], err["field_azimuth"]
+    coil_axes = None
+    if err["coil_misalignment"] is not None:
+        eta = err["coil_misalignment"]
+        # Body components of unit moments along each misaligned coil: coil 1 at η1 from x,
+        # coil 2 at 90° + η2 (so that zero misalignment is the plant's (m1, m2) exactly).
+        coil_axes = (np.cos(eta[:, 0]), np.sin(eta[:, 0]), -np.sin(eta[:, 1]), np.cos(eta[:, 1]))
+    ctrl_kw = {"filter_coefficient": err["filter_coefficient"], "pwm_levels": err["pwm_levels"]}
+    applied = (np.zeros(members), np.zeros(members))   # body moments held before the first sample
     # Each member's actual full-scale moments (the controller divides by the nominal ones).
     full_actual = setup.full_scale_moments * scale                       # (members, 2)
     full_1, full_2 = np.ascontiguousarray(full_actual[:, 0]), np.ascontiguousarray(full_actual[:, 1])
@@ -557,22 +685,43 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
             k = start + j
             psi, omega = state
             gyro = omega + g_blk[j]
-            bx = b0 * np.cos(psi) + m_blk[j, :, 0]
-            by = -b0 * np.sin(psi) + m_blk[j, :, 1]
+            if g_off is not None:
+                gyro = gyro + g_off
+            if g_drift is not None:
+                gyro = gyro + g_drift * (k * dt)
+            bx, by = b0 * np.cos(psi), -b0 * np.sin(psi)
+            if m_rot is not None or ripple is not None:
+                # The sensor reads the heading ψ + δ: the body field turned by −δ.
+                delta = (0.0 if m_rot is None else m_rot) + (0.0 if ripple is None else ripple * np.sin(2 * psi))
+                c, s = np.cos(delta), np.sin(delta)
+                bx, by = bx * c + by * s, by * c - bx * s
+            if m_mat is not None:
+                bx, by = m_mat[:, 0, 0] * bx + m_mat[:, 0, 1] * by, m_mat[:, 1, 0] * bx + m_mat[:, 1, 1] * by
+            if coupling is not None:
+                bx, by = bx + coupling * applied[0], by + coupling * applied[1]
+            if m_off is not None:
+                bx, by = bx + m_off[:, 0], by + m_off[:, 1]
+            bx, by = bx + m_blk[j, :, 0], by + m_blk[j, :, 1]
             moment_1, moment_2, estimate, integral = controller_step(
-                setup, psi_des, gyro, bx, by, estimate, integral, full_1, full_2)
+                setup, psi_des, gyro, bx, by, estimate, integral, full_1, full_2, **ctrl_kw)
             if k % every == 0:
                 i = k // every
                 states[:, i], estimates[0, i], moments[:, i] = state, estimate, (moment_1, moment_2)
             if k >= first_in_window:
-                np.maximum(band, np.abs(wrap_angle(psi - psi_des)), out=band)
+                seen = psi if azimuth is None else psi + azimuth
+                np.maximum(band, np.abs(wrap_angle(seen - psi_des)), out=band)
                 np.maximum(band_est, np.abs(wrap_angle(estimate - psi_des)), out=band_est)
-            state = rk4_step(mockup_rhs, k * dt, state, dt, args=((moment_1, moment_2), plant))
+            if coil_axes is not None:
+                applied = (moment_1 * coil_axes[0] + moment_2 * coil_axes[2],
+                           moment_1 * coil_axes[1] + moment_2 * coil_axes[3])
+            else:
+                applied = (moment_1, moment_2)
+            state = rk4_step(mockup_rhs, k * dt, state, dt, args=(applied, plant))
     if steps % every == 0:
         states[:, -1], estimates[0, -1], moments[:, -1] = state, estimate, (moment_1, moment_2)
     else:
         states, estimates, moments = states[:, :-1], estimates[:, :-1], moments[:, :-1]
-    np.maximum(band, np.abs(wrap_angle(state[0] - psi_des)), out=band)
+    np.maximum(band, np.abs(wrap_angle(state[0] + (0.0 if azimuth is None else azimuth) - psi_des)), out=band)
     time = np.arange(states.shape[1]) * every * dt
     params = {"psi_des": psi_des, "window": window,
               "release_angle": _member_array("release_angle", release_angle, members),

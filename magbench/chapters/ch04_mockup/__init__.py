@@ -13,7 +13,8 @@ from ...errata import source_check
 from ...io import load_parameter_set
 from .._base import Chapter, chapter_parameters
 
-__all__ = ["CHAPTER", "INPUTS", "KD_SWEEP", "KP_SWEEP", "PRINTED_SETS", "bench_rows", "dynamics_checks"]
+__all__ = ["CHAPTER", "INPUTS", "KD_SWEEP", "KP_SWEEP", "PRINTED_SETS", "bench_rows", "budget_rows",
+           "dynamics_checks"]
 
 
 #: The chapter's inputs: names in the parameter set of its source.
@@ -71,6 +72,56 @@ def bench_rows(params=None):
     return rows
 
 
+def budget_rows(params=None):
+    """Chapter 4, the error budget: what single hardware error sources can make of the 10°.
+
+    For each target, two model values beside the thesis's 10°: the error band the
+    MPU-6050's largest uncalibrated offset (datasheet ±20 °/s) gives alone, and the
+    largest band any *other* source gives alone at the ends or middle of its range
+    (:func:`magbench.chapters.ch04_mockup.budget.one_at_a_time`, three values each,
+    the others nominal). The tolerance is the bench rows' 0.5°. The Sobol analysis of
+    all sources together is on the book page (too slow for a row).
+
+    Parameters
+    ----------
+    params : dict, optional
+        Chapter-4 parameters (SI); defaults from :func:`magbench.params.chapter_parameters`.
+    """
+    from ...sim import bench
+    from ...io import measurement
+    from . import budget
+
+    p = params or chapter_parameters("ch04")
+    setup = bench.BenchSetup.from_parameters(p)
+    measured = measurement("orientation-error")
+    sources = budget.load_error_sources()
+    deg = np.pi / 180
+    targets = (("pi3", "π/3", np.pi / 3), ("2pi3", "2π/3", 2 * np.pi / 3))
+    oat = budget.one_at_a_time(setup, [t for _, _, t in targets], sources, points=3,
+                               duration=p["bench_duration"], window=p["bench_error_window"],
+                               field_h=p["bench_field_h"], seed=int(p["bench_seed"]))
+    rows = []
+    for k, (tag, label, target) in enumerate(targets):
+        gyro = float(np.max(oat["gyro_offset"][1][k]))
+        others = {n: float(np.max(v[1][k])) for n, v in oat.items() if n not in ("gyro_offset", "gyro_drift")}
+        worst = max(others, key=others.get)
+        rows.append(make_row(
+            f"bench-budget-gyro-{tag}", f"Orientation error from the gyro's datasheet offset alone, ψ_des = {label}",
+            "thesis §4.4 (measured) beside the MPU-6050's ±20 °/s (PS-MPU-6000A-00, Table 6.1)",
+            measured.value, gyro, 0.5 * deg, unit="deg", scale=deg,
+            note="model: error band with the largest uncalibrated zero-rate offset, every other source nominal"))
+        rows.append(make_row(
+            f"bench-budget-other-{tag}", f"Largest orientation error from any other single source, ψ_des = {label}",
+            "thesis §4.4 (measured) beside magbench/data/bench/error_sources.toml",
+            measured.value, others[worst], 0.5 * deg, unit="deg", scale=deg,
+            note=f"model: the largest is {worst.replace('_', ' ')} at an end of its range"))
+    return rows
+
+
+def _rows(params=None):
+    return bench_rows(params) + budget_rows(params)
+
+
 #: The PID gain sets (K_p, K_i, K_d) of thesis Figs. 15–16 (K_p swept) and 17–18 (K_d swept).
 KP_SWEEP = ((0.1, 0.5, 0.5), (0.2, 0.5, 0.5), (0.3, 0.5, 0.5))
 KD_SWEEP = ((0.1, 0.5, 1.0), (0.1, 0.5, 2.0), (0.1, 0.5, 3.0))
@@ -122,11 +173,12 @@ def dynamics_checks():
 CHAPTER = Chapter(
     key="ch04", title="The mock-up on a thread: equations of motion and PID control",
     short_title="the mock-up and the bench",
-    pages=("book/ch04-mockup", "book/ch04-estimation", "book/ch04-bench"), source="thesis",
+    pages=("book/ch04-mockup", "book/ch04-estimation", "book/ch04-bench", "book/ch04-budget"), source="thesis",
     inputs=INPUTS,
-    figure_modules=("magbench.chapters.ch04_mockup.figures", "magbench.chapters.ch04_mockup.figures_estimation", "magbench.chapters.ch04_mockup.figures_bench"),
-    comparisons=bench_rows,
-    row_kinds=(("bench-error-", "measurement"),),
+    figure_modules=("magbench.chapters.ch04_mockup.figures", "magbench.chapters.ch04_mockup.figures_estimation", "magbench.chapters.ch04_mockup.figures_bench",
+                    "magbench.chapters.ch04_mockup.figures_budget"),
+    comparisons=_rows,
+    row_kinds=(("bench-error-", "measurement"), ("bench-budget-", "measurement")),
     source_checks=(dynamics_checks,),
     cites="thesis §4, eqs. (33)–(39), Figs. 10–20",
     finds=("whether the printed PID gains stabilise the mock-up, how the filter behaves on real IMU data, and what the bench's measured orientation error can and cannot come from"),
