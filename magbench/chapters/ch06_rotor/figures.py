@@ -563,3 +563,126 @@ register(FigureSpec("rotor-products-of-inertia", "Products of inertia: rate damp
 register(FigureSpec("kovalenko-spin-relay", "Kovalenko's relay spin law over a turn of the field",
                     "Kovalenko (1975) §7.3, eqs. (7.12), (7.26)", compute_spin_relay, plot_spin_relay,
                     _relay_parameters))
+
+
+# --- pointing error against the transverse asymmetry (rotor_spin.md §8, §14) -------------------
+
+def _asymmetry(params):
+    """ε = (I33 − I22)/(I33 + I22) of a parameter set [-]."""
+    i2, i3 = params["transverse_inertia_2"], params["transverse_inertia_3"]
+    return (i3 - i2) / (i3 + i2)
+
+
+def _asymmetry_parameters():
+    return {
+        "largest_asymmetry": FigureParameter(0.35, "1", "largest ε = (I33 − I22)/(I33 + I22) of the sweep (ours, "
+                                                        "beyond the default 0.25)"),
+        "orbits": FigureParameter(2.0, "1", "orbits per run (slow: about 4 s per orbit and asymmetric body)"),
+    }
+
+
+def _with_asymmetry(params, asymmetry):
+    """The parameters with I22 = B(1 − ε), I33 = B(1 + ε), B = (I22 + I33)/2 and everything else held."""
+    p = dict(params)
+    b = 0.5 * (p["transverse_inertia_2"] + p["transverse_inertia_3"])
+    p.update(transverse_inertia_2=b * (1.0 - asymmetry), transverse_inertia_3=b * (1.0 + asymmetry))
+    return p
+
+
+@functools.lru_cache(maxsize=8)
+def asymmetric_si_maxima(items, asymmetry, orbits):
+    """Largest pointing error per orbit [deg] of the SI model (DOP853 at the chapter's tolerance) from
+    the chapter's start (α0, β0, γ0), transverse asymmetry ε; ``items`` = sorted chapter parameters.
+
+    The default ε reuses :func:`default_run` (its first orbits: the run is converged at this tolerance).
+    """
+    from ...sim.spinning import simulate_rotor
+
+    p = dict(items)
+    w0 = default_rotor_orbit(p).mean_motion
+    if math.isclose(asymmetry, _asymmetry(p), rel_tol=0.0, abs_tol=1e-12) and orbits <= p["simulation_orbits"]:
+        return np.degrees(orbit_maxima(default_run(p), w0))[:orbits]
+    p = _with_asymmetry(p, asymmetry)
+    run = simulate_rotor(default_rotor_satellite(p), default_rotor_orbit(p), orbits * 2.0 * math.pi / w0,
+                         initial_angles=(p["initial_alpha"], p["initial_beta"], p["initial_gamma"]),
+                         sample_interval=p["sample_interval"], rtol=p["relative_tolerance"],
+                         atol=1e-2 * p["relative_tolerance"])
+    return np.degrees(orbit_maxima(run, w0))
+
+
+@functools.lru_cache(maxsize=8)
+def symmetric_normalised_maxima(items, orbits, steps_per_orbit=1000):
+    """Largest pointing error per orbit [deg] of the symmetric body (ε = 0) from the chapter's start,
+    by the five-state normalised model (``rotor_spin.md`` §4; RK4, no fast spin in it: 500 and 4000
+    steps per orbit give maxima equal to 1e-5°).
+
+    For I22 = I33 the SI model reduces exactly to it: the spin drops out of the transverse
+    dynamics. The SI start ω = ω0 C0 e2 + s_ref(0) e1 is h = c1 + a sin β0 (H = A ω1 + J_f ν),
+    Ω2 = cos β0, Ω3 = 0 (semi-body components of ω0 C0 e2); the pointing error is
+    arccos C11 = arccos(cos α cos β).
+    """
+    from ...sim.spinning import simulate_rotor_normalised
+
+    p = _with_asymmetry(dict(items), 0.0)
+    n = rotor_dimensionless(default_rotor_satellite(p), default_rotor_orbit(p))
+    alpha0, beta0 = p["initial_alpha"], p["initial_beta"]
+    x0 = [alpha0, beta0, n["momentum"] + n["axial_ratio"] * math.sin(beta0), math.cos(beta0), 0.0]
+    steps = int(steps_per_orbit)
+    run = simulate_rotor_normalised(n["axial_ratio"], n["momentum"], n["restoring"], n["damping"], n["inclination"],
+                                    x0, orbits, steps_per_orbit=steps)
+    alpha, beta = run.states[0], run.states[1]
+    error = np.degrees(np.arccos(np.clip(np.cos(alpha) * np.cos(beta), -1.0, 1.0)))
+    # orbit k holds the samples k·steps … (k + 1)·steps − 1, as orbit_maxima counts them
+    return np.array([error[k * steps:(k + 1) * steps].max() for k in range(orbits)])
+
+
+def _asymmetric_run(items, asymmetry, orbits):
+    return symmetric_normalised_maxima(items, orbits) if asymmetry == 0.0 else \
+        asymmetric_si_maxima(items, asymmetry, orbits)
+
+
+def asymmetry_members(default, largest):
+    """The ε of the sweep: symmetric, 0.4 of the default, the default and ``largest`` [-]."""
+    if not 0.0 <= largest < 1.0:
+        raise ValueError(f"largest_asymmetry must be in [0, 1) (I22 > 0), got {largest!r}")
+    return tuple(sorted({0.0, round(0.4 * default, 12), float(default), float(largest)}))
+
+
+def compute_asymmetry(largest_asymmetry, orbits):
+    """Largest pointing error per orbit against ε = (I33 − I22)/(I33 + I22), from the chapter's start."""
+    n = _whole_orbits(orbits)
+    p = chapter_parameters(CHAPTER.key)
+    items = tuple(sorted(p.items()))
+    eps = asymmetry_members(_asymmetry(p), float(largest_asymmetry))
+    maxima = np.array([_asymmetric_run(items, e, n) for e in eps])          # (members, orbits)
+    return FigureData("", "", "", {}, [Series(f"orbit {k + 1}", {"asymmetry": ("1", np.array(eps)),
+                                                                "pointing_error": ("deg", maxima[:, k])})
+                                       for k in range(n)],
+                      extra={"default_asymmetry": _asymmetry(p)})
+
+
+def plot_asymmetry(data):
+    """Per-orbit maxima from orbit 2 on against ε, orbit 1 (the start's error) as a line, the default ε
+    marked, with the slides' 10–15° band."""
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.4, 3.6))
+    ax.axhspan(10, 15, color="C1", alpha=0.25, label="slides: 10–15°")
+    first = data.series[0].columns
+    ax.plot(first["asymmetry"][1], first["pointing_error"][1], color="0.4", linestyle="--",
+            label="largest error in orbit 1 (the start's)")
+    for k, s in enumerate(data.series[1:]):
+        ax.plot(s.columns["asymmetry"][1], s.columns["pointing_error"][1], f"C{k % 10}o-",
+                label=f"largest error in {s.label}")
+    ax.axvline(data.extra["default_asymmetry"], color="k", linewidth=0.8, linestyle=":", label="our spacecraft")
+    ax.set_xlabel("transverse asymmetry (I33 − I22)/(I33 + I22) [-]")
+    ax.set_ylabel("pointing error [deg]")
+    ax.set_ylim(bottom=0.0)
+    ax.legend(loc="upper left")
+    ax.set_title("More asymmetry, slower convergence from the same start (parameters ours)")
+    return fig
+
+
+register(FigureSpec("rotor-asymmetry", "Pointing error against the transverse asymmetry (slow)",
+                    f"{SOURCE}, slide 'Simulation (asymmetric spacecraft)' (lost); the sweep is ours",
+                    compute_asymmetry, plot_asymmetry, _asymmetry_parameters))
