@@ -18,7 +18,7 @@ matplotlib.use("Agg")
 SLOW = {"ch04-montecarlo", "ch04-period-ratio", "ch04-tau-sensitivity", "ch04-broad-tilt",
         "thesis-fig03", "ch04-step-response", "rotor-simulation", "rotor-asymmetry", "tns0-capture", "samsat-fig2",
         "ch05-rate-decay", "ch05-duty-estimators", "ch05-detumble-distribution", "ch05-basilisk-peer",
-        "ch05-gain-sweep", "rotor-field-model", "rotor-products-of-inertia"}
+        "ch05-gain-sweep", "rotor-products-of-inertia"}
 MIN_FONT_PT = 7.0
 
 
