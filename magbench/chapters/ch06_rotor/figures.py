@@ -580,7 +580,8 @@ def plot_spin_relay(data):
     return fig
 
 
-register(FigureSpec("rotor-field-model", "Program field against the real one: a tilted dipole (beyond the slides)", f"ours, beyond the {SOURCE}; Kovalenko (1975) eq. (2.36) for the tilted dipole",
+register(FigureSpec("rotor-field-model", "Program field against the real one: a tilted dipole (beyond the slides)",
+                    f"ours, beyond the {SOURCE}; Kovalenko (1975) eq. (2.36) for the tilted dipole",
                     compute_field_model, plot_field_model, _field_model_parameters))
 register(FigureSpec("rotor-products-of-inertia", "Products of inertia: rate damping against momentum damping "
                     "(beyond the slides; slow)",
