@@ -625,7 +625,7 @@ def asymmetric_si_maxima(items, asymmetry, orbits):
     Not a fixed-step RK4 over the members at once: the asymmetric body's transient needs the spin
     resolved (measured on the 1 rpm variant of our spacecraft: 10, 20 and 40 RK4 steps per spin turn
     give orbit-2 maxima 18.5, 18.3 and 21.2° against DOP853's 21.4°), and at 30 rpm 40 steps per turn
-    are 113 000 steps per orbit at about 70 µs per vectorised numpy call: slower than DOP853 per member.
+    are 113 000 steps per orbit at 65–100 µs per vectorised numpy call: slower than DOP853 per member.
     """
     from ...sim.spinning import simulate_rotor
 
