@@ -32,6 +32,7 @@ from ..dynamics.gyrostat import _reduced, airplane_231_angles, airplane_231_matr
 from ..dynamics.rigid_body import _inertia_matrix
 from ..earth.circular_orbit import CircularOrbit
 from ..earth.dipole import dipole_equatorial_b
+from ..earth.orbit import orbital_dipole_b
 from .integrate import rk4_step
 from .result import SimulationResult
 
@@ -276,14 +277,17 @@ def _check_numbers(axial_ratio, momentum, inclination):
     return a, c1, i
 
 
-def _closed_loop(tau, x, a, c1, kappa, kappa_w, i):
+def _closed_loop(tau, x, a, c1, kappa, kappa_w, i, real=None):
     alpha, beta, h, w2, w3 = x
     bo = _program_field(np.asarray(tau, dtype=float), np.asarray(i), np.asarray(1.0))
+    # the real field (units of B0): the program field, or a tilted dipole (tilt, node phase)
+    br = bo if real is None else (orbital_dipole_b(tau, i, 1.0, 1.0, tilt=real[0], node_phase=real[1])
+                                  / dipole_equatorial_b(1.0, 1.0))
     ca, sa, cb, sb = np.cos(alpha), np.sin(alpha), np.cos(beta), np.sin(beta)
-    # b = R3(β) R2(α) b_o
-    x1 = ca * bo[..., 0] - sa * bo[..., 2]
-    b = np.stack(np.broadcast_arrays(cb * x1 + sb * bo[..., 1], -sb * x1 + cb * bo[..., 1],
-                                     sa * bo[..., 0] + ca * bo[..., 2]), axis=-1)
+    # b = R3(β) R2(α) b_real
+    x1 = ca * br[..., 0] - sa * br[..., 2]
+    b = np.stack(np.broadcast_arrays(cb * x1 + sb * br[..., 1], -sb * x1 + cb * br[..., 1],
+                                     sa * br[..., 0] + ca * br[..., 2]), axis=-1)
     w = np.stack(np.broadcast_arrays((h - c1 * np.cos(tau) ** 2) / a - sb, w2 - cb, w3), axis=-1)
     m = np.asarray(kappa)[..., None] * bo + _projected(b, w, kappa_w)
     m = m + np.stack(np.broadcast_arrays(0.0, c1 * np.cos(tau) / math.sin(i), 0.0), axis=-1)
@@ -494,13 +498,13 @@ def rotor_stability_map(restoring, damping, *, axial_ratio, momentum, inclinatio
     return np.abs(rho[..., 0])
 
 
-def _normalised_flow(a, c1, kappa, kappa_w, i, steps, orbits=1, record=False):
+def _normalised_flow(a, c1, kappa, kappa_w, i, steps, orbits=1, record=False, real=None):
     h = 2.0 * math.pi / steps
 
     def flow(x):
         out = [x] if record else None
         for n in range(steps * orbits):
-            x = rk4_step(_closed_loop, n * h, x, h, args=(a, c1, kappa, kappa_w, i))
+            x = rk4_step(_closed_loop, n * h, x, h, args=(a, c1, kappa, kappa_w, i, real))
             if record:
                 out.append(x)
         return np.stack(out, axis=1) if record else x
@@ -550,7 +554,7 @@ def rotor_finite_difference_monodromy(axial_ratio, momentum, restoring, damping,
 
 
 def simulate_rotor_normalised(axial_ratio, momentum, restoring, damping, inclination, initial_state, orbits, *,
-                              steps_per_orbit=1000):
+                              steps_per_orbit=1000, real_dipole_tilt=0.0, real_node_phase=0.0):
     r"""Simulate the dimensionless closed loop for many members at once (RK4).
 
     Parameters
@@ -571,6 +575,13 @@ def simulate_rotor_normalised(axial_ratio, momentum, restoring, damping, inclina
         Number of orbits [-].
     steps_per_orbit : int, optional
         RK4 steps per orbit, also the samples [-].
+    real_dipole_tilt : float, optional
+        δ of the real dipole, in [0, π] [rad]; 0 (default): the real field is the program field.
+        Otherwise the torque and the damping see the tilted dipole of
+        :func:`magbench.earth.orbital_dipole_b` (Kovalenko (1975) eq. (2.36)) while the restoring
+        term keeps the direct dipole (a program-vs-real field mismatch, ``rotor_spin.md`` §9).
+    real_node_phase : float, optional
+        Λ of that dipole, constant (non-rotating Earth) [rad].
 
     Returns
     -------
@@ -591,12 +602,15 @@ def simulate_rotor_normalised(axial_ratio, momentum, restoring, damping, inclina
         raise ValueError(f"initial_state must have shape (5,) or (5, M), got shape {x0.shape}")
     n_orbits = int(as_positive_scalar("orbits", orbits))
     steps = int(as_positive_scalar("steps_per_orbit", steps_per_orbit))
-    states = _normalised_flow(a, c1, kappa, kappa_w, i, steps, n_orbits, record=True)(x0)
+    tilt = float(as_in_range("real_dipole_tilt", real_dipole_tilt, 0.0, math.pi, unit="rad"))
+    real = None if tilt == 0.0 else (tilt, float(as_finite("real_node_phase", real_node_phase)))
+    states = _normalised_flow(a, c1, kappa, kappa_w, i, steps, n_orbits, record=True, real=real)(x0)
     time = np.arange(steps * n_orbits + 1) * (2.0 * math.pi / steps)
     return SimulationResult(time, states, np.empty((0, time.size)), np.empty((0, time.size)),
                             ("alpha", "beta", "h", "rate_2", "rate_3"), (), (),
                             params={"axial_ratio": a, "momentum": c1, "restoring": kappa, "damping": kappa_w,
-                                    "inclination": i})
+                                    "inclination": i, "real_dipole_tilt": tilt,
+                                    "real_node_phase": float(real_node_phase)})
 
 
 def _body_model(satellite, orbit, damping):

@@ -226,3 +226,23 @@ def test_dimensionless_round_trip():
 def test_bad_input_names_the_parameter(call, name):
     with pytest.raises(ValueError, match=name):
         call()
+
+
+def test_normalised_run_rejects_a_real_dipole_tilt_out_of_range():
+    from magbench.sim import simulate_rotor_normalised
+
+    with pytest.raises(ValueError, match="real_dipole_tilt"):
+        simulate_rotor_normalised(1.0, 1.0, 4.0, 2.0, 0.9, [0.0, 0.0, 1.0, 1.0, 0.0], 1, steps_per_orbit=10,
+                                  real_dipole_tilt=-0.1)
+
+
+def test_normalised_run_with_the_dipole_untilted_is_the_program_field_run():
+    # tilt 0 must be the direct dipole itself, not a different branch's field (exact: the
+    # tilted dipole formula (Kovalenko 2.36) at δ = 0 is the direct dipole to rounding)
+    from magbench.sim import simulate_rotor_normalised
+
+    x0 = [0.2, -0.1, 1.0, 1.0, 0.0]
+    a = simulate_rotor_normalised(0.8, 1.0, 4.0, 2.0, 0.9, x0, 1, steps_per_orbit=200).states
+    b = simulate_rotor_normalised(0.8, 1.0, 4.0, 2.0, 0.9, x0, 1, steps_per_orbit=200, real_dipole_tilt=1e-300,
+                                  real_node_phase=0.7).states
+    np.testing.assert_allclose(b, a, rtol=0, atol=1e-12)

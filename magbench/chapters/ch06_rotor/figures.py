@@ -381,7 +381,7 @@ def _field_model_parameters():
     return {
         "real_tilt": FigureParameter(_thesis_tilt(), "rad", "tilt of the real dipole (the thesis's printed 11.5°)"),
         "small_tilt": FigureParameter(1.0 * DEG, "rad", "a small tilt for the error per degree (ours)"),
-        "orbits": FigureParameter(2.0, "1", "orbits simulated per run (slow: about 4 s per orbit)"),
+        "orbits": FigureParameter(2.0, "1", "orbits simulated per run (normalised model, RK4 at 1000 steps per orbit)"),
     }
 
 
@@ -399,31 +399,58 @@ def _whole_orbits(orbits):
 
 
 @functools.lru_cache(maxsize=8)
-def _tilted_run(items, tilt, orbits):
+def tilted_si_run(items, tilt, orbits):
     """The default spacecraft made symmetric (I22 = I33 = B, so that the reference is an exact solution)
-    from the reference under a real dipole tilted by ``tilt`` (cached: the figure, its style check and the
-    chapter's tests share the runs)."""
+    from the reference under a real dipole tilted by ``tilt``: the SI model (DOP853 at the chapter's
+    tolerance; the tests' check of :func:`tilted_normalised_run`)."""
     from ...sim.spinning import simulate_rotor
 
-    p = dict(items)
-    b = 0.5 * (p["transverse_inertia_2"] + p["transverse_inertia_3"])
-    p.update(transverse_inertia_2=b, transverse_inertia_3=b)
+    p = _with_asymmetry(dict(items), 0.0)
     orbit = default_rotor_orbit({**p, "dipole_tilt": tilt})
     return simulate_rotor(default_rotor_satellite(p), orbit, orbits * 2.0 * math.pi / orbit.mean_motion,
                           sample_interval=p["sample_interval"], rtol=p["relative_tolerance"],
                           atol=1e-2 * p["relative_tolerance"])
 
 
+@functools.lru_cache(maxsize=8)
+def tilted_normalised_run(items, tilt, orbits, steps_per_orbit=1000):
+    """As :func:`tilted_si_run` by the five-state normalised model (``rotor_spin.md`` §4; RK4): exact for
+    the symmetric body, whose spin drops out. Returns τ/2π [orbits] and the pointing error
+    arccos(cos α cos β) [deg] (cached: the figure, its style check and the chapter's tests share the runs)."""
+    from ...sim.spinning import simulate_rotor_normalised
+
+    p = _with_asymmetry(dict(items), 0.0)
+    orbit = default_rotor_orbit(p)
+    n = rotor_dimensionless(default_rotor_satellite(p), orbit)
+    # Kovalenko's Λ of the SI model's real field with a non-rotating Earth (sim.spinning._body_model)
+    phase = orbit.ascending_node - orbit.dipole_longitude - 0.5 * math.pi
+    run = simulate_rotor_normalised(n["axial_ratio"], n["momentum"], n["restoring"], n["damping"], n["inclination"],
+                                    [0.0, 0.0, n["momentum"], 1.0, 0.0], orbits, steps_per_orbit=steps_per_orbit,
+                                    real_dipole_tilt=tilt, real_node_phase=phase)
+    error = np.degrees(np.arccos(np.clip(np.cos(run.states[0]) * np.cos(run.states[1]), -1.0, 1.0)))
+    return run.time / (2.0 * math.pi), error
+
+
+def _maxima_per_orbit(time_orbits, values, orbits):
+    """Largest value in each whole orbit k ≤ t < k + 1 (as :func:`orbit_maxima` counts them)."""
+    index = np.floor(time_orbits * (1.0 + 1e-12)).astype(int)
+    return np.array([values[index == k].max() for k in range(orbits)])
+
+
 def compute_field_model(real_tilt, small_tilt, orbits):
     """Program field = the direct dipole, real field = a tilted dipole: our spacecraft made symmetric
     (I22 = I33 = B; for the asymmetric one the reference is not an exact solution) and started on the
-    reference, so every pointing error is the mismatch's."""
+    reference, so every pointing error is the mismatch's. The normalised model (exact for this body;
+    the tests check it against the SI run)."""
     n = _whole_orbits(orbits)
     p = chapter_parameters(CHAPTER.key)
-    w0 = default_rotor_orbit(p).mean_motion
-    series = [_pointing_series(f"real dipole tilted {math.degrees(tilt):.1f}°",
-                               _tilted_run(tuple(sorted(p.items())), float(tilt), n), w0)
-              for tilt in (small_tilt, real_tilt)]
+    items = tuple(sorted(p.items()))
+    series = []
+    for tilt in (small_tilt, real_tilt):
+        t, error = tilted_normalised_run(items, float(tilt), n)
+        series.append(Series(f"real dipole tilted {math.degrees(tilt):.1f}°", {
+            "time": ("orbit", t), "pointing_error": ("deg", error),
+            "orbit_maxima": ("deg", _maxima_per_orbit(t, error, n))}))
     small_last = float(series[0].columns["orbit_maxima"][1][-1])
     return FigureData("", "", "", {}, series,
                       extra={"per_degree": small_last / math.degrees(small_tilt) if small_tilt else math.nan})
@@ -461,7 +488,7 @@ def inertia_with_products(params, product):
 @functools.lru_cache(maxsize=8)
 def _inertia_run(items, product, orbits, damping):
     """The default spacecraft with products of inertia from (α0, β0) with the momentum the reference
-    needs (cached like :func:`_tilted_run`); returns the run and the start's rate offset [rad/s]."""
+    needs (cached like :func:`tilted_normalised_run`); returns the run and the start's rate offset [rad/s]."""
     from dataclasses import replace
 
     from ...dynamics.gyrostat import airplane_231_matrix
@@ -553,8 +580,8 @@ def plot_spin_relay(data):
     return fig
 
 
-register(FigureSpec("rotor-field-model", "Program field against the real one: a tilted dipole (beyond the slides; "
-                    "slow)", f"ours, beyond the {SOURCE}; Kovalenko (1975) eq. (2.36) for the tilted dipole",
+register(FigureSpec("rotor-field-model", "Program field against the real one: a tilted dipole (beyond the slides)",
+                    f"ours, beyond the {SOURCE}; Kovalenko (1975) eq. (2.36) for the tilted dipole",
                     compute_field_model, plot_field_model, _field_model_parameters))
 register(FigureSpec("rotor-products-of-inertia", "Products of inertia: rate damping against momentum damping "
                     "(beyond the slides; slow)",
@@ -563,3 +590,130 @@ register(FigureSpec("rotor-products-of-inertia", "Products of inertia: rate damp
 register(FigureSpec("kovalenko-spin-relay", "Kovalenko's relay spin law over a turn of the field",
                     "Kovalenko (1975) §7.3, eqs. (7.12), (7.26)", compute_spin_relay, plot_spin_relay,
                     _relay_parameters))
+
+
+# --- pointing error against the transverse asymmetry (rotor_spin.md §8, §14) -------------------
+
+def _asymmetry(params):
+    """ε = (I33 − I22)/(I33 + I22) of a parameter set [-]."""
+    i2, i3 = params["transverse_inertia_2"], params["transverse_inertia_3"]
+    return (i3 - i2) / (i3 + i2)
+
+
+def _asymmetry_parameters():
+    return {
+        "largest_asymmetry": FigureParameter(0.35, "1", "largest ε = (I33 − I22)/(I33 + I22) of the sweep (ours, "
+                                                        "beyond the default 0.25)"),
+        "orbits": FigureParameter(2.0, "1", "orbits per run (slow: about 4 s per orbit and asymmetric body)"),
+    }
+
+
+def _with_asymmetry(params, asymmetry):
+    """The parameters with I22 = B(1 − ε), I33 = B(1 + ε), B = (I22 + I33)/2 and everything else held."""
+    p = dict(params)
+    b = 0.5 * (p["transverse_inertia_2"] + p["transverse_inertia_3"])
+    p.update(transverse_inertia_2=b * (1.0 - asymmetry), transverse_inertia_3=b * (1.0 + asymmetry))
+    return p
+
+
+@functools.lru_cache(maxsize=8)
+def asymmetric_si_maxima(items, asymmetry, orbits):
+    """Largest pointing error per orbit [deg] of the SI model (DOP853 at the chapter's tolerance) from
+    the chapter's start (α0, β0, γ0), transverse asymmetry ε; ``items`` = sorted chapter parameters.
+
+    The default ε reuses :func:`default_run` (its first orbits: the run is converged at this tolerance).
+    Not a fixed-step RK4 over the members at once: the asymmetric body's transient needs the spin
+    resolved (measured on the 1 rpm variant of our spacecraft: 10, 20 and 40 RK4 steps per spin turn
+    give orbit-2 maxima 18.5, 18.3 and 21.2° against DOP853's 21.4°), and at 30 rpm 40 steps per turn
+    are 113 000 steps per orbit at 65–100 µs per vectorised numpy call: slower than DOP853 per member.
+    """
+    from ...sim.spinning import simulate_rotor
+
+    p = dict(items)
+    w0 = default_rotor_orbit(p).mean_motion
+    if math.isclose(asymmetry, _asymmetry(p), rel_tol=0.0, abs_tol=1e-12) and orbits <= p["simulation_orbits"]:
+        return np.degrees(orbit_maxima(default_run(p), w0))[:orbits]
+    p = _with_asymmetry(p, asymmetry)
+    run = simulate_rotor(default_rotor_satellite(p), default_rotor_orbit(p), orbits * 2.0 * math.pi / w0,
+                         initial_angles=(p["initial_alpha"], p["initial_beta"], p["initial_gamma"]),
+                         sample_interval=p["sample_interval"], rtol=p["relative_tolerance"],
+                         atol=1e-2 * p["relative_tolerance"])
+    return np.degrees(orbit_maxima(run, w0))
+
+
+@functools.lru_cache(maxsize=8)
+def symmetric_normalised_maxima(items, orbits, steps_per_orbit=1000):
+    """Largest pointing error per orbit [deg] of the symmetric body (ε = 0) from the chapter's start,
+    by the five-state normalised model (``rotor_spin.md`` §4; RK4, no fast spin in it: 500 and 4000
+    steps per orbit give maxima equal to 1e-5°).
+
+    For I22 = I33 the SI model reduces exactly to it: the spin drops out of the transverse
+    dynamics. The SI start ω = ω0 C0 e2 + s_ref(0) e1 is h = c1 + a sin β0 (H = A ω1 + J_f ν),
+    Ω2 = cos β0, Ω3 = 0 (semi-body components of ω0 C0 e2); the pointing error is
+    arccos C11 = arccos(cos α cos β).
+    """
+    from ...sim.spinning import simulate_rotor_normalised
+
+    p = _with_asymmetry(dict(items), 0.0)
+    n = rotor_dimensionless(default_rotor_satellite(p), default_rotor_orbit(p))
+    alpha0, beta0 = p["initial_alpha"], p["initial_beta"]
+    x0 = [alpha0, beta0, n["momentum"] + n["axial_ratio"] * math.sin(beta0), math.cos(beta0), 0.0]
+    steps = int(steps_per_orbit)
+    run = simulate_rotor_normalised(n["axial_ratio"], n["momentum"], n["restoring"], n["damping"], n["inclination"],
+                                    x0, orbits, steps_per_orbit=steps)
+    alpha, beta = run.states[0], run.states[1]
+    error = np.degrees(np.arccos(np.clip(np.cos(alpha) * np.cos(beta), -1.0, 1.0)))
+    # orbit k holds the samples k·steps … (k + 1)·steps − 1, as orbit_maxima counts them
+    return np.array([error[k * steps:(k + 1) * steps].max() for k in range(orbits)])
+
+
+def _asymmetric_run(items, asymmetry, orbits):
+    return symmetric_normalised_maxima(items, orbits) if asymmetry == 0.0 else \
+        asymmetric_si_maxima(items, asymmetry, orbits)
+
+
+def asymmetry_members(default, largest):
+    """The ε of the sweep: symmetric, 0.4 of the default, the default and ``largest`` [-]."""
+    if not 0.0 <= largest < 1.0:
+        raise ValueError(f"largest_asymmetry must be in [0, 1) (I22 > 0), got {largest!r}")
+    return tuple(sorted({0.0, round(0.4 * default, 12), float(default), float(largest)}))
+
+
+def compute_asymmetry(largest_asymmetry, orbits):
+    """Largest pointing error per orbit against ε = (I33 − I22)/(I33 + I22), from the chapter's start."""
+    n = _whole_orbits(orbits)
+    p = chapter_parameters(CHAPTER.key)
+    items = tuple(sorted(p.items()))
+    eps = asymmetry_members(_asymmetry(p), float(largest_asymmetry))
+    maxima = np.array([_asymmetric_run(items, e, n) for e in eps])          # (members, orbits)
+    return FigureData("", "", "", {}, [Series(f"orbit {k + 1}", {"asymmetry": ("1", np.array(eps)),
+                                                                "pointing_error": ("deg", maxima[:, k])})
+                                       for k in range(n)],
+                      extra={"default_asymmetry": _asymmetry(p)})
+
+
+def plot_asymmetry(data):
+    """Per-orbit maxima from orbit 2 on against ε, orbit 1 (the start's error) as a line, the default ε
+    marked, with the slides' 10–15° band."""
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.4, 3.6))
+    ax.axhspan(10, 15, color="C1", alpha=0.25, label="slides: 10–15°")
+    first = data.series[0].columns
+    ax.plot(first["asymmetry"][1], first["pointing_error"][1], color="0.4", linestyle="--",
+            label="largest error in orbit 1 (the start's)")
+    for k, s in enumerate(data.series[1:]):
+        ax.plot(s.columns["asymmetry"][1], s.columns["pointing_error"][1], f"C{k % 10}o-",
+                label=f"largest error in {s.label}")
+    ax.axvline(data.extra["default_asymmetry"], color="k", linewidth=0.8, linestyle=":", label="our spacecraft")
+    ax.set_xlabel("transverse asymmetry (I33 − I22)/(I33 + I22) [-]")
+    ax.set_ylabel("pointing error [deg]")
+    ax.set_ylim(bottom=0.0)
+    ax.legend(loc="upper left")
+    ax.set_title("More asymmetry, slower convergence from the same start (parameters ours)")
+    return fig
+
+
+register(FigureSpec("rotor-asymmetry", "Pointing error against the transverse asymmetry (slow)",
+                    f"{SOURCE}, slide 'Simulation (asymmetric spacecraft)' (lost); the sweep is ours",
+                    compute_asymmetry, plot_asymmetry, _asymmetry_parameters))
