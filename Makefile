@@ -12,7 +12,7 @@ export OMP_NUM_THREADS := 1
 export OPENBLAS_NUM_THREADS := 1
 export MPLBACKEND := Agg
 
-.PHONY: book test pytest book-check env lock bench clean checksums
+.PHONY: book book-unlocked test pytest book-check book-check-unlocked env lock bench clean checksums
 
 env: $(STAMP)
 
@@ -28,9 +28,28 @@ $(STAMP):
 	$(BIN)/python -c "import matplotlib.pyplot"   # build the font cache once, outside the book
 	touch $(STAMP)
 
+# Builds of one clone share _build: a second `make book` or `make book-check` started
+# while one runs waits for it (flock on _build/.lock) instead of clashing with it.
+LOCK   := _build/.lock
+define locked
+	@mkdir -p _build
+	@flock -n $(LOCK) true || echo "make: another book build is running in this clone; waiting for it ($(LOCK))"
+	@flock $(LOCK) $(MAKE) --no-print-directory $(1)
+endef
+
+# A parameter file that does not exist is named before anything is built.
+define check_params
+	@if [ -n "$(PARAMS)" ] && [ ! -f "$(PARAMS)" ]; then \
+	  echo "make: PARAMS=$(PARAMS): no such file (a TOML file of SI overrides, see README)"; exit 2; fi
+endef
+
 # The book, with the execution cache invalidated whenever the library, data, lock file
 # or parameter overrides change (jupyter-cache itself only looks at cell sources).
 book: $(STAMP)
+	$(check_params)
+	$(call locked,book-unlocked)
+
+book-unlocked:
 	rm -rf _build/html/reports   # a failed build's logs would otherwise outlive it
 	$(BIN)/python tools/fingerprint.py --cache _build/.jupyter_cache --doctrees _build/.doctrees --stamp _build/.fingerprint
 	$(JB) build . -W -n --keep-going
@@ -44,6 +63,10 @@ pytest: $(STAMP)
 	$(BIN)/python -m pytest
 
 book-check: $(STAMP)
+	$(check_params)
+	$(call locked,book-check-unlocked)
+
+book-check-unlocked:
 	rm -rf _build/test
 	$(JB) build . --path-output _build/test -W -n --keep-going
 	$(BIN)/python tools/check_book.py _build/test/_build/html
