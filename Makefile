@@ -11,6 +11,9 @@ export MAGBENCH_PARAMS := $(if $(PARAMS),$(abspath $(PARAMS)),)
 export OMP_NUM_THREADS := 1
 export OPENBLAS_NUM_THREADS := 1
 export MPLBACKEND := Agg
+# The footer's date is the last commit's (reproducible builds: two builds of one commit
+# give the same pages); set SOURCE_DATE_EPOCH yourself to stamp another.
+export SOURCE_DATE_EPOCH ?= $(shell git log -1 --format=%ct 2>/dev/null)
 
 .PHONY: book book-unlocked test pytest book-check book-check-unlocked env lock bench clean checksums
 
