@@ -15,7 +15,7 @@ export MPLBACKEND := Agg
 # give the same pages); set SOURCE_DATE_EPOCH yourself to stamp another.
 export SOURCE_DATE_EPOCH ?= $(shell git log -1 --format=%ct 2>/dev/null)
 
-.PHONY: book book-unlocked test pytest book-check book-check-unlocked env lock bench clean checksums
+.PHONY: book book-unlocked test pytest sweep book-check book-check-unlocked env lock bench clean checksums
 
 env: $(STAMP)
 
@@ -77,6 +77,11 @@ book-check-unlocked:
 	if [ $$status -eq 3 ]; then \
 	  echo "browser check SKIPPED: Chromium is not installed; install it with: apt-get install -y chromium"; \
 	elif [ $$status -ne 0 ]; then exit $$status; fi
+
+# Chapters 4-7 re-run with each input halved and doubled (about an hour on one core;
+# chapters 1-3 are swept by `make pytest`).
+sweep: $(STAMP)
+	$(BIN)/python -m pytest -m sweep tests/chapters/test_input_sweep.py
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run.py
