@@ -34,6 +34,7 @@ OUT_OF_DOMAIN = {
     ("ch03", "core_averaging_factor", 2.0): "an averaging factor (mean over peak magnetisation) is at most 1",
     ("ch04", "filter_coefficient_low", 2.0): "a complementary-filter coefficient lies in [0, 1]",
     ("ch04", "filter_coefficient_high", 2.0): "a complementary-filter coefficient lies in [0, 1]",
+    ("ch04", "bench_filter_coefficient", 2.0): "a complementary-filter coefficient lies in [0, 1]",
 }
 
 FAST = ("ch01", "ch02", "ch03")
