@@ -40,10 +40,12 @@ define locked
 	@flock $(LOCK) $(MAKE) --no-print-directory $(1)
 endef
 
-# A parameter file that does not exist is named before anything is built.
+# A parameter file that does not exist, or that names an unknown parameter, is refused
+# before anything is built (every page would otherwise fail on it).
 define check_params
 	@if [ -n "$(PARAMS)" ] && [ ! -f "$(PARAMS)" ]; then \
 	  echo "make: PARAMS=$(PARAMS): no such file (a TOML file of SI overrides, see README)"; exit 2; fi
+	@if [ -n "$(PARAMS)" ]; then $(BIN)/python tools/check_params.py "$(PARAMS)"; fi
 endef
 
 # The book, with the execution cache invalidated whenever the library, data, lock file
