@@ -11,8 +11,11 @@ export MAGBENCH_PARAMS := $(if $(PARAMS),$(abspath $(PARAMS)),)
 export OMP_NUM_THREADS := 1
 export OPENBLAS_NUM_THREADS := 1
 export MPLBACKEND := Agg
+# The footer's date is the last commit's (reproducible builds: two builds of one commit
+# give the same pages); set SOURCE_DATE_EPOCH yourself to stamp another.
+export SOURCE_DATE_EPOCH ?= $(shell git log -1 --format=%ct 2>/dev/null)
 
-.PHONY: book test pytest book-check env lock bench clean checksums
+.PHONY: book book-unlocked test pytest sweep book-check book-check-unlocked env lock bench clean checksums
 
 env: $(STAMP)
 
@@ -28,9 +31,30 @@ $(STAMP):
 	$(BIN)/python -c "import matplotlib.pyplot"   # build the font cache once, outside the book
 	touch $(STAMP)
 
+# Builds of one clone share _build: a second `make book` or `make book-check` started
+# while one runs waits for it (flock on _build/.lock) instead of clashing with it.
+LOCK   := _build/.lock
+define locked
+	@mkdir -p _build
+	@flock -n $(LOCK) true || echo "make: another book build is running in this clone; waiting for it ($(LOCK))"
+	@flock $(LOCK) $(MAKE) --no-print-directory $(1)
+endef
+
+# A parameter file that does not exist, or that names an unknown parameter, is refused
+# before anything is built (every page would otherwise fail on it).
+define check_params
+	@if [ -n "$(PARAMS)" ] && [ ! -f "$(PARAMS)" ]; then \
+	  echo "make: PARAMS=$(PARAMS): no such file (a TOML file of SI overrides, see README)"; exit 2; fi
+	@if [ -n "$(PARAMS)" ]; then $(BIN)/python tools/check_params.py "$(PARAMS)"; fi
+endef
+
 # The book, with the execution cache invalidated whenever the library, data, lock file
 # or parameter overrides change (jupyter-cache itself only looks at cell sources).
 book: $(STAMP)
+	$(check_params)
+	$(call locked,book-unlocked)
+
+book-unlocked:
 	rm -rf _build/html/reports   # a failed build's logs would otherwise outlive it
 	$(BIN)/python tools/fingerprint.py --cache _build/.jupyter_cache --doctrees _build/.doctrees --stamp _build/.fingerprint
 	$(JB) build . -W -n --keep-going
@@ -44,6 +68,10 @@ pytest: $(STAMP)
 	$(BIN)/python -m pytest
 
 book-check: $(STAMP)
+	$(check_params)
+	$(call locked,book-check-unlocked)
+
+book-check-unlocked:
 	rm -rf _build/test
 	$(JB) build . --path-output _build/test -W -n --keep-going
 	$(BIN)/python tools/check_book.py _build/test/_build/html
@@ -51,6 +79,11 @@ book-check: $(STAMP)
 	if [ $$status -eq 3 ]; then \
 	  echo "browser check SKIPPED: Chromium is not installed; install it with: apt-get install -y chromium"; \
 	elif [ $$status -ne 0 ]; then exit $$status; fi
+
+# Chapters 4-7 re-run with each input halved and doubled (about an hour on one core;
+# chapters 1-3 are swept by `make pytest`).
+sweep: $(STAMP)
+	$(BIN)/python -m pytest -m sweep tests/chapters/test_input_sweep.py
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run.py

@@ -58,8 +58,11 @@ def _cmd_figure(args):
 
             matplotlib.use("Agg")
             fig, data = figures.render(args.id, **overrides)
-            fig.savefig(args.out, dpi=150, metadata=_file_metadata(args.out, figures.caption_provenance(
-                args.id, data.parameters)))
+            # A fixed salt: SVG clip-path ids are hashes salted with a random UUID otherwise,
+            # so the same figure would give a different file at every run.
+            with matplotlib.rc_context({"svg.hashsalt": "magbench"}):
+                fig.savefig(args.out, dpi=150, metadata=_file_metadata(args.out, figures.caption_provenance(
+                    args.id, data.parameters)))
         else:
             data = figures.compute(args.id, **overrides)
     except (KeyError, ValueError) as exc:      # unknown parameter name, or a value out of range

@@ -1,5 +1,7 @@
 """Chapter parameters and whole-book overrides."""
 
+import os
+
 import numpy as np
 import pytest
 from numpy.testing import assert_allclose
@@ -67,3 +69,19 @@ def test_parameters_cells_name_exactly_the_chapters_inputs():
         for page, names in cells.items():
             assert names is None or names <= set(spec.inputs), (page, sorted(names - set(spec.inputs)))
         assert named == set(spec.inputs), (spec.key, sorted(set(spec.inputs) - named))
+
+
+def test_suite_ignores_the_callers_parameter_file(tmp_path):
+    # `make test PARAMS=…` (or a shell with $MAGBENCH_PARAMS set) must not change what the
+    # tests see: the doctest of chapter_parameters reads the defaults even then.
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[ch01]\nearth_radius = 1.0\n", encoding="utf-8")
+    env = dict(os.environ, MAGBENCH_PARAMS=str(bad))
+    run = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider",
+                          "magbench/chapters/_base.py"], cwd=root, env=env, capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout[-2000:]

@@ -184,3 +184,15 @@ def test_book_check_names_a_chapter_missing_from_the_generated_parts():
     assert problems == ["errata page has no table errata-ch03 for its chapter's errata",
                         "landing page's chapter table does not link ch02"]
     assert check(errata, "<p>no table</p>", [], ["ch01"]) == ["landing page has no chapters-table"]
+
+
+def test_params_file_is_checked_before_a_build(tmp_path, capsys):
+    check = _load("check_params")
+    good, typo = tmp_path / "good.toml", tmp_path / "typo.toml"
+    good.write_text("[ch01]\norbit_altitude = 5e5\n")
+    typo.write_text("[ch01]\norbit_altitud = 5e5\n")
+    assert check.main([str(good)]) == 0
+    assert check.main([str(typo)]) == 2
+    err = capsys.readouterr().err
+    assert "orbit_altitud" in err and "orbit_altitude" in err and len(err.strip().splitlines()) == 1
+    assert check.main([str(tmp_path / "missing.toml")]) == 2

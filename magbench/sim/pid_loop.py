@@ -179,7 +179,11 @@ def simulate_pid(loop, initial_angle, initial_rate, duration, *, sample_interval
         while the plant is integrated (RK4, 4 sub-steps). Default: the continuous loop,
         :func:`pid_continuous_rhs` with solve_ivp (RK45, rtol 1e-9).
     output_interval : float, optional
-        Spacing of the returned samples [s], > 0 (rounded to whole controller samples).
+        Spacing of the returned samples [s], > 0: the run is returned at
+        ``round(duration / output_interval) + 1`` equally spaced instants from 0 to
+        ``duration``, the same grid in both modes whatever the sample interval (between
+        controller samples the sampled loop's state is integrated to the instant, with
+        the held command).
     method : str, optional
         solve_ivp method for the continuous loop [-]; "LSODA" or "Radau" for stiff loops
         (gains so large that the real pole lies far beyond the oscillation).
@@ -210,8 +214,9 @@ def simulate_pid(loop, initial_angle, initial_rate, duration, *, sample_interval
     initial_rate = float(as_finite("initial_rate", initial_rate))
     duration = float(as_positive("duration", duration, unit="s"))
     out = float(as_positive("output_interval", output_interval, unit="s"))
+    t_out = np.linspace(0.0, duration, max(1, int(round(duration / out))) + 1)
     if sample_interval is None:
-        t = np.linspace(0.0, duration, int(round(duration / out)) + 1)
+        t = t_out
         sol = solve_ivp(pid_continuous_rhs, (0.0, duration), [initial_angle, initial_rate, 0.0],
                         args=(loop,), t_eval=t, rtol=1e-9, atol=1e-12, max_step=min(out, 1.0), method=method)
         if not sol.success:
@@ -221,25 +226,31 @@ def simulate_pid(loop, initial_angle, initial_rate, duration, *, sample_interval
         command = np.clip(raw, -loop.moment_limit, loop.moment_limit)
     else:
         dt = float(as_positive("sample_interval", sample_interval, unit="s"))
-        n = int(round(duration / dt))
-        every = max(1, int(round(out / dt)))
         x = np.array([initial_angle, initial_rate])
         integral_k, h, plant = 0.0, dt / 4, loop.plant
-        rows = []
-        for k in range(n + 1):
+        rows, j, k = [], 0, 0
+        # An output instant within 1e-9 of a sample interval of the next sample belongs
+        # to that sample (floating-point multiples such as 12.5·0.04 s ≠ 0.5 s).
+        slack = 1e-9 * dt
+        while j < t_out.size:
+            t_k = k * dt
             u, new_integral = pid_step(loop.target - x[0], -x[1], integral_k, dt, loop.kp, loop.ki,
                                        loop.kd, loop.moment_limit if loop.anti_windup or
                                        not np.isfinite(loop.moment_limit) else np.inf)
             if not loop.anti_windup:
                 u = np.clip(u, -loop.moment_limit, loop.moment_limit)
-            if k % every == 0:
-                rows.append((k * dt, x[0], x[1], integral_k, float(u)))
-            if k == n:
-                break
-
+            args = (u, loop.allocation, plant)
+            while j < t_out.size and t_out[j] < t_k + dt - slack:
+                x_out, part = x, t_out[j] - t_k
+                if part > slack:    # between two samples: the plant integrated to the instant
+                    for i in range(4):
+                        x_out = rk4_step(_held_command_rhs, t_k + i * part / 4, x_out, part / 4, args=args)
+                rows.append((t_out[j], x_out[0], x_out[1], integral_k, float(u)))
+                j += 1
             for i in range(4):      # RK4 on the plant with the command held
-                x = rk4_step(_held_command_rhs, k * dt + i * h, x, h, args=(u, loop.allocation, plant))
+                x = rk4_step(_held_command_rhs, t_k + i * h, x, h, args=args)
             integral_k = float(new_integral)
+            k += 1
         t, psi, omega, integral, command = (np.array(c) for c in zip(*rows))
     return SimulationResult(t, np.array([psi, omega, integral]), command[np.newaxis],
                             loop_torque(psi, command, loop)[np.newaxis], ("psi", "rate", "integral"),

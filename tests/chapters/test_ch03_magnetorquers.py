@@ -278,8 +278,14 @@ def test_fig09_to_scale_and_bad_parameters():
     assert_allclose(data.extra["width"], 240 * 0.226e-3, **EXACT)
     with pytest.raises(ValueError, match="coils must be 2 or 3"):
         figures.compute("thesis-fig09", coils=4)
-    with pytest.raises(ValueError, match="more than the side"):
-        figures.compute("thesis-fig09", mtq_turns=1000)
+    assert data.extra["layers"] == 1
+    # 1000 turns at 0.226 mm need 226 mm, more than the 100 mm side: floor(100/0.226) = 442
+    # turns per layer, so ceil(1000/442) = 3 layers of ceil(1000/3) = 334 turns
+    more = figures.compute("thesis-fig09", mtq_turns=1000)
+    assert more.extra["layers"] == 3
+    assert_allclose(more.extra["width"], 334 * 0.226e-3, **EXACT)
+    with pytest.raises(ValueError, match="not one turn fits"):
+        figures.compute("thesis-fig09", wire_pitch=0.2)
 
 
 def test_actuator_figure_agrees_with_the_library():

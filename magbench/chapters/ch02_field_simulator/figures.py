@@ -456,7 +456,9 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
     ``allowed`` (low, high), a second observable the hypothesis predicts and the range
     the thesis's measurements allow for it (NaN/None when there is none); and
     ``excluded``: True when the prediction misses the measurement by more than
-    ``tolerance_h`` or the constraint falls outside its allowed range.
+    ``tolerance_h``, the constraint falls outside its allowed range, or no value of the
+    free parameter reproduces the measurement (``needed`` NaN: a field above the largest
+    any coil radius gives, a probe offset or tilt that would have to raise the reading).
     """
     a, d, n, i = coil_radius, built_spacing, turns, current
     h_model = float(fields.helmholtz_center_h(i, n, a, d))
@@ -469,6 +471,7 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
     def row(id_, text, predicted=np.nan, needed=np.nan, unit="", constraint=np.nan, c_unit="",
             allowed=None):
         excluded = bool(np.isfinite(predicted) and abs(predicted - measured_center_h) > tolerance_h)
+        excluded |= bool(unit) and not np.isfinite(needed)     # solved for, and no value fits
         if allowed is not None and np.isfinite(constraint):
             excluded |= not allowed[0] <= constraint <= allowed[1]
         return {"id": id_, "hypothesis": text, "predicted_h": float(predicted), "needed": float(needed),
@@ -477,7 +480,12 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
 
     r_turn = resistance(a, 1.0)
     n_eff = n * frac
-    a_eff = fields.pair_radius_for_center_h(measured_center_h, n * i, d)
+    # Above the peak field 4NI/(3√3 d) no radius gives the measurement; the probe's
+    # offset and tilt are solved for a reading below the model's only (a tilt cannot
+    # raise it): when the measurement is not below, those hypotheses are excluded.
+    h_peak = 4.0 * n * i / (3.0 * np.sqrt(3.0) * d)
+    a_eff = fields.pair_radius_for_center_h(measured_center_h, n * i, d) if measured_center_h <= h_peak else np.nan
+    reading_lower = 0.0 < frac < 1.0
     reversed_h = float(np.linalg.norm(fields.coaxial_system_b(
         np.zeros(3), ["round"] * 2, [a, a], [-d / 2, d / 2], [n * i, -n * i]))) / MU_0
     return [
@@ -488,18 +496,19 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
             predicted=float(fields.helmholtz_center_h(i, r_lo / r_turn, a, d)), needed=r_lo / r_turn,
             unit="turns"),
         row("lower-current", "a lower current than the stated one", needed=i * frac, unit="A"),
-        row("larger-radius", "larger coils", needed=a_eff, unit="m", constraint=resistance(a_eff, n),
-            c_unit="ohm", allowed=(r_lo, r_hi)),
+        row("larger-radius", "larger coils", needed=a_eff, unit="m",
+            constraint=resistance(a_eff, n) if np.isfinite(a_eff) else np.nan, c_unit="ohm", allowed=(r_lo, r_hi)),
         row("one-coil-off", "one coil unpowered", predicted=h_model / 2),
         row("one-coil-reversed", "one coil reversed", predicted=reversed_h),
         row("earth-field", "the Earth's field against the coils' (at most)", predicted=h_model - earth_h),
-        row("probe-axial", "probe displaced along the axis", needed=fields.pair_distance_to_h(frac, a, d, "axial"),
+        row("probe-axial", "probe displaced along the axis",
+            needed=fields.pair_distance_to_h(frac, a, d, "axial") if reading_lower else np.nan,
             unit="m", constraint=d / 2, c_unit="m (coil plane)"),
         row("probe-transverse", "probe displaced across the axis",
-            needed=fields.pair_distance_to_h(frac, a, d, "transverse"), unit="m", constraint=a,
-            c_unit="m (coil radius)"),
-        row("probe-tilt", "single-axis probe tilted from the coil axis", needed=float(np.degrees(np.arccos(frac))),
-            unit="deg"),
+            needed=fields.pair_distance_to_h(frac, a, d, "transverse") if reading_lower else np.nan, unit="m",
+            constraint=a, c_unit="m (coil radius)"),
+        row("probe-tilt", "single-axis probe tilted from the coil axis",
+            needed=float(np.degrees(np.arccos(frac))) if reading_lower else np.nan, unit="deg"),
     ]
 
 

@@ -43,7 +43,9 @@ def compute_fig09(mtq_side, mtq_turns, wire_pitch, coils):
 
     Each coil is a square winding of side ``mtq_side`` around one body axis (x, y, then z),
     a single layer of ``mtq_turns`` turns at ``wire_pitch`` centred on the cube: the
-    thesis's assumption of a dense single-layer winding (thesis §3.2).
+    thesis's assumption of a dense single-layer winding (thesis §3.2). Turns that do not
+    fit in one layer across the side are wound in as many layers as they need (ours);
+    ``extra["layers"]`` says how many, and the drawing's title names them.
     """
     n_coils = int(coils)
     if n_coils not in (2, 3) or n_coils != coils:
@@ -52,10 +54,12 @@ def compute_fig09(mtq_side, mtq_turns, wire_pitch, coils):
         raise ValueError(f"mtq_side, mtq_turns and wire_pitch must be positive, got "
                          f"{mtq_side!r}, {mtq_turns!r}, {wire_pitch!r}")
     h = mtq_side / 2.0
-    width = mtq_turns * wire_pitch
-    if width > mtq_side:
-        raise ValueError(f"a single layer of {mtq_turns:g} turns at {wire_pitch * 1e3:g} mm is "
-                         f"{width * 1e3:.1f} mm long, more than the side {mtq_side * 1e3:g} mm")
+    per_layer = math.floor(mtq_side / wire_pitch)
+    if per_layer < 1:
+        raise ValueError(f"wire_pitch {wire_pitch!r} m is wider than the side mtq_side {mtq_side!r} m: "
+                         "not one turn fits")
+    layers = math.ceil(mtq_turns / per_layer)
+    width = math.ceil(mtq_turns / layers) * wire_pitch
     corners = np.array([[-h, -h], [h, -h], [h, h], [-h, h], [-h, -h]])
     series = []
     # cube edges as one polyline per face pair
@@ -71,7 +75,7 @@ def compute_fig09(mtq_side, mtq_turns, wire_pitch, coils):
             series.append(Series(f"coil {'xyz'[axis]} edge {offset * 1e3:+.1f} mm", {
                 "x": ("m", pts[:, 0]), "y": ("m", pts[:, 1]), "z": ("m", pts[:, 2])}))
     return FigureData("thesis-fig09", "", "", {}, series,
-                      extra={"side": mtq_side, "width": width, "coils": n_coils})
+                      extra={"side": mtq_side, "width": width, "coils": n_coils, "layers": layers})
 
 
 def plot_fig09(data):
@@ -114,7 +118,9 @@ def plot_fig09(data):
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
     ax.set_zlabel("z [m]")
-    ax.set_title(f"1U mock-up with {n} orthogonal coils (single-layer bands {w * 1e3:.0f} mm wide)",
+    layers = data.extra.get("layers", 1)
+    kind = "single-layer" if layers == 1 else f"{layers}-layer"
+    ax.set_title(f"1U mock-up with {n} orthogonal coils ({kind} bands {w * 1e3:.0f} mm wide)",
                  fontsize=8.5)
     return fig
 

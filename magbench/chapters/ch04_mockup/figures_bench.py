@@ -50,17 +50,32 @@ def _setup(p):
     return bench.BenchSetup.from_parameters(p)
 
 
+#: The targets of the thesis's bench runs (Figs. 19 and 20) [rad]: the book draws one
+#: figure for each, and a log is drawn on the figure of its target.
+BENCH_TARGETS = (np.pi / 3, 2 * np.pi / 3)
+#: How close a log's stated psi_des must be to a figure's target to be drawn on it [rad].
+TARGET_MATCH = 1e-6
+
+
+def _same_target(a, b):
+    return abs(wrap_angle(a - b)) <= TARGET_MATCH
+
+
 def _logs_for(psi_des, alpha):
-    """Series of the bench logs in magbench/data/bench whose target is psi_des (or unstated)."""
-    series = []
+    """Series of the bench logs in magbench/data/bench whose target is psi_des (or
+    unstated), and ``(file name, psi_des)`` of the logs whose target is none of the
+    book's (:data:`BENCH_TARGETS`): they appear on no figure, so the figure says so."""
+    series, elsewhere = [], []
     for log in benchlog.load_bench_logs():
         target = log.psi_des
-        if target is not None and abs(wrap_angle(target - psi_des)) > 1e-6:
+        if target is not None and not _same_target(target, psi_des):
+            if not any(_same_target(target, t) for t in BENCH_TARGETS):
+                elsewhere.append((log.path.name, float(target)))
             continue
         series.append(Series(f"bench log {log.path.name}", {
             "time": ("s", log.time),
             "psi_filtered": ("deg", np.degrees(benchlog.log_filtered_angle(log, alpha)))}))
-    return series
+    return series, elsewhere
 
 
 def compute_trace(psi_des, release_angle, release_rate, envelope_members, **p):
@@ -96,11 +111,12 @@ def compute_trace(psi_des, release_angle, release_rate, envelope_members, **p):
         Series(f"Monte Carlo, {n_env} members, 5-95 %", {
             "time": ("s", mc.time), "psi_low": ("deg", lo), "psi_high": ("deg", hi)}),
     ]
-    logs = _logs_for(psi_des, p["bench_filter_coefficient"])
+    logs, unplotted = _logs_for(psi_des, p["bench_filter_coefficient"])
     error = measurement("orientation-error")
     return FigureData("", "", "", {}, series + logs, extra={
         "psi_des": psi_des, "measured_error": error.value, "error_band": float(run.error_band[0]),
         "indicated_error_band": float(run.indicated_error_band[0]), "n_logs": len(logs),
+        "unplotted_logs": unplotted,
         "window": p["bench_error_window"], "mc_error_band": mc.error_band})
 
 
@@ -126,7 +142,12 @@ def plot_trace(data):
     for s in data.series[2:]:
         cols = {k: v for k, (u, v) in s.columns.items()}
         a1.plot(cols["time"], cols["psi_filtered"], color="k", linewidth=1.0, label=s.label)
-    if not e["n_logs"]:
+    unplotted = e.get("unplotted_logs", [])
+    if unplotted:
+        names = ", ".join(f"{name} (ψ_des = {np.degrees(t):.1f}°)" for name, t in unplotted)
+        a1.text(0.99, 0.03, f"on no figure (target neither 60° nor 120°): {names}",
+                transform=a1.transAxes, ha="right", va="bottom", fontsize=7, color="C3", wrap=True)
+    elif not e["n_logs"]:
         a1.text(0.99, 0.03, "no bench log in magbench/data/bench/: the thesis's traces are unpublished",
                 transform=a1.transAxes, ha="right", va="bottom", fontsize=8, color="0.3")
     a1.set_ylabel("ψ, angle from field to coil 1 [°]", fontsize=8)

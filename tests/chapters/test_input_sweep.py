@@ -1,0 +1,66 @@
+"""Every chapter re-run with each of its inputs halved and doubled (its comparison rows
+and the computation and drawing of its figures; see ``input_sweep``).
+
+A physically plausible input (a doubled coil current, a 24 V supply, a 5 cm coil, a
+0.04 s controller) must give a chapter that says what follows ("no design fits", "this
+hypothesis is excluded"), not a traceback. A value outside the quantity's domain (a
+latitude of 120°, the year 4032, a filter coefficient above 1) must be refused with a
+``ValueError`` that says which range it left: those cases are listed in
+:data:`OUT_OF_DOMAIN` with the reason, and nothing else may raise.
+
+Chapters 1–3 run in the default suite (about half a minute). Chapters 4–7 re-run long
+simulations (bench Monte Carlo, detumbling studies, rotor and TNS-0 runs: about an hour
+for the whole sweep on one core), so they carry the ``sweep`` marker, which the default
+suite deselects; ``make sweep`` runs them.
+"""
+
+import pytest
+
+from magbench import chapters
+
+from tests.chapters.input_sweep import run_scaled
+
+FACTORS = (0.5, 2.0)
+
+#: (chapter, input, factor): why the scaled value is outside the quantity's domain.
+OUT_OF_DOMAIN = {
+    ("ch01", "geomagnetic_pole_latitude", 2.0): "157° is not a latitude",
+    ("ch01", "laboratory_latitude", 2.0): "120° is not a latitude",
+    ("ch01", "thesis_epoch", 0.5): "the year 1008 is outside IGRF-14 (1900–2030)",
+    ("ch01", "thesis_epoch", 2.0): "the year 4032 is outside IGRF-14 (1900–2030)",
+    ("ch02", "laboratory_latitude", 2.0): "120° is not a latitude",
+    ("ch02", "thesis_epoch", 0.5): "the year 1008 is outside IGRF-14 (1900–2030)",
+    ("ch02", "thesis_epoch", 2.0): "the year 4032 is outside IGRF-14 (1900–2030)",
+    ("ch03", "core_averaging_factor", 2.0): "an averaging factor (mean over peak magnetisation) is at most 1",
+    ("ch04", "filter_coefficient_low", 2.0): "a complementary-filter coefficient lies in [0, 1]",
+    ("ch04", "filter_coefficient_high", 2.0): "a complementary-filter coefficient lies in [0, 1]",
+    ("ch04", "bench_filter_coefficient", 2.0): "a complementary-filter coefficient lies in [0, 1]",
+    ("ch07", "capture_initial_nutation", 2.0): "a nutation angle lies in [0, π]; twice the stored 1.5708 rad is above π",
+}
+
+FAST = ("ch01", "ch02", "ch03")
+
+
+def _cases():
+    for spec in chapters.CHAPTERS:
+        marks = () if spec.key in FAST else (pytest.mark.slow, pytest.mark.sweep)
+        for name in spec.inputs:
+            for factor in FACTORS:
+                yield pytest.param(spec.key, name, factor, id=f"{spec.key}-{name}-x{factor:g}", marks=marks)
+
+
+def test_out_of_domain_cases_are_inputs():
+    # The list above names real inputs (a renamed input would silently drop its case).
+    for key, name, factor in OUT_OF_DOMAIN:
+        assert name in chapters.chapter(key).inputs and factor in FACTORS
+
+
+@pytest.mark.parametrize("key, name, factor", list(_cases()))
+def test_chapter_runs_with_an_input_scaled(key, name, factor):
+    reason = OUT_OF_DOMAIN.get((key, name, factor))
+    if reason is None:
+        run_scaled(key, name, factor)
+        return
+    with pytest.raises(ValueError, match=r"must (lie|be)|within") as exc:
+        run_scaled(key, name, factor)
+    assert "Traceback" not in str(exc.value), reason
