@@ -24,9 +24,6 @@ CLOCK_CALLS = {("datetime", "now"), ("datetime", "today"), ("datetime", "utcnow"
 #: machine and date), never in a page's prose, which would change from build to build.
 TIMER_CALLS = {("time", "perf_counter"), ("time", "perf_counter_ns"), ("time", "monotonic"),
                ("time", "process_time")}
-#: Pages another branch is editing at the time of writing, and the line to remove there:
-#: ch04-estimation glues the seconds its BROAD cell took ("took … s in this build").
-KNOWN_TIMED_PAGES = {"ch04-estimation.md"}
 
 
 def _calls(tree):
@@ -89,8 +86,6 @@ def test_pages_read_neither_date_nor_timer(page):
     tree = ast.parse(_page_code(ROOT / "book" / page))
     hits = [f"line {line} of the code: {o}.{a}()" for o, a, line in _calls(tree)
             if (o, a) in CLOCK_CALLS | TIMER_CALLS]
-    if page in KNOWN_TIMED_PAGES and hits:
-        pytest.xfail(f"{page} glues a duration measured in the build: " + "; ".join(hits))
     assert not hits, f"{page} reads the clock: " + "; ".join(hits)
 
 
