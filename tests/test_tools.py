@@ -100,11 +100,19 @@ def test_book_check_fails_on_each_defect_it_names(tmp_path):
         "e-notation": ("<p>The ratio is 6.22e-41 of it.</p>", None),
         "internal label": ("<p>As printed (seed line 118).</p>", None),
         "without a caption": ("<table><tr><td>1</td></tr></table>", None),
+        # A formula line Markdown read as a list item: the "$" pair broke, LaTeX shows as text.
+        "unrendered LaTeX": (r"<p>here $\Delta\mathbf K = I\boldsymbol\omega</p><ul><li>(H_0)$</li></ul>", None),
     }
     for expected, (body, image) in cases.items():
         page, html = _page(tmp_path / expected.replace(" ", "_"), body, image)
         problems, _, _ = check_page("p", page, html)
         assert any(expected in p for p in problems), (expected, problems)
+
+
+def test_book_check_leaves_rendered_math_alone(tmp_path):
+    page, html = _page(tmp_path, r'<p>so <span class="math notranslate nohighlight">\(\mathbf B\)</span></p>'
+                       r'<div class="math notranslate nohighlight">\[\Omega^2 (A - C)\]</div>', None)
+    assert not any("LaTeX" in p for p in _load("check_book").check_page("p", page, html)[0])
 
 
 def test_book_check_names_a_transcription_line_label(tmp_path):

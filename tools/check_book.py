@@ -62,12 +62,18 @@ HEX_ID = re.compile(r"\b(?:commit|sha256) [0-9a-f]{7,64}\b")
 INTERNAL_LABEL = re.compile(r"seed line|seed text|inventory gap|\bTH-[A-Za-z0-9]+|\bgap G\d+|[(,] ?L\d{2,4}\b")
 
 
-def _prose_text(main):
+#: A LaTeX command left in the text: math that did not render (a "$" lost, or a line of a
+#: formula that Markdown read as a list item).
+RAW_LATEX = re.compile(r"\\(?:[a-zA-Z]{2,})\b|\$\\")
+
+
+def _prose_text(main, *, without_math=False):
     """The page's text without code: source cells, code blocks and inline code."""
     import copy
 
     main = copy.copy(main)
-    for node in main.select("div.cell_input, pre, code"):
+    for node in main.select("div.cell_input, pre, code"
+                            + (", div.math, span.math, .MathJax, mjx-container, script" if without_math else "")):
         node.decompose()
     # Commit ids and content hashes are hex: "5861051e3259" is not a number in e-notation.
     return HEX_ID.sub("", main.get_text(" "))
@@ -86,6 +92,10 @@ def check_page(name, page_path, html_dir):
         for match in pattern.finditer(prose):
             snippet = " ".join(prose[max(0, match.start() - 30):match.end() + 20].split())
             problems.append(f"{name}: {what} in the text: …{snippet}…")
+    bare = _prose_text(main, without_math=True)
+    for match in RAW_LATEX.finditer(bare):
+        snippet = " ".join(bare[max(0, match.start() - 30):match.end() + 30].split())
+        problems.append(f"{name}: unrendered LaTeX in the text: …{snippet}…")
     if "<Figure size" in text:
         problems.append(f"{name}: a figure is shown as its text repr ('<Figure size …')")
     if RAW_TABLE.search(text):
