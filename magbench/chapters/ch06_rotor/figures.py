@@ -456,19 +456,25 @@ def compute_field_model(real_tilt, small_tilt, orbits):
                       extra={"per_degree": small_last / math.degrees(small_tilt) if small_tilt else math.nan})
 
 
-def plot_field_model(data):
-    """Pointing error for the two tilts, with the slides' 10–15° band."""
+def _plot_pointing_runs(data, colours, legend_location, title):
+    """Pointing error of each run in ``data.series`` against time, with the slides' 10–15° band."""
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(6.4, 3.6))
     ax.axhspan(10, 15, color="C1", alpha=0.25, label="slides: 10–15°")
-    for s, colour in zip(data.series, ("C0", "C3")):
+    for s, colour in zip(data.series, colours):
         ax.plot(s.columns["time"][1], s.columns["pointing_error"][1], colour, linewidth=0.7, label=s.label)
     ax.set_xlabel("time [orbits]")
     ax.set_ylabel("pointing error [deg]")
-    ax.legend(loc="upper left")
-    ax.set_title("Program field: direct dipole; real field: tilted dipole\n(symmetric body, start on the reference)")
+    ax.legend(loc=legend_location)
+    ax.set_title(title)
     return fig
+
+
+def plot_field_model(data):
+    """Pointing error for the two tilts, with the slides' 10–15° band."""
+    return _plot_pointing_runs(data, ("C0", "C3"), "upper left", "Program field: direct dipole; real field: "
+                               "tilted dipole\n(symmetric body, start on the reference)")
 
 
 def _inertia_parameters():
@@ -531,17 +537,7 @@ def compute_products_of_inertia(product_of_inertia, orbits):
 
 def plot_products_of_inertia(data):
     """Pointing error of the two damping variants."""
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(figsize=(6.4, 3.6))
-    ax.axhspan(10, 15, color="C1", alpha=0.25, label="slides: 10–15°")
-    for s, colour in zip(data.series, ("C3", "C0")):
-        ax.plot(s.columns["time"][1], s.columns["pointing_error"][1], colour, linewidth=0.7, label=s.label)
-    ax.set_xlabel("time [orbits]")
-    ax.set_ylabel("pointing error [deg]")
-    ax.legend(loc="upper right")
-    ax.set_title("Rotor axis not principal: which error to damp")
-    return fig
+    return _plot_pointing_runs(data, ("C3", "C0"), "upper right", "Rotor axis not principal: which error to damp")
 
 
 def _relay_parameters():
