@@ -117,6 +117,7 @@ def claim_rows(params=None):
     deviation = float(np.max(np.abs(run.spin_rate - mean_spin)))
     where = "rotor slides, Conclusion"
     listed = ", ".join(f"{m:.1f}" for m in np.degrees(maxima))
+    start = ", ".join(f"{math.degrees(p[k]):g}°".replace("-", "−") for k in ("initial_alpha", "initial_beta"))
     delta_omega = kov_spin.value_high / 100.0
     turn, achieved = relay_spin_correction(delta_omega, FIELD_RATIO)
     return [
@@ -134,7 +135,8 @@ def claim_rows(params=None):
                  uncertainty=pointing.uncertainty_si,
                  note=(f"model: largest pointing error in the last simulated orbit (orbit {maxima.size}), an upper "
                        f"bound of the accuracy the ideal model keeps (it converges further); maxima per orbit "
-                       f"{listed}° from our start (20°, −15°): 10–15° appears only as a transient envelope")),
+                       f"{listed}° from our start ({start}): "
+                       f"{pointing.value_low:g}–{pointing.value_high:g}° appears only as a transient envelope")),
         make_row("kov-spin-accuracy", kov_spin.quantity,
                  f"Kovalenko (1975) §7.3, p. {kovalenko_page(kov_spin.seed_line)}; {kov_spin.method}",
                  kov_spin.value, deviation / abs(mean_spin), kov_spin.uncertainty_si, unit="%", scale=0.01,

@@ -13,6 +13,7 @@ import numpy as np
 from ...control.spin import (projected_damping_dipole, rotor_equilibrium_dipole, rotor_program_field,
                              rotor_spin_reference, slides_printed_damping_torque)
 from ...earth.dipole import dipole_equatorial_b
+from ...io import load_printed
 from ...sim.spinning import rotor_dimensionless, rotor_stability_map
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
@@ -22,6 +23,12 @@ SOURCE = "rotor slides (Ovchinnikov, Pen'kov, Roldugin, Tkachev)"
 DEG = math.pi / 180.0
 RPM = 2.0 * math.pi / 60.0
 
+
+def _draw_slides_pointing_band(ax):
+    """The slides' printed pointing accuracy (a range, data/rotor/printed.csv) as a band."""
+    claim = load_printed("rotor")["rotor-pointing-accuracy"]
+    ax.axhspan(claim.value_low, claim.value_high, color="C1", alpha=0.25,
+               label=f"slides: {claim.value_low:g}–{claim.value_high:g}°")
 
 def _defaults():
     return chapter_parameters(CHAPTER.key, overrides="")
@@ -184,7 +191,7 @@ def plot_simulation(data):
     t = c["time"][1]
     fig, axes = plt.subplots(3, 1, figsize=(6.4, 6.0), sharex=True)
     ax = axes[0]
-    ax.axhspan(10, 15, color="C1", alpha=0.25, label="slides: 10–15°")
+    _draw_slides_pointing_band(ax)
     ax.plot(t, c["pointing_error"][1], "C0", linewidth=0.8, label="angle rotor axis – velocity")
     ax.set_ylabel("pointing error [deg]")
     ax.legend(loc="upper right")
@@ -461,7 +468,7 @@ def _plot_pointing_runs(data, colours, legend_location, title):
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(6.4, 3.6))
-    ax.axhspan(10, 15, color="C1", alpha=0.25, label="slides: 10–15°")
+    _draw_slides_pointing_band(ax)
     for s, colour in zip(data.series, colours):
         ax.plot(s.columns["time"][1], s.columns["pointing_error"][1], colour, linewidth=0.7, label=s.label)
     ax.set_xlabel("time [orbits]")
@@ -694,7 +701,7 @@ def plot_asymmetry(data):
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(6.4, 3.6))
-    ax.axhspan(10, 15, color="C1", alpha=0.25, label="slides: 10–15°")
+    _draw_slides_pointing_band(ax)
     first = data.series[0].columns
     ax.plot(first["asymmetry"][1], first["pointing_error"][1], color="0.4", linestyle="--",
             label="largest error in orbit 1 (the start's)")
