@@ -35,6 +35,7 @@ OUT_OF_DOMAIN = {
     ("ch04", "filter_coefficient_low", 2.0): "a complementary-filter coefficient lies in [0, 1]",
     ("ch04", "filter_coefficient_high", 2.0): "a complementary-filter coefficient lies in [0, 1]",
     ("ch04", "bench_filter_coefficient", 2.0): "a complementary-filter coefficient lies in [0, 1]",
+    ("ch05", "orbit_inclination", 2.0): "twice SamSat-218D's 97.3° is not an inclination (0–180°)",
 }
 
 FAST = ("ch01", "ch02", "ch03")
