@@ -37,6 +37,10 @@ INPUTS = (
 )
 
 
+#: The bench's two targets (thesis §4.4): row tag, ψ_des as written, thesis figure, ψ_des [rad].
+BENCH_TARGETS = (("pi3", "π/3", "Fig. 19", np.pi / 3), ("2pi3", "2π/3", "Fig. 20", 2 * np.pi / 3))
+
+
 def bench_rows(params=None):
     """Chapter 4, the bench: the predicted final error band beside the thesis's 10°.
 
@@ -60,7 +64,8 @@ def bench_rows(params=None):
     measured = measurement("orientation-error")
     deg = np.pi / 180
     rows = []
-    for tag, label, target in (("pi3", "π/3 (Fig. 19)", np.pi / 3), ("2pi3", "2π/3 (Fig. 20)", 2 * np.pi / 3)):
+    for tag, label, figure, target in BENCH_TARGETS:
+        label = f"{label} ({figure})"
         run = bench.simulate_bench(setup, target, duration=p["bench_duration"],
                                    rng=np.random.default_rng(int(p["bench_seed"])),
                                    window=p["bench_error_window"])
@@ -96,12 +101,11 @@ def budget_rows(params=None):
     measured = measurement("orientation-error")
     sources = budget.load_error_sources()
     deg = np.pi / 180
-    targets = (("pi3", "π/3", np.pi / 3), ("2pi3", "2π/3", 2 * np.pi / 3))
-    oat = budget.one_at_a_time(setup, [t for _, _, t in targets], sources, points=3,
+    oat = budget.one_at_a_time(setup, [t for *_, t in BENCH_TARGETS], sources, points=3,
                                duration=p["bench_duration"], window=p["bench_error_window"],
                                field_h=p["bench_field_h"], seed=int(p["bench_seed"]))
     rows = []
-    for k, (tag, label, target) in enumerate(targets):
+    for k, (tag, label, _, _) in enumerate(BENCH_TARGETS):
         gyro = float(np.max(oat["gyro_offset"][1][k]))
         others = {n: float(np.max(v[1][k])) for n, v in oat.items() if n not in ("gyro_offset", "gyro_drift")}
         worst = max(others, key=others.get)
