@@ -7,6 +7,18 @@ expected range, so that bad input is never silently clipped or propagated as NaN
 import numpy as np
 
 
+def shown(value):
+    """``repr`` of a value for an error message, with numpy scalars as plain Python numbers.
+
+    numpy 2 writes ``np.float64(-0.5)`` for a scalar; a message says ``-0.5``.
+    """
+    if isinstance(value, np.generic) or (isinstance(value, np.ndarray) and value.ndim == 0):
+        return repr(value.item())
+    if isinstance(value, (tuple, list)):
+        return repr(type(value)(v.item() if isinstance(v, np.generic) else v for v in value))
+    return repr(value)
+
+
 def _describe(value):
     arr = np.asarray(value)
     if arr.size == 1:
@@ -19,10 +31,10 @@ def as_finite(name, value):
     try:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError) as exc:
-        raise ValueError(f"{name} must be numeric, got {value!r}") from exc
+        raise ValueError(f"{name} must be numeric, got {shown(value)}") from exc
     if not np.all(np.isfinite(arr)):
         bad = arr[~np.isfinite(arr)].ravel()[0]
-        raise ValueError(f"{name} must be finite, got {bad!r} in {_describe(arr)}")
+        raise ValueError(f"{name} must be finite, got {shown(bad)} in {_describe(arr)}")
     return arr
 
 
@@ -31,7 +43,7 @@ def as_positive(name, value, *, unit=""):
     arr = as_finite(name, value)
     if np.any(arr <= 0):
         bad = arr[arr <= 0].ravel()[0]
-        raise ValueError(f"{name} must be > 0{(' ' + unit) if unit else ''}, got {bad!r}")
+        raise ValueError(f"{name} must be > 0{(' ' + unit) if unit else ''}, got {shown(bad)}")
     return arr
 
 
@@ -40,7 +52,7 @@ def as_nonnegative(name, value, *, unit=""):
     arr = as_finite(name, value)
     if np.any(arr < 0):
         bad = arr[arr < 0].ravel()[0]
-        raise ValueError(f"{name} must be >= 0{(' ' + unit) if unit else ''}, got {bad!r}")
+        raise ValueError(f"{name} must be >= 0{(' ' + unit) if unit else ''}, got {shown(bad)}")
     return arr
 
 
@@ -50,7 +62,7 @@ def as_in_range(name, value, low, high, *, unit=""):
     if np.any((arr < low) | (arr > high)):
         bad = arr[(arr < low) | (arr > high)].ravel()[0]
         raise ValueError(
-            f"{name} must lie in [{low}, {high}]{(' ' + unit) if unit else ''}, got {bad!r}"
+            f"{name} must lie in [{low}, {high}]{(' ' + unit) if unit else ''}, got {shown(bad)}"
         )
     return arr
 
@@ -78,15 +90,15 @@ def as_positive_or_infinite(name, value, *, unit=""):
     try:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError) as exc:
-        raise ValueError(f"{name} must be numeric, got {value!r}") from exc
+        raise ValueError(f"{name} must be numeric, got {shown(value)}") from exc
     if np.any(np.isnan(arr)) or np.any(arr <= 0):
         bad = arr[np.isnan(arr) | (arr <= 0)].ravel()[0]
-        raise ValueError(f"{name} must be > 0 (inf for no limit){(' ' + unit) if unit else ''}, got {bad!r}")
+        raise ValueError(f"{name} must be > 0 (inf for no limit){(' ' + unit) if unit else ''}, got {shown(bad)}")
     return arr
 
 
 def as_choice(name, value, choices):
     """Return ``value`` unchanged, raising unless it is one of ``choices``."""
     if not isinstance(value, str) or value not in choices:
-        raise ValueError(f"{name} must be one of {', '.join(map(repr, choices))}, got {value!r}")
+        raise ValueError(f"{name} must be one of {', '.join(map(repr, choices))}, got {shown(value)}")
     return value

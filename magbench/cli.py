@@ -53,6 +53,11 @@ def _cmd_figure(args):
               file=sys.stderr)
         return 2
     try:
+        figures.resolve_parameters(args.id, overrides)
+    except (KeyError, ValueError) as exc:      # unknown parameter name, or not a finite number
+        print(f"magbench figure: {exc.args[0]}", file=sys.stderr)
+        return 2
+    try:
         if args.out:
             import matplotlib
 
@@ -65,8 +70,12 @@ def _cmd_figure(args):
                     args.id, data.parameters)))
         else:
             data = figures.compute(args.id, **overrides)
-    except (KeyError, ValueError) as exc:      # unknown parameter name, or a value out of range
-        print(f"magbench figure: {exc.args[0]}", file=sys.stderr)
+    except (KeyError, ValueError) as exc:      # a value out of the range of the function it reaches
+        # The check that failed names the library's argument (``radius``); say which of the
+        # figure's parameters were set, since one of them (``coil_radius``) is the cause.
+        given = ", ".join(f"{name}={value:g}" for name, value in overrides.items())
+        context = f"{args.id} with {given}: " if given else f"{args.id}: "
+        print(f"magbench figure: {context}{exc.args[0]}", file=sys.stderr)
         return 2
     if args.data:
         Path(args.data).write_text(json.dumps(data.to_json_dict(), indent=1), encoding="utf-8")

@@ -62,6 +62,14 @@ def test_cli_errors(argv, message, capsys):
     assert message in capsys.readouterr().err
 
 
+def test_cli_names_the_figures_parameter_and_a_plain_number_when_a_library_check_fails(capsys):
+    # The library's check names its own argument (radius); the reader typed coil_radius. Before
+    # the fix the one line was "radius must be > 0 m, got np.float64(-0.5)".
+    assert main(["figure", "thesis-fig05", "--set", "coil_radius=-0.5"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err == "magbench figure: thesis-fig05 with coil_radius=-0.5: radius must be > 0 m, got -0.5"
+
+
 def test_cli_figures_and_compare(capsys):
     assert main(["figures"]) == 0
     assert "thesis-fig01" in capsys.readouterr().out

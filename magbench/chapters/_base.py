@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..io import DataError, load_parameter_set
+from .._validate import shown
 
 __all__ = ["Chapter", "OVERRIDES_ENV", "chapter_parameters", "read_overrides"]
 
@@ -104,7 +105,7 @@ def read_overrides(path):
             raise DataError(f"{path}: unknown section [{section}]; valid: {', '.join(sorted(valid_sections))}")
         for name, value in values.items():
             if isinstance(value, bool) or not isinstance(value, int | float):
-                raise DataError(f"{path}: [{section}] {name} must be a number (SI), got {value!r}")
+                raise DataError(f"{path}: [{section}] {name} must be a number (SI), got {shown(value)}")
             known = set().union(*inputs.values()) if section == "all" else inputs[section]
             if name not in known:
                 raise DataError(f"{path}: [{section}] has no parameter {name!r}; "

@@ -13,7 +13,7 @@ normalised quantities as well as SI (see each function). Pure functions.
 
 import numpy as np
 
-from .._validate import as_finite, as_in_range, as_positive, as_vectors
+from .._validate import as_finite, as_in_range, as_positive, as_vectors, shown
 
 __all__ = ["rotor_program_field", "rotor_equilibrium_dipole", "rotor_equilibrium_axial_momentum",
            "rotor_spin_reference", "projected_damping_dipole", "slides_printed_damping_torque",
@@ -94,7 +94,7 @@ def rotor_equilibrium_dipole(argument_of_latitude, inclination, equatorial_b, ga
     i = as_in_range("inclination", inclination, 0.0, np.pi, unit="rad")
     si = np.sin(i)
     if np.any(np.abs(si) < 1e-12):
-        raise ValueError(f"inclination must have sin i != 0 (the law divides by B0 sin i), got {float(np.ravel(i)[0])!r}")
+        raise ValueError(f"inclination must have sin i != 0 (the law divides by B0 sin i), got {shown(float(np.ravel(i)[0]))}")
     b0 = as_positive("equatorial_b", equatorial_b, unit="T")
     k = as_finite("gain", gain)
     h0 = as_finite("axial_momentum", axial_momentum)
@@ -196,7 +196,7 @@ def projected_damping_dipole(field, rate_error, gain):
         raise ValueError("field must not contain a zero vector (the projection divides by |B|²)")
     k = as_finite("gain", gain)
     if np.any(k < 0):
-        raise ValueError(f"gain must be >= 0 N·m·s, got {float(k[k < 0].ravel()[0])!r}")
+        raise ValueError(f"gain must be >= 0 N·m·s, got {shown(float(k[k < 0].ravel()[0]))}")
     return _projected(b, as_vectors("rate_error", rate_error), k)
 
 
@@ -230,7 +230,7 @@ def slides_printed_damping_torque(field, rate_error, gain):
         raise ValueError("field must not contain a zero vector (the projection divides by |B|²)")
     k = as_finite("gain", gain)
     if np.any(k < 0):
-        raise ValueError(f"gain must be >= 0 N·m·s, got {float(k[k < 0].ravel()[0])!r}")
+        raise ValueError(f"gain must be >= 0 N·m·s, got {shown(float(k[k < 0].ravel()[0]))}")
     w = as_vectors("rate_error", rate_error)
     return -np.cross(_projected(b, w, k), b)
 

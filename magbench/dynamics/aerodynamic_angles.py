@@ -8,7 +8,7 @@ printed element. SI: radians, rad/s.
 
 import numpy as np
 
-from .._validate import as_finite
+from .._validate import as_finite, shown
 
 __all__ = ["aerodynamic_attitude_matrix", "aerodynamic_angles", "aerodynamic_body_rates"]
 
@@ -91,7 +91,7 @@ def aerodynamic_angles(matrix):
     error = np.abs(b @ np.swapaxes(b, -1, -2) - np.eye(3)).max(axis=(-2, -1))
     if np.any(error > 1e-6) or np.any(np.linalg.det(b) < 0):
         raise ValueError(f"matrix must be a rotation matrix (orthonormal to 1e-6, det +1), "
-                         f"got an orthonormality error of {float(np.max(error))!r}")
+                         f"got an orthonormality error of {shown(float(np.max(error)))}")
     # Rounding can put |b11| a few ulp above 1 for an orthonormal matrix; not a clip of bad input.
     attack = np.arccos(np.clip(b[..., 0, 0], -1.0, 1.0))
     roll = np.arctan2(b[..., 1, 0], b[..., 2, 0])

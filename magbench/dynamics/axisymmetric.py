@@ -10,7 +10,7 @@ symmetry axis, A = B the transverse and C the axial moment of inertia. Euler ang
 
 import numpy as np
 
-from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, as_vectors
+from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, as_vectors, shown
 from .pendulum import euler_313_matrix
 
 __all__ = ["euler_case_rates", "euler_case_angles", "euler_case_matrix", "body_rate_from_momentum",
@@ -22,7 +22,7 @@ def _inertias(transverse_inertia, axial_inertia):
     c = as_positive("axial_inertia", axial_inertia, unit="kg·m²")
     if np.any(c > 2.0 * a):
         raise ValueError(f"axial_inertia must be <= 2 × transverse_inertia (triangle inequality), got C = "
-                         f"{np.max(c)!r} kg·m² with A = {np.min(a)!r} kg·m²")
+                         f"{shown(np.max(c))} kg·m² with A = {shown(np.min(a))} kg·m²")
     return a, c
 
 

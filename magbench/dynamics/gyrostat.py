@@ -15,7 +15,7 @@ divided by ω0²), which say so.
 
 import numpy as np
 
-from .._validate import as_finite, as_positive, as_vectors
+from .._validate import as_finite, as_positive, as_vectors, shown
 from .rigid_body import (_as_quaternions, _cross, _euler_rates, _gravity_gradient_torque, _inertia_matrix,
                          _quaternion_rate, _rotate)
 
@@ -363,7 +363,7 @@ def semi_body_rhs(tau, state, torque, axial_inertia, transverse_inertia, rotor_i
     jf = float(as_positive("rotor_inertia", rotor_inertia, unit="kg·m²"))
     nu = float(as_finite("rotor_rate", rotor_rate))
     if jf >= a:
-        raise ValueError(f"rotor_inertia must be < axial_inertia ({a!r} kg·m²), got {jf!r}")
+        raise ValueError(f"rotor_inertia must be < axial_inertia ({shown(a)} kg·m²), got {shown(jf)}")
     alpha, beta, _, w1, w2, w3 = x
     abar, wf = a - jf, w1 + nu
     sa, ca, sb, cb, tb = np.sin(alpha), np.cos(alpha), np.sin(beta), np.cos(beta), np.tan(beta)

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.special import ellipk
 
-from .._validate import as_finite, as_in_range, as_nonnegative, as_positive
+from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, shown
 
 __all__ = ["two_coil_torque", "Mockup", "euler_313_matrix", "thread_center_of_mass", "body_rates_313",
            "pendulum_rhs", "two_coil_rhs", "mockup_rhs", "pendulum_energy", "natural_frequency",
@@ -535,7 +535,7 @@ def amplitude_for_period(period, inertia, moment, field):
     t = float(as_positive("period", period, unit="s"))
     t0 = float(small_angle_period(inertia, moment, field))
     if t < t0:
-        raise ValueError(f"period must be >= the small-angle period {t0:.6g} s, got {t!r}")
+        raise ValueError(f"period must be >= the small-angle period {t0:.6g} s, got {shown(t)}")
     if t == t0:
         return 0.0
     # T grows monotonically from T0 at 0 to infinity at π: a bracketing root finder is safe.

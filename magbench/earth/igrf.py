@@ -16,7 +16,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .._validate import as_finite, as_in_range
+from .._validate import as_finite, as_in_range, shown
 from ..constants import IGRF_REFERENCE_RADIUS
 from .dipole import dipole_from_gauss_coefficients
 
@@ -182,11 +182,11 @@ def igrf_field(latitude, longitude, year, *, altitude=0.0, max_degree=13):
     """
     lat = as_in_range("latitude", latitude, -np.pi / 2, np.pi / 2, unit="rad")
     if abs(float(lat)) >= np.pi / 2:
-        raise ValueError(f"latitude must lie strictly inside (-π/2, π/2) rad, got {float(lat)!r}")
+        raise ValueError(f"latitude must lie strictly inside (-π/2, π/2) rad, got {shown(float(lat))}")
     lon = as_finite("longitude", longitude)
     alt = as_finite("altitude", altitude)
     if not 1 <= int(max_degree) <= 13:
-        raise ValueError(f"max_degree must lie in [1, 13], got {max_degree!r}")
+        raise ValueError(f"max_degree must lie in [1, 13], got {shown(max_degree)}")
     date = decimal_year_to_datetime(year)
     _check_date(date)
     import ppigrf
@@ -252,7 +252,7 @@ def igrf_gauss_coefficients(year, *, max_degree=13):
     Not in the thesis: IGRF-14 as shipped with ppigrf.
     """
     if not 1 <= int(max_degree) <= 13:
-        raise ValueError(f"max_degree must lie in [1, 13], got {max_degree!r}")
+        raise ValueError(f"max_degree must lie in [1, 13], got {shown(max_degree)}")
     date = decimal_year_to_datetime(year)
     _check_date(date)
     gdf, hdf = _coefficients()

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import curve_fit
 
-from .._validate import as_finite
+from .._validate import as_finite, shown
 
 __all__ = ["DecayFit", "fit_linear_decay", "fit_exponential_decay", "corrected_aic"]
 
@@ -81,10 +81,10 @@ def corrected_aic(residual_sum_squares, samples, parameters):
     """
     rss = float(as_finite("residual_sum_squares", residual_sum_squares))
     if rss <= 0:
-        raise ValueError(f"residual_sum_squares must be > 0, got {rss!r}")
+        raise ValueError(f"residual_sum_squares must be > 0, got {shown(rss)}")
     n, k = int(samples), int(parameters) + 1
     if n - k - 1 <= 0:
-        raise ValueError(f"samples must exceed parameters + 2, got samples={n!r}, parameters={k - 1!r}")
+        raise ValueError(f"samples must exceed parameters + 2, got samples={shown(n)}, parameters={shown(k - 1)}")
     return n * np.log(rss / n) + 2 * k + 2 * k * (k + 1) / (n - k - 1)
 
 

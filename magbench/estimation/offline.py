@@ -8,7 +8,7 @@ for bench logs, after the offline mode of VQF (Laidig & Seel 2023). SI.
 import numpy as np
 from scipy.signal import butter, filtfilt
 
-from .._validate import as_positive, as_positive_scalar
+from .._validate import as_positive, as_positive_scalar, shown
 from ..rotations import hamilton_product
 from .tilt import _check_series3, _rotations, accelerometer_tilt, rest_gyro_bias, strapdown_orientation
 
@@ -169,7 +169,7 @@ def offline_tilt(gyro, accel, dt, *, tau=3.0, rest_bias=True, rest_detector=None
     cutoff = np.sqrt(2.0) / (2.0 * np.pi * time_constant)
     if cutoff >= 0.5 / step:
         raise ValueError(f"tau must exceed {2.0 * np.sqrt(2.0) * step / (2.0 * np.pi):g} s (cut-off below the "
-                         f"Nyquist frequency {0.5 / step:g} Hz), got {time_constant!r}")
+                         f"Nyquist frequency {0.5 / step:g} Hz), got {shown(time_constant)}")
     if rest_bias:
         rest = two_sided_rest(rate, acc, step, rest_detector)
         if rest.any():

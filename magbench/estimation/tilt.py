@@ -9,7 +9,7 @@ import numpy as np
 from scipy.signal import butter, lfilter, lfilter_zi
 from scipy.spatial.transform import Rotation
 
-from .._validate import as_finite, as_nonnegative, as_positive, as_positive_scalar, as_vectors
+from .._validate import as_finite, as_nonnegative, as_positive, as_positive_scalar, as_vectors, shown
 from ..rotations import hamilton_product
 from .complementary import complementary_filter
 
@@ -121,7 +121,7 @@ def strapdown_orientation(gyro, dt, initial_orientation=None):
     if initial_orientation is not None:
         start = as_finite("initial_orientation", initial_orientation)
         if start.shape != (4,) or not np.isclose(np.linalg.norm(start), 1.0, atol=1e-6):
-            raise ValueError(f"initial_orientation must be a unit quaternion of shape (4,), got {start!r}")
+            raise ValueError(f"initial_orientation must be a unit quaternion of shape (4,), got {shown(start)}")
         prefix = _quaternions(_rotations(start) * _rotations(prefix))
     return prefix
 
@@ -293,7 +293,7 @@ def complementary_tilt(gyro, accel, dt, *, tau=3.0, order=2, rest_bias=True):
     acc_inertial = _rotations(gyro_frame).apply(acc)
     if order == 2 and np.sqrt(2.0) / (2.0 * np.pi * time_constant) >= 0.5 / step:
         raise ValueError(f"tau must exceed {2.0 * np.sqrt(2.0) * step / (2.0 * np.pi):g} s for order 2 "
-                         f"(cut-off below the Nyquist frequency {0.5 / step:g} Hz), got {time_constant!r}")
+                         f"(cut-off below the Nyquist frequency {0.5 / step:g} Hz), got {shown(time_constant)}")
     smooth = _lowpass_from_mean(acc_inertial, step, time_constant, order)
     correction = accelerometer_tilt(smooth)
     q = hamilton_product(correction, gyro_frame)

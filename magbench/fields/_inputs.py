@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from .._validate import as_finite, as_positive, as_vectors
+from .._validate import as_finite, as_positive, as_vectors, shown
 
 
 def _scalar(name, value, check, **kw):
@@ -23,7 +23,7 @@ def _positive_scalar(name, value, unit=""):
 def _nonnegative_scalar(name, value, unit=""):
     v = _finite_scalar(name, value)
     if v < 0:
-        raise ValueError(f"{name} must be >= 0{(' ' + unit) if unit else ''}, got {v!r}")
+        raise ValueError(f"{name} must be >= 0{(' ' + unit) if unit else ''}, got {shown(v)}")
     return v
 
 

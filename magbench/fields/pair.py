@@ -8,7 +8,7 @@ import math
 import numpy as np
 from scipy import optimize
 
-from .._validate import as_finite, as_positive
+from .._validate import as_finite, as_positive, shown
 from ._inputs import _finite_scalar, _nonnegative_scalar, _positive_scalar
 from .loop import _coaxial_b
 
@@ -94,7 +94,7 @@ def helmholtz_center_h(current, turns, radius, separation):
     a = as_positive("radius", radius, unit="m")
     d = as_finite("separation", separation)
     if np.any(d < 0):
-        raise ValueError(f"separation must be >= 0 m, got {d[d < 0].ravel()[0]!r}")
+        raise ValueError(f"separation must be >= 0 m, got {shown(d[d < 0].ravel()[0])}")
     return n * i / (a * ((d / (2.0 * a)) ** 2 + 1.0) ** 1.5)
 
 
@@ -133,7 +133,7 @@ def helmholtz_ampere_turns(center_h, radius, separation):
     a = as_positive("radius", radius, unit="m")
     d = as_finite("separation", separation)
     if np.any(d < 0):
-        raise ValueError(f"separation must be >= 0 m, got {d[d < 0].ravel()[0]!r}")
+        raise ValueError(f"separation must be >= 0 m, got {shown(d[d < 0].ravel()[0])}")
     return h * a * ((d / (2.0 * a)) ** 2 + 1.0) ** 1.5
 
 
@@ -177,8 +177,8 @@ def pair_radius_for_center_h(center_h, ampere_turns, separation):
 
     a_peak = d / math.sqrt(2.0)
     if h > field(a_peak):
-        raise ValueError(f"center_h must be <= {field(a_peak)!r} A/m (the largest midpoint field of "
-                         f"NI = {ni!r} A at separation {d!r} m), got {h!r}")
+        raise ValueError(f"center_h must be <= {shown(field(a_peak))} A/m (the largest midpoint field of "
+                         f"NI = {shown(ni)} A at separation {shown(d)} m), got {shown(h)}")
     hi = a_peak
     while field(hi) > h:
         hi *= 2.0
@@ -222,5 +222,5 @@ def planar_pair_center_h(ampere_turns, radius, separation):
     a = as_positive("radius", radius, unit="m")
     d = as_finite("separation", separation)
     if np.any(d < 0):
-        raise ValueError(f"separation must be >= 0 m, got {d[d < 0].ravel()[0]!r}")
+        raise ValueError(f"separation must be >= 0 m, got {shown(d[d < 0].ravel()[0])}")
     return 2.0 * ni * a / (np.pi * (a * a + d * d / 4.0))

@@ -7,7 +7,7 @@ ref. [1] (three-axis simulators). SI throughout.
 import numpy as np
 from scipy import optimize
 
-from .._validate import as_finite, as_positive, as_vectors
+from .._validate import as_finite, as_positive, as_vectors, shown
 from ._inputs import _center, _nonnegative_scalar, _positive_scalar
 from .loop import loop_b_posed
 from .square import square_loop_b
@@ -149,7 +149,7 @@ def _system(shapes, sizes, positions, ampere_turns):
     shapes = list(shapes)
     bad = [s for s in shapes if s not in _SHAPES]
     if bad:
-        raise ValueError(f"shapes must be 'round' or 'square', got {bad[0]!r}")
+        raise ValueError(f"shapes must be 'round' or 'square', got {shown(bad[0])}")
     sz = as_positive("sizes", sizes, unit="m")
     pos = as_finite("positions", positions)
     ni = as_finite("ampere_turns", ampere_turns)
@@ -357,7 +357,7 @@ def coaxial_system_uniform_radius(shapes, sizes, positions, ampere_turns, tolera
     system = _system(shapes, sizes, positions, ampere_turns)
     tol = _positive_scalar("tolerance", tolerance)
     if tol >= 1.0:
-        raise ValueError(f"tolerance must lie in (0, 1), got {tol!r}")
+        raise ValueError(f"tolerance must lie in (0, 1), got {shown(tol)}")
     shapes_, sz, pos, _ = system
     # The nearest wire: a round coil's wire is at distance hypot(r, z); a square's sides at
     # hypot(side/2, z). Stop short of it.

@@ -11,6 +11,7 @@ from scipy import optimize
 
 from ._inputs import _nonnegative_scalar, _positive_scalar
 from .loop import _coaxial_unit
+from .._validate import shown
 
 __all__ = ["sphere_nonuniformity", "cylinder_nonuniformity", "uniform_sphere_radius", "uniform_cylinder",
            "optimal_separation", "pair_distance_to_h", "uniform_zone_length"]
@@ -183,7 +184,7 @@ def uniform_sphere_radius(radius, separation, tolerance):
     d = _nonnegative_scalar("separation", separation, unit="m")
     tol = _positive_scalar("tolerance", tolerance)
     if tol >= 1.0:
-        raise ValueError(f"tolerance must lie in (0, 1), got {tol!r}")
+        raise ValueError(f"tolerance must lie in (0, 1), got {shown(tol)}")
     ratio = d / a
     s_wire = math.hypot(1.0, ratio / 2.0)
     return a * _first_crossing(lambda s: _sphere_boundary_dev(s, ratio), tol, s_wire)
@@ -223,7 +224,7 @@ def uniform_cylinder(radius, separation, tolerance, aspect=1.0):
     d = _nonnegative_scalar("separation", separation, unit="m")
     tol = _positive_scalar("tolerance", tolerance)
     if tol >= 1.0:
-        raise ValueError(f"tolerance must lie in (0, 1), got {tol!r}")
+        raise ValueError(f"tolerance must lie in (0, 1), got {shown(tol)}")
     k = _positive_scalar("aspect", aspect)
     ratio = d / a
     # The cylinder's rim (ρ = c, z = k c) reaches the wire (1, ratio/2) at the latest
@@ -266,7 +267,7 @@ def optimal_separation(radius, tolerance):
     a = _positive_scalar("radius", radius, unit="m")
     tol = _positive_scalar("tolerance", tolerance)
     if tol > 0.5:
-        raise ValueError(f"tolerance must lie in (0, 0.5], got {tol!r}")
+        raise ValueError(f"tolerance must lie in (0, 0.5], got {shown(tol)}")
 
     def size(ratio):
         s_wire = math.hypot(1.0, ratio / 2.0)
@@ -276,7 +277,7 @@ def optimal_separation(radius, tolerance):
     sizes = np.array([size(r) for r in ratios])
     j = int(np.argmax(sizes))
     if j == len(ratios) - 1 or j == 0:
-        raise ValueError(f"tolerance {tol!r} puts the optimum outside d/a in [0.9, 1.3]")
+        raise ValueError(f"tolerance {shown(tol)} puts the optimum outside d/a in [0.9, 1.3]")
     best = optimize.minimize_scalar(
         lambda r: -size(r), bounds=(ratios[j - 1], ratios[j + 1]), method="bounded",
         options={"xatol": 1e-7},
@@ -333,7 +334,7 @@ def pair_distance_to_h(center_fraction, radius, separation, direction):
     """
     frac = _positive_scalar("center_fraction", center_fraction)
     if frac >= 1.0:
-        raise ValueError(f"center_fraction must lie in (0, 1), got {frac!r}")
+        raise ValueError(f"center_fraction must lie in (0, 1), got {shown(frac)}")
     a = _positive_scalar("radius", radius, unit="m")
     d = _positive_scalar("separation", separation, unit="m")
     dev = _line_deviation(direction, d / a)
@@ -387,6 +388,6 @@ def uniform_zone_length(radius, separation, tolerance, direction):
     d = _nonnegative_scalar("separation", separation, unit="m")
     tol = _positive_scalar("tolerance", tolerance)
     if tol >= 1.0:
-        raise ValueError(f"tolerance must lie in (0, 1), got {tol!r}")
+        raise ValueError(f"tolerance must lie in (0, 1), got {shown(tol)}")
     dev = _line_deviation(direction, d / a)
     return 2.0 * a * _first_crossing(dev, tol, 3.0)

@@ -19,6 +19,7 @@ __all__ = [
 
 
 from ..chapters._figures import REGISTRY, FigureData, FigureParameter, FigureSpec, Series, register
+from .._validate import shown
 
 _loaded = False
 
@@ -64,9 +65,9 @@ def resolve_parameters(figure_id, overrides=None):
         try:
             number = float(value)
         except (TypeError, ValueError):
-            raise ValueError(f"parameter {name} of {figure_id} must be a number, got {value!r}") from None
+            raise ValueError(f"parameter {name} of {figure_id} must be a number, got {shown(value)}") from None
         if not math.isfinite(number):
-            raise ValueError(f"parameter {name} of {figure_id} must be finite, got {value!r}")
+            raise ValueError(f"parameter {name} of {figure_id} must be finite, got {shown(value)}")
         values[name] = number
     return values
 
@@ -123,4 +124,4 @@ def parse_assignment(text):
     try:
         return name.strip(), float(value)
     except ValueError:
-        raise ValueError(f"--set {name.strip()}: cannot parse {value!r} as a number") from None
+        raise ValueError(f"--set {name.strip()}: cannot parse {shown(value)} as a number") from None

@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from .._validate import as_nonnegative, as_positive
+from .._validate import as_nonnegative, as_positive, shown
 from .magnetorquer import _RTOL
 from .turn import _check_shape, turn_area, turn_length
 
@@ -94,8 +94,8 @@ def _design_inputs(moment, voltage, side, shape, max_power, max_mass, wire_diame
                              f"got {od_all.shape}")
         if np.any(od_all <= d_all):
             k = int(np.argmax(od_all <= d_all))
-            raise ValueError(f"overall_diameters must exceed the bare diameters, got {od_all[k]!r} m "
-                             f"for wire_diameters {d_all[k]!r} m")
+            raise ValueError(f"overall_diameters must exceed the bare diameters, got {shown(od_all[k])} m "
+                             f"for wire_diameters {shown(d_all[k])} m")
         if np.unique(d_all).size != d_all.size:
             raise ValueError("wire_diameters must not repeat a size when overall_diameters are given")
         order = np.argsort(d_all)
@@ -106,7 +106,7 @@ def _design_inputs(moment, voltage, side, shape, max_power, max_mass, wire_diame
     length_avail = l if winding_length is None else float(
         as_positive("winding_length", winding_length, unit="m"))
     if isinstance(max_layers, bool) or not isinstance(max_layers, (int, np.integer)) or max_layers < 1:
-        raise ValueError(f"max_layers must be an integer >= 1, got {max_layers!r}")
+        raise ValueError(f"max_layers must be an integer >= 1, got {shown(max_layers)}")
     return m_req, u, l, w_max, m_max, d_all, od_all, rho, gamma, length_avail
 
 
@@ -137,7 +137,7 @@ def _enumerate(m_req, u, l, shape, w_max, m_max, d_all, od_all, rho, gamma, leng
         n_rows += n_hi - n_lo + 1
         if n_rows > _MAX_ROWS:
             raise ValueError(
-                f"max_mass = {m_max!r} kg admits more than {_MAX_ROWS} (turns, wire) designs; "
+                f"max_mass = {shown(m_max)} kg admits more than {_MAX_ROWS} (turns, wire) designs; "
                 "tighten the limits or shorten wire_diameters"
             )
         n = np.arange(n_lo, n_hi + 1)

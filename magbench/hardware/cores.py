@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from .._validate import as_finite, as_in_range, as_nonnegative, as_positive
+from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, shown
 
 __all__ = ["rod_demagnetizing_factor", "effective_permeability", "magnetization_curve",
            "field_for_magnetization", "core_central_magnetization", "electromagnet_design"]
@@ -51,7 +51,7 @@ def rod_demagnetizing_factor(elongation, formula="power"):
     """
     p = as_finite("elongation", elongation)
     if np.any(p < 10):
-        raise ValueError(f"elongation must be >= 10 [-] (long rods), got {p[p < 10].ravel()[0]!r}")
+        raise ValueError(f"elongation must be >= 10 [-] (long rods), got {shown(p[p < 10].ravel()[0])}")
     if formula == "power":
         return 0.93 * p**-1.7
     if formula == "rosenblat":
@@ -89,7 +89,7 @@ def effective_permeability(permeability, demagnetizing_factor):
     """
     mu = as_finite("permeability", permeability)
     if np.any(mu < 1):
-        raise ValueError(f"permeability must be >= 1 [-], got {mu[mu < 1].ravel()[0]!r}")
+        raise ValueError(f"permeability must be >= 1 [-], got {shown(mu[mu < 1].ravel()[0])}")
     n = as_in_range("demagnetizing_factor", demagnetizing_factor, 0.0, 1.0)
     return mu / (1.0 + n * (mu - 1.0))
 
@@ -157,8 +157,8 @@ def field_for_magnetization(magnetization, a, b):
     a_ = as_positive("a", a, unit="A/m")
     b_ = as_positive("b", b, unit="A/m")
     if np.any(j >= a_):
-        raise ValueError(f"magnetization must be below the saturation a = {np.max(a_)!r} A/m, "
-                         f"got {np.max(j)!r}")
+        raise ValueError(f"magnetization must be below the saturation a = {shown(np.max(a_))} A/m, "
+                         f"got {shown(np.max(j))}")
     return b_ * j / (a_ - j)
 
 
@@ -264,7 +264,7 @@ def electromagnet_design(moment, elongation, design_magnetization, design_field,
     lp = float(as_positive("moment", moment, unit="A·m²"))
     p = float(as_finite("elongation", elongation))
     if p < 10:
-        raise ValueError(f"elongation must be >= 10 [-] (long rods), got {p!r}")
+        raise ValueError(f"elongation must be >= 10 [-] (long rods), got {shown(p)}")
     j0 = float(as_positive("design_magnetization", design_magnetization, unit="A/m"))
     h0 = float(as_nonnegative("design_field", design_field, unit="A/m"))
     k = float(as_in_range("averaging_factor", averaging_factor, 0.0, 1.0))

@@ -19,7 +19,7 @@ H_from being the field on the limb the state comes from; on a limb the slope is 
 
 import numpy as np
 
-from .._validate import as_finite, as_nonnegative, as_positive, as_positive_scalar
+from .._validate import as_finite, as_nonnegative, as_positive, as_positive_scalar, shown
 
 __all__ = ["limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
            "rod_cycle_energy", "limiting_loop_energy", "hysteresis_damping_torque"]
@@ -30,7 +30,7 @@ def _material(coercivity, remanence, saturation):
     bs = as_positive_scalar("saturation", saturation, unit="T")
     br = as_positive_scalar("remanence", remanence, unit="T")
     if br >= bs:
-        raise ValueError(f"remanence must be below saturation ({bs!r} T), got {br!r} T")
+        raise ValueError(f"remanence must be below saturation ({shown(bs)} T), got {shown(br)} T")
     return hc, br, bs, np.tan(0.5 * np.pi * br / bs) / hc
 
 
@@ -108,8 +108,8 @@ def hysteresis_slope(induction, field, field_rate, coercivity, remanence, satura
     rate = as_finite("field_rate", field_rate)
     hc, _, bs, k = _material(coercivity, remanence, saturation)
     if np.any(np.abs(b) >= bs):
-        raise ValueError(f"induction must lie in (-{bs!r}, {bs!r}) T (below saturation), got "
-                         f"{b[np.abs(b) >= bs].ravel()[0]!r}")
+        raise ValueError(f"induction must lie in (-{shown(bs)}, {shown(bs)}) T (below saturation), got "
+                         f"{shown(b[np.abs(b) >= bs].ravel()[0])}")
     slope = _slope(b, h, np.sign(rate), hc, bs, k)
     return slope, slope * rate
 
@@ -155,7 +155,7 @@ def hysteresis_response(field, coercivity, remanence, saturation, *, initial_ind
     hc, _, bs, k = _material(coercivity, remanence, saturation)
     b0 = as_finite("initial_induction", initial_induction)
     if np.any(np.abs(b0) >= bs):
-        raise ValueError(f"initial_induction must lie in (-{bs!r}, {bs!r}) T, got {b0.ravel()[0]!r}")
+        raise ValueError(f"initial_induction must lie in (-{shown(bs)}, {shown(bs)}) T, got {shown(b0.ravel()[0])}")
     b = np.empty(h.shape)
     b[..., 0] = np.broadcast_to(b0, h.shape[:-1])
     for j in range(h.shape[-1] - 1):

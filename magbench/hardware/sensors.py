@@ -32,7 +32,7 @@ Datasheets
 import numpy as np
 from scipy.constants import g as STANDARD_GRAVITY
 
-from .._validate import as_finite, as_nonnegative, as_positive, as_positive_scalar
+from .._validate import as_finite, as_nonnegative, as_positive, as_positive_scalar, shown
 
 __all__ = [
     "MPU6050_GYRO_NOISE_DENSITY",
@@ -146,7 +146,7 @@ def noise_std_from_density(density, dt, bandwidth=None):
         band = float(as_positive("bandwidth", bandwidth, unit="Hz"))
         if band > nyquist * (1.0 + 1e-12):
             raise ValueError(
-                f"bandwidth must lie in (0, {nyquist:g}] Hz (the Nyquist frequency 1/(2 dt)), got {band!r}"
+                f"bandwidth must lie in (0, {nyquist:g}] Hz (the Nyquist frequency 1/(2 dt)), got {shown(band)}"
             )
     return rho * np.sqrt(band)
 

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._validate import as_finite, as_positive
+from .._validate import as_finite, as_positive, shown
 
 __all__ = ["SHAPES", "Turn", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter"]
 
@@ -216,5 +216,5 @@ def awg_diameter(gauge):
     """
     n = as_finite("gauge", gauge)
     if np.any(n < -3):
-        raise ValueError(f"gauge must be >= -3 (0000 AWG) [-], got {n[n < -3].ravel()[0]!r}")
+        raise ValueError(f"gauge must be >= -3 (0000 AWG) [-], got {shown(n[n < -3].ravel()[0])}")
     return 0.127e-3 * 92.0 ** ((36.0 - n) / 39.0)

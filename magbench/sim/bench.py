@@ -49,7 +49,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .. import control, estimation, hardware
-from .._validate import as_finite, as_in_range, as_nonnegative, as_positive
+from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, shown
 from ..constants import MU_0
 from ..dynamics.pendulum import Mockup, mockup_rhs
 from ..rotations import wrap_angle
@@ -108,11 +108,11 @@ class BenchSetup:
         as_positive("sample_interval", self.sample_interval, unit="s")
         levels = as_nonnegative("pwm_levels", self.pwm_levels)
         if float(levels) != int(levels):
-            raise ValueError(f"pwm_levels must be a whole number of duty steps, got {self.pwm_levels!r}")
+            raise ValueError(f"pwm_levels must be a whole number of duty steps, got {shown(self.pwm_levels)}")
         as_in_range("driver_voltage_drop", self.driver_voltage_drop, 0.0, float(u), unit="V")
         if float(self.driver_voltage_drop) >= float(u):
             raise ValueError(f"driver_voltage_drop must be below supply_voltage ({float(u)} V), "
-                             f"got {self.driver_voltage_drop!r}")
+                             f"got {shown(self.driver_voltage_drop)}")
         as_finite("thread_neutral_angle", self.thread_neutral_angle)
         if self.gyro_noise_density is not None:
             as_nonnegative("gyro_noise_density", self.gyro_noise_density)
@@ -434,7 +434,7 @@ def _loop_inputs(setup, duration, window, members, release_angle, release_rate, 
     steps_f = float(as_positive("duration", duration, unit="s")) / dt
     steps = int(round(steps_f))
     if abs(steps - steps_f) > 1e-6 * max(1.0, steps_f):
-        raise ValueError(f"duration must be a whole number of samples of {dt} s, got {duration!r}")
+        raise ValueError(f"duration must be a whole number of samples of {dt} s, got {shown(duration)}")
     window = float(as_in_range("window", window, 0.0, steps * dt, unit="s"))
     if members is None:
         sizes = [np.size(v) for v in (release_angle, release_rate, thread_stiffness) if v is not None]
@@ -456,7 +456,7 @@ def _loop_inputs(setup, duration, window, members, release_angle, release_rate, 
         raise ValueError(f"moment_scale must broadcast to ({members}, 2), got shape {scale.shape}") from None
     every = 1 if record_interval is None else float(as_positive("record_interval", record_interval, unit="s")) / dt
     if abs(every - round(every)) > 1e-6 or round(every) < 1:
-        raise ValueError(f"record_interval must be a multiple of the sample interval {dt} s, got {record_interval!r}")
+        raise ValueError(f"record_interval must be a multiple of the sample interval {dt} s, got {shown(record_interval)}")
     every = int(round(every))
     g_err = m_err = None
     if sensor_errors is not None:
@@ -514,12 +514,12 @@ def _error_arrays(members, values):
         lv = out["pwm_levels"]
         if np.any(lv < 1) or np.any(lv != np.rint(lv)):
             bad = lv[(lv < 1) | (lv != np.rint(lv))].ravel()[0]
-            raise ValueError(f"pwm_levels must be whole numbers of duty steps >= 1, got {bad!r}")
+            raise ValueError(f"pwm_levels must be whole numbers of duty steps >= 1, got {shown(bad)}")
     if out.get("magnetometer_matrix") is not None:
         det = np.linalg.det(out["magnetometer_matrix"])
         if np.any(det <= 0):
             raise ValueError("magnetometer_matrix must have a positive determinant (a sensor, not a "
-                             f"mirror or a collapse), got determinant {float(det[det <= 0].ravel()[0])!r}")
+                             f"mirror or a collapse), got determinant {shown(float(det[det <= 0].ravel()[0]))}")
     for name in ("magnetometer_misalignment", "heading_ripple", "field_azimuth"):
         if out.get(name) is not None:
             as_in_range(name, out[name], -np.pi, np.pi, unit="rad")

@@ -22,6 +22,7 @@ from .._validate import (as_choice, as_finite, as_nonnegative, as_positive, as_p
 from ..dynamics.rigid_body import _as_quaternions, _inertia_matrix
 from ..earth.circular_orbit import CircularOrbit
 from .result import SimulationResult
+from .._validate import shown
 
 __all__ = ["DetumbleRun", "simulate_detumble", "detumble_time", "detumble_monte_carlo"]
 
@@ -75,7 +76,7 @@ def _multiple(name, value, step):
     ratio = value / step
     n = int(round(ratio))
     if n < 1 or abs(ratio - n) > 1e-9 * max(1.0, ratio):
-        raise ValueError(f"{name} must be a whole number of integration steps ({step!r} s), got {value!r} s")
+        raise ValueError(f"{name} must be a whole number of integration steps ({shown(step)} s), got {shown(value)} s")
     return n
 
 
@@ -527,10 +528,10 @@ def detumble_monte_carlo(inertia, orbit, *, members, seed, duration, rate_range,
     """
     m = int(as_positive_scalar("members", members))
     if m != members:
-        raise ValueError(f"members must be a positive integer, got {members!r}")
+        raise ValueError(f"members must be a positive integer, got {shown(members)}")
     bounds = as_nonnegative("rate_range", rate_range, unit="rad/s")
     if bounds.shape != (2,) or not bounds[0] <= bounds[1] or bounds[1] == 0:
-        raise ValueError(f"rate_range must be (low, high) with 0 <= low <= high, high > 0 [rad/s], got {rate_range!r}")
+        raise ValueError(f"rate_range must be (low, high) with 0 <= low <= high, high > 0 [rad/s], got {shown(rate_range)}")
     low, high = bounds
     rng = np.random.default_rng(seed)
     attitude = Rotation.random(m, rng=rng).as_quat(scalar_first=True)

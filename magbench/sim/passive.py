@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, as_positive_scalar, as_vectors
+from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, as_positive_scalar, as_vectors, shown
 from ..constants import MU_0
 from ..dynamics.axisymmetric import _inertias, body_rate_from_momentum
 from ..dynamics.rigid_body import _cross, _euler_rates, _quaternion_rate, _rotate
@@ -417,7 +417,7 @@ def flat_spin_decay_rate(satellite, orbit, momentum_direction, spin_axis_angle, 
     beta = as_finite("spin_axis_angle", spin_axis_angle)
     samples = int(orbit_samples)
     if samples != orbit_samples or samples < 4:
-        raise ValueError(f"orbit_samples must be an integer >= 4, got {orbit_samples!r}")
+        raise ValueError(f"orbit_samples must be an integer >= 4, got {shown(orbit_samples)}")
     lhat, beta = np.broadcast_arrays(direction / norm, beta[..., None])
     beta = beta[..., 0]
     if satellite.rod_volume == 0:

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._validate import as_finite, as_positive
+from .._validate import as_finite, as_positive, shown
 from ..dynamics.pendulum import Mockup, mockup_rhs, two_coil_torque
 from ..control.allocation import ALLOCATIONS
 from ..control.pid import pid_step
@@ -66,7 +66,7 @@ class PidLoop:
         for name in ("kp", "ki", "kd", "target"):
             as_finite(name, getattr(self, name))
         if not float(self.moment_limit) > 0:
-            raise ValueError(f"moment_limit must be > 0 A·m² (inf for none), got {self.moment_limit!r}")
+            raise ValueError(f"moment_limit must be > 0 A·m² (inf for none), got {shown(self.moment_limit)}")
         if self.tracking_time is not None:
             as_positive("tracking_time", self.tracking_time, unit="s")
         if self.allocation not in ALLOCATIONS:

@@ -25,7 +25,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
-from .._validate import as_choice, as_finite, as_in_range, as_positive, as_positive_or_infinite, as_positive_scalar
+from .._validate import as_choice, as_finite, as_in_range, as_positive, as_positive_or_infinite, as_positive_scalar, shown
 from ..control.floquet import finite_difference_monodromy, floquet_multipliers
 from ..control.spin import _program_field, _projected
 from ..dynamics.gyrostat import _reduced, airplane_231_angles, airplane_231_matrix, rotor_dimensionless_numbers
@@ -88,7 +88,7 @@ class RotorSatellite:
         object.__setattr__(self, "inertia", j)
         jf = as_positive_scalar("rotor_inertia", self.rotor_inertia, unit="kg·m²")
         if jf >= self.inertia_matrix[0, 0]:
-            raise ValueError(f"rotor_inertia must be < I11 = {self.inertia_matrix[0, 0]!r} kg·m², got {jf!r}")
+            raise ValueError(f"rotor_inertia must be < I11 = {shown(self.inertia_matrix[0, 0])} kg·m², got {shown(jf)}")
         object.__setattr__(self, "rotor_inertia", jf)
         for name in ("spin_rate", "axial_momentum"):
             value = as_finite(name, getattr(self, name))
@@ -273,7 +273,7 @@ def _check_numbers(axial_ratio, momentum, inclination):
     c1 = float(as_finite("momentum", momentum))
     i = float(as_in_range("inclination", inclination, 0.0, math.pi, unit="rad"))
     if abs(math.sin(i)) < 1e-12:
-        raise ValueError(f"inclination must have sin i != 0 (the law divides by sin i), got {i!r}")
+        raise ValueError(f"inclination must have sin i != 0 (the law divides by sin i), got {shown(i)}")
     return a, c1, i
 
 
@@ -785,7 +785,7 @@ def simulate_rotor(satellite, orbit, duration, *, initial_angles=(0.0, 0.0, 0.0)
     if angles0.shape != (3,):
         raise ValueError(f"initial_angles must have shape (3,) (α, β, γ) [rad], got shape {angles0.shape}")
     if abs(angles0[1]) >= 0.5 * math.pi:
-        raise ValueError(f"initial_angles[1] (β) must be in (−π/2, π/2) rad, got {angles0[1]!r}")
+        raise ValueError(f"initial_angles[1] (β) must be in (−π/2, π/2) rad, got {shown(angles0[1])}")
     dw = as_finite("initial_rate_error", initial_rate_error)
     if dw.shape != (3,):
         raise ValueError(f"initial_rate_error must have shape (3,) [rad/s], got shape {dw.shape}")

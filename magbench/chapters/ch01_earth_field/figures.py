@@ -10,6 +10,7 @@ from ..._format import format_number
 from . import CHAPTER
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..._validate import shown
 
 DEG = np.pi / 180.0
 SOURCE = "Bui (2016), thesis §1.1–1.2"
@@ -118,7 +119,7 @@ def compute_fig02(earth_dipole_tilt, geomagnetic_latitude_deg_step):
     """
     step = float(geomagnetic_latitude_deg_step)
     if not 1.0 <= step <= 45.0:
-        raise ValueError(f"geomagnetic_latitude_deg_step must lie in [1, 45] deg, got {step!r}")
+        raise ValueError(f"geomagnetic_latitude_deg_step must lie in [1, 45] deg, got {shown(step)}")
     series = []
     lam = np.linspace(-np.pi / 2, np.pi / 2, 721)
     c, s = np.cos(earth_dipole_tilt), np.sin(earth_dipole_tilt)
@@ -226,10 +227,10 @@ def compute_orbit_field(earth_dipole_moment, earth_radius, orbit_altitude, orbit
     rate while the argument of latitude grows at the orbital rate.
     """
     if not 0.1 <= orbits <= 50:
-        raise ValueError(f"orbits must lie in [0.1, 50], got {orbits!r}")
+        raise ValueError(f"orbits must lie in [0.1, 50], got {shown(orbits)}")
     r = earth_radius + orbit_altitude
     if orbit_altitude <= 0:
-        raise ValueError(f"orbit_altitude must be > 0 m, got {orbit_altitude!r}")
+        raise ValueError(f"orbit_altitude must be > 0 m, got {shown(orbit_altitude)}")
     n = np.sqrt(EARTH_GM / r**3)                  # orbital rate [rad/s]
     t = np.linspace(0.0, orbits * 2 * np.pi / n, int(400 * orbits) + 1)
     u = n * t
@@ -281,7 +282,7 @@ def compute_torque_plane(field_elevation, samples):
     """Torques L × B of many random unit moments L, for a field of 1 T (eqs. 4, 8)."""
     count = int(samples)
     if not 10 <= count <= 100_000:
-        raise ValueError(f"samples must lie in [10, 100000], got {samples!r}")
+        raise ValueError(f"samples must lie in [10, 100000], got {shown(samples)}")
     rng = np.random.default_rng(20160601)      # fixed seed: the figure is reproducible
     moments = rng.normal(size=(count, 3))
     moments /= np.linalg.norm(moments, axis=1, keepdims=True)

@@ -7,7 +7,7 @@ COMSOL, built and measured, beside the exact field of thin loops.
 import numpy as np
 
 from ... import dynamics, fields, hardware
-from ..._validate import as_finite, as_positive
+from ..._validate import as_finite, as_positive, shown
 from ...compare import make_row
 from ...io import load_measurements, load_parameter_set, load_printed
 from ...errata import printed_check
@@ -55,7 +55,7 @@ def thesis_printed_ampere_turns(center_h, radius, spacing_ratio):
     a = as_positive("radius", radius, unit="m")
     r = as_finite("spacing_ratio", spacing_ratio)
     if np.any(r < 0):
-        raise ValueError(f"spacing_ratio must be >= 0, got {r[r < 0].ravel()[0]!r}")
+        raise ValueError(f"spacing_ratio must be >= 0, got {shown(r[r < 0].ravel()[0])}")
     return h * a * (r**2 / 2.0 + 1.0) ** 1.5
 
 

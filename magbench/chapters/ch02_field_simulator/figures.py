@@ -19,6 +19,7 @@ from ...io import load_measurements
 from . import CHAPTER
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..._validate import shown
 
 SOURCE = "Bui (2016), thesis §2"
 
@@ -256,7 +257,7 @@ def plot_zone_criterion(data):
 def compute_fig08(coil_radius, built_spacing, tolerance, cube_side):
     """Coil rings of the as-built pair, the uniform sphere and the mock-up cube."""
     if not 0 < cube_side < coil_radius:
-        raise ValueError(f"cube_side must lie in (0, coil_radius = {coil_radius}) m, got {cube_side!r}")
+        raise ValueError(f"cube_side must lie in (0, coil_radius = {coil_radius}) m, got {shown(cube_side)}")
     a, d = coil_radius, built_spacing
     t = np.linspace(0, 2 * np.pi, 181)
     series = [Series(f"coil at x = {sx * d / 2 * 100:+.1f} cm", {
@@ -355,11 +356,11 @@ def compute_fig03(tolerance, center_h, power, winding_area, copper_resistivity):
     L = (P A_cu h0² / (ρ H0² Σ w_k² ℓ_k))^{1/3} and its uniform sphere is s_δ L.
     """
     if not 0 < tolerance < 0.5:
-        raise ValueError(f"tolerance must lie in (0, 0.5), got {tolerance!r}")
+        raise ValueError(f"tolerance must lie in (0, 0.5), got {shown(tolerance)}")
     for name, value in (("center_h", center_h), ("power", power), ("winding_area", winding_area),
                         ("copper_resistivity", copper_resistivity)):
         if value <= 0:
-            raise ValueError(f"{name} must be > 0, got {value!r}")
+            raise ValueError(f"{name} must be > 0, got {shown(value)}")
     series = []
     for name, shapes, sizes, positions, weights in coil_systems():
         w = np.asarray(weights) / max(weights)
@@ -643,7 +644,7 @@ def compute_three_axis(radius_north, radius_east, radius_down, turns, target_h_n
     The background is the IGRF field at the place and date. Each pair has d = a.
     """
     if not 0 < tolerance < 0.5:
-        raise ValueError(f"tolerance must lie in (0, 0.5), got {tolerance!r}")
+        raise ValueError(f"tolerance must lie in (0, 0.5), got {shown(tolerance)}")
     radii = np.array([radius_north, radius_east, radius_down])
     f = igrf.igrf_field(latitude, longitude, year)
     background = np.array([f.north, f.east, f.down])

@@ -10,6 +10,7 @@ from ...io import load_wire_table
 from . import CHAPTER
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..._validate import shown
 
 SOURCE = "Bui (2016), thesis §3"
 
@@ -49,7 +50,7 @@ def compute_fig09(mtq_side, mtq_turns, wire_pitch, coils):
     """
     n_coils = int(coils)
     if n_coils not in (2, 3) or n_coils != coils:
-        raise ValueError(f"coils must be 2 or 3, got {coils!r}")
+        raise ValueError(f"coils must be 2 or 3, got {shown(coils)}")
     if mtq_side <= 0 or mtq_turns < 1 or wire_pitch <= 0:
         raise ValueError(f"mtq_side, mtq_turns and wire_pitch must be positive, got "
                          f"{mtq_side!r}, {mtq_turns!r}, {wire_pitch!r}")

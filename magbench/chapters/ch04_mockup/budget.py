@@ -25,6 +25,7 @@ import numpy as np
 
 from ...constants import MU_0
 from ...io.data import DATA_DIR, DataError, to_si, verify_checksum
+from ..._validate import shown
 
 __all__ = ["ErrorSource", "load_error_sources", "nominal_values", "simulate_sources", "one_at_a_time",
            "sobol_design", "sobol_analysis", "sobol_budget", "from_unit_cube",
@@ -266,7 +267,7 @@ def one_at_a_time(setup, targets, sources, *, points, duration, window, field_h,
     """
     points = int(points)
     if points < 2:
-        raise ValueError(f"points must be >= 2, got {points!r}")
+        raise ValueError(f"points must be >= 2, got {shown(points)}")
     targets = np.atleast_1d(np.asarray(targets, float))
     names = list(sources)
     grid = np.linspace(0.0, 1.0, points)
@@ -308,7 +309,7 @@ def sobol_design(sources, *, base_samples, seed, fixed=None):
 
     n = int(base_samples)
     if n < 2 or n & (n - 1):
-        raise ValueError(f"base_samples must be a power of 2 >= 2, got {base_samples!r}")
+        raise ValueError(f"base_samples must be a power of 2 >= 2, got {shown(base_samples)}")
     fixed = fixed or {}
     unknown = set(fixed) - set(sources)
     if unknown:

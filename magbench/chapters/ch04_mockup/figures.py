@@ -14,6 +14,7 @@ from ..._format import format_number
 from . import CHAPTER, KD_SWEEP, KP_SWEEP, PRINTED_SETS
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..._validate import shown
 
 SOURCE = "Bui (2016), thesis §4"
 DEG = np.pi / 180.0
@@ -150,7 +151,7 @@ def compute_free_pendulum(inertia, field, moment, initial_angle, initial_angle_a
     from scipy.integrate import solve_ivp
 
     if not 1.0 <= duration <= 3600.0:
-        raise ValueError(f"duration must lie in [1, 3600] s, got {duration!r}")
+        raise ValueError(f"duration must lie in [1, 3600] s, got {shown(duration)}")
     plant = dynamics.Mockup(inertia, field, moment)
     t = np.linspace(0.0, duration, 3001)
     series = []
@@ -209,7 +210,7 @@ def compute_period_ratio(inertia, moment, field, period, amplitude_checks):
 
     n_checks = int(amplitude_checks)
     if not 0 <= n_checks <= 20:
-        raise ValueError(f"amplitude_checks must lie in [0, 20], got {amplitude_checks!r}")
+        raise ValueError(f"amplitude_checks must lie in [0, 20], got {shown(amplitude_checks)}")
     amp = np.linspace(0.0, 0.999 * np.pi, 500)
     t0 = float(dynamics.small_angle_period(inertia, moment, field))
     ratio = dynamics.pendulum_period(amp, inertia, moment, field) / t0
@@ -362,9 +363,9 @@ def compute_sweep(inertia, field, moment, initial_angle, duration, hypothesis_sc
     """Closed-loop runs for one gain sweep: in SI (saturated at the coils' maximum) and with
     every gain and the limit multiplied by ``hypothesis_scale`` (a unit reading)."""
     if not 1.0 <= duration <= 3600.0:
-        raise ValueError(f"duration must lie in [1, 3600] s, got {duration!r}")
+        raise ValueError(f"duration must lie in [1, 3600] s, got {shown(duration)}")
     if not hypothesis_scale > 0:
-        raise ValueError(f"hypothesis_scale must be > 0, got {hypothesis_scale!r}")
+        raise ValueError(f"hypothesis_scale must be > 0, got {shown(hypothesis_scale)}")
     series = []
     for tag, scale in (("SI", 1.0), ("hypothesis", hypothesis_scale)):
         for kp, ki, kd in sweep:
@@ -642,7 +643,7 @@ def compute_step_response(inertia, field, moment, bandwidth, sample_interval, sm
     import control as ct
 
     if not 0 < small_step <= np.pi and 0 < large_step <= np.pi:
-        raise ValueError(f"steps must lie in (0, π] rad, got {small_step!r} and {large_step!r}")
+        raise ValueError(f"steps must lie in (0, π] rad, got {shown(small_step)} and {shown(large_step)}")
     kp, ki, kd = _design_gains(inertia, field, bandwidth)
     closed = ct.tf(field * np.array([kp, ki]), control.closed_loop_polynomial(inertia, field, kp, ki, kd))
     series = []

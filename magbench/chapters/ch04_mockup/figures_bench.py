@@ -17,6 +17,7 @@ from . import CHAPTER
 from .._base import chapter_parameters
 from ...rotations import wrap_angle
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..._validate import shown
 
 SOURCE = "Bui (2016), thesis §4.4, Figs. 19–20; model: magbench.sim.bench"
 DEG = np.pi / 180.0
@@ -87,7 +88,7 @@ def compute_trace(psi_des, release_angle, release_rate, envelope_members, **p):
                                window=p["bench_error_window"])
     n_env = int(round(envelope_members))
     if n_env < 2:
-        raise ValueError(f"envelope_members must be >= 2, got {envelope_members!r}")
+        raise ValueError(f"envelope_members must be >= 2, got {shown(envelope_members)}")
     # The envelope's members are released about the nominal run's own release angle and
     # rate (not about the target, as in ch04-montecarlo), so that the nominal run, whose
     # moments and thread are the centres of the members' spreads, is one of them.

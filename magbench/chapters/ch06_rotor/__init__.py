@@ -21,6 +21,7 @@ from ...sim.spinning import simulate_rotor
 from ..._format import format_number
 from .._base import Chapter, chapter_parameters
 from .defaults import default_rotor_orbit, default_rotor_satellite, rotor_parameters
+from ..._validate import shown
 
 __all__ = ["CHAPTER", "INPUTS", "default_rotor_orbit", "default_rotor_satellite", "rotor_parameters",
            "default_run", "orbit_maxima", "claim_rows", "damping_checks", "kovalenko_checks",
@@ -189,9 +190,9 @@ def relay_spin_correction(relative_change, field_ratio, *, torque_number=2e-4, a
     from scipy.integrate import solve_ivp
 
     if not 0.0 < relative_change < 0.5:
-        raise ValueError(f"relative_change must be in (0, 0.5), got {relative_change!r}")
+        raise ValueError(f"relative_change must be in (0, 0.5), got {shown(relative_change)}")
     if not 0.0 <= field_ratio <= 10.0:
-        raise ValueError(f"field_ratio must be in [0, 10], got {field_ratio!r}")
+        raise ValueError(f"field_ratio must be in [0, 10], got {shown(field_ratio)}")
     j1, j3, l0 = 1.0, float(axial_ratio), float(torque_number) * float(axial_ratio)
     b_inertial = np.array([1.0, 0.0, float(field_ratio)])
 

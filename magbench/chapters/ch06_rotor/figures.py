@@ -18,6 +18,7 @@ from ...sim.spinning import rotor_dimensionless, rotor_stability_map
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 from . import CHAPTER, default_rotor_orbit, default_rotor_satellite, default_run, orbit_maxima
+from ..._validate import shown
 
 SOURCE = "rotor slides (Ovchinnikov, Pen'kov, Roldugin, Tkachev)"
 DEG = math.pi / 180.0
@@ -71,7 +72,7 @@ def compute_stability_map(axial_ratio, momentum, inclination, restoring, damping
     """max|ρ| over (κ, κ_w) (the lost stability slide)."""
     n = int(grid_points)
     if n < 2:
-        raise ValueError(f"grid_points must be >= 2, got {grid_points!r}")
+        raise ValueError(f"grid_points must be >= 2, got {shown(grid_points)}")
     kappa = np.linspace(restoring_max / n, restoring_max, n)
     kappa_w = np.linspace(damping_max / n, damping_max, n)
     rho = rotor_stability_map(kappa, kappa_w, axial_ratio=axial_ratio, momentum=momentum, inclination=inclination,
@@ -401,7 +402,7 @@ def _pointing_series(label, run, w0):
 def _whole_orbits(orbits):
     n = int(orbits)
     if n < 1:
-        raise ValueError(f"orbits must be >= 1, got {orbits!r}")
+        raise ValueError(f"orbits must be >= 1, got {shown(orbits)}")
     return n
 
 
@@ -555,7 +556,7 @@ def compute_spin_relay(samples):
     """Kovalenko's relay spin law (7.12) over a turn of the transverse field: its spin-axis torque per L0 B⊥."""
     n = int(samples)
     if n < 8:
-        raise ValueError(f"samples must be >= 8, got {samples!r}")
+        raise ValueError(f"samples must be >= 8, got {shown(samples)}")
     alpha = (np.arange(n) + 0.5) * (2.0 * math.pi / n)
     bx, by = np.cos(alpha), np.sin(alpha)
     lx, ly = -np.sign(by), np.sign(bx)
@@ -678,7 +679,7 @@ def _asymmetric_run(items, asymmetry, orbits):
 def asymmetry_members(default, largest):
     """The ε of the sweep: symmetric, 0.4 of the default, the default and ``largest`` [-]."""
     if not 0.0 <= largest < 1.0:
-        raise ValueError(f"largest_asymmetry must be in [0, 1) (I22 > 0), got {largest!r}")
+        raise ValueError(f"largest_asymmetry must be in [0, 1) (I22 > 0), got {shown(largest)}")
     return tuple(sorted({0.0, round(0.4 * default, 12), float(default), float(largest)}))
 
 

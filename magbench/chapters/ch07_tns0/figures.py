@@ -11,6 +11,7 @@ from ...constants import MU_0
 from . import CHAPTER, capture_run, decay_balance, decay_fits, full_run, orbit_from, session_fits
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..._validate import shown
 
 SOURCE = "TNS-0 preprint (Ilyin et al. 2006)"
 DEG = np.pi / 180.0
@@ -291,7 +292,7 @@ def compute_session_model(row, duration, transverse_inertia, axial_inertia):
     tab = load_table1()
     k = int(round(row)) - 1
     if not 0 <= k < tab.session.size:
-        raise ValueError(f"row must be a Table 1 row in [1, {tab.session.size}], got {row!r}")
+        raise ValueError(f"row must be a Table 1 row in [1, {tab.session.size}], got {shown(row)}")
 
     def value(name, default=0.0):
         v = float(tab.values[name][k])

@@ -12,6 +12,7 @@ identifiable, it trades against the phases (:func:`identifiability`).
 import time as _time
 
 import numpy as np
+from ..._validate import shown
 
 #: Sensor normals ДС1–ДС3 in body axes (ours: only n1 = −n3 is in the text).
 SENSOR_NORMALS = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [-1.0, 0.0, 0.0]])
@@ -86,7 +87,7 @@ def synthetic_session(truth, transverse_inertia, axial_inertia, *, duration=60.0
         [-].
     """
     if duration <= 0 or rate <= 0 or noise < 0:
-        raise ValueError(f"duration ({duration!r} s) and rate ({rate!r} /s) must be > 0 and noise ({noise!r}) >= 0")
+        raise ValueError(f"duration ({shown(duration)} s) and rate ({rate!r} /s) must be > 0 and noise ({noise!r}) >= 0")
     t = np.arange(0.0, duration, 1.0 / rate)
     clean = sensor_signals(t, truth, transverse_inertia, axial_inertia)
     return t, clean + noise * np.random.default_rng(seed).normal(size=clean.shape)
