@@ -11,6 +11,7 @@ Usage::
 
 import argparse
 import json
+import os
 import sys
 from pathlib import Path
 
@@ -52,6 +53,12 @@ def _cmd_figure(args):
         print(f"magbench figure: --out must end in one of {', '.join(_FORMATS)}, got {args.out!r}",
               file=sys.stderr)
         return 2
+    # Before computing: a figure can take minutes, and its result must not be lost to a typo.
+    for flag, path in (("--out", args.out), ("--data", args.data)):
+        problem = path and _unwritable(path)
+        if problem:
+            print(f"magbench figure: {flag} {path}: {problem}", file=sys.stderr)
+            return 2
     try:
         figures.resolve_parameters(args.id, overrides)
     except (KeyError, ValueError) as exc:      # unknown parameter name, or not a finite number
@@ -66,8 +73,12 @@ def _cmd_figure(args):
             # A fixed salt: SVG clip-path ids are hashes salted with a random UUID otherwise,
             # so the same figure would give a different file at every run.
             with matplotlib.rc_context({"svg.hashsalt": "magbench"}):
-                fig.savefig(args.out, dpi=150, metadata=_file_metadata(args.out, figures.caption_provenance(
-                    args.id, data.parameters)))
+                try:
+                    fig.savefig(args.out, dpi=150, metadata=_file_metadata(args.out, figures.caption_provenance(
+                        args.id, data.parameters)))
+                except OSError as exc:
+                    print(f"magbench figure: --out {args.out}: {exc.strerror or exc}", file=sys.stderr)
+                    return 2
         else:
             data = figures.compute(args.id, **overrides)
     except (KeyError, ValueError) as exc:      # a value out of the range of the function it reaches
@@ -78,9 +89,26 @@ def _cmd_figure(args):
         print(f"magbench figure: {context}{exc.args[0]}", file=sys.stderr)
         return 2
     if args.data:
-        Path(args.data).write_text(json.dumps(data.to_json_dict(), indent=1), encoding="utf-8")
+        try:
+            Path(args.data).write_text(json.dumps(data.to_json_dict(), indent=1), encoding="utf-8")
+        except OSError as exc:
+            print(f"magbench figure: --data {args.data}: {exc.strerror or exc}", file=sys.stderr)
+            return 2
     print(figures.caption_provenance(args.id, data.parameters))
     return 0
+
+
+def _unwritable(path):
+    """Why ``path`` cannot be written as a file, or None if it can."""
+    target = Path(path)
+    folder = target.parent
+    if target.is_dir():
+        return "is a folder, not a file"
+    if not folder.is_dir():
+        return f"folder {folder} does not exist"
+    if not os.access(folder, os.W_OK) or (target.exists() and not os.access(target, os.W_OK)):
+        return "not writable"
+    return None
 
 
 def _file_metadata(path, description):
@@ -317,7 +345,22 @@ def main(argv=None):
     args = parser.parse_args(argv)
     handler = {"figures": _cmd_figures, "figure": _cmd_figure, "compare": _cmd_compare,
                "design-coil": _cmd_design_coil}[args.command]
-    return handler(args)
+    from .io import DataError
+
+    try:
+        status = handler(args)
+        sys.stdout.flush()       # inside the try: a closed pipe fails here, not at exit
+        return status
+    except DataError as exc:
+        # A data file or a $MAGBENCH_PARAMS file that is missing, tampered with or out of
+        # range: its message names the file and the value; a traceback adds nothing.
+        print(f"magbench {args.command}: {exc}", file=sys.stderr)
+        return 2
+    except BrokenPipeError:
+        # The reader closed the pipe (`magbench compare --json | head`): not an error of
+        # ours. Python's recipe: point stdout at devnull so the exit flush does not fail too.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
 
 
 if __name__ == "__main__":

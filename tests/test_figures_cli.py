@@ -105,3 +105,45 @@ def test_a_figures_defaults_are_read_on_first_use():
     spec = figures.get_spec("thesis-fig05")
     assert spec.parameters is spec.parameters          # read once, then cached
     assert all(isinstance(p, figures.FigureParameter) for p in spec.parameters.values())
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["figure", "ch01-field-elements", "--out", "{tmp}/missing/x.png"], "--out {tmp}/missing/x.png: folder {tmp}/missing does not exist"),
+    (["figure", "ch01-field-elements", "--data", "{tmp}"], "--data {tmp}: is a folder, not a file"),
+    (["figure", "ch04-step-response", "--set", "duration=1e7"],
+     "parameter duration of ch04-step-response must be <= 10000 s"),
+])
+def test_cli_refuses_before_computing(argv, message, tmp_path, capsys, monkeypatch):
+    # Each of these used to compute first (minutes for the last, which never ended) and
+    # then fail with a traceback; now one line, exit 2, and nothing is computed.
+    from magbench import figures
+
+    def computed(*args, **kwargs):
+        raise AssertionError("computed before the check")
+
+    monkeypatch.setattr(figures, "compute", computed)
+    monkeypatch.setattr(figures, "render", computed)
+    argv = [a.replace("{tmp}", str(tmp_path)) for a in argv]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("magbench figure: "), err
+    assert message.replace("{tmp}", str(tmp_path)) in err
+
+
+def test_cli_names_a_missing_parameter_file_in_one_line(tmp_path, capsys, monkeypatch):
+    monkeypatch.setenv("MAGBENCH_PARAMS", str(tmp_path / "nope.toml"))
+    assert main(["compare"]) == 2
+    err = capsys.readouterr().err
+    assert err == f"magbench compare: parameter file {tmp_path / 'nope.toml'} (from $MAGBENCH_PARAMS) does not exist\n"
+
+
+def test_cli_quiet_when_the_reader_closes_the_pipe():
+    # The reader (`true`) leaves before anything is printed, as `head` does after its lines;
+    # the listing's flush then used to end in "Exception ignored ... BrokenPipeError" and
+    # status 120. Now: nothing on stderr, status 0 (PIPESTATUS gives magbench's own).
+    import subprocess
+    import sys
+
+    proc = subprocess.run(["bash", "-c", f"'{sys.executable}' -m magbench.cli figures | true; "
+                           "echo ${PIPESTATUS[0]} >&2"], capture_output=True, text=True, timeout=120)
+    assert proc.stderr == "0\n", proc.stderr

@@ -29,6 +29,8 @@ def test_overrides_file(tmp_path, monkeypatch):
     ("[ch01]\nno_such = 1\n", "no parameter 'no_such'"),
     ("[ch99]\nx = 1\n", r"unknown section \[ch99\]"),
     ("[ch01]\norbit_altitude = 'high'\n", "must be a number"),
+    ("[ch01]\norbit_altitude = nan\n", r"o.toml: \[ch01\] orbit_altitude must be finite, got nan"),
+    ("[all]\norbit_altitude = -inf\n", r"o.toml: \[all\] orbit_altitude must be finite, got -inf"),
 ])
 def test_bad_overrides(tmp_path, text, match):
     path = tmp_path / "o.toml"

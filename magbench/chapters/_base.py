@@ -7,6 +7,7 @@ model-vs-measurement rows and its source checks. :data:`magbench.chapters.CHAPTE
 lists the chapters in book order; everything that walks chapters walks that list.
 """
 
+import math
 import os
 import tomllib
 from dataclasses import dataclass, field
@@ -106,6 +107,8 @@ def read_overrides(path):
         for name, value in values.items():
             if isinstance(value, bool) or not isinstance(value, int | float):
                 raise DataError(f"{path}: [{section}] {name} must be a number (SI), got {shown(value)}")
+            if not math.isfinite(value):     # TOML spells them nan and inf
+                raise DataError(f"{path}: [{section}] {name} must be finite, got {value!r}")
             known = set().union(*inputs.values()) if section == "all" else inputs[section]
             if name not in known:
                 raise DataError(f"{path}: [{section}] has no parameter {name!r}; "

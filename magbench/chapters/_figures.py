@@ -7,7 +7,7 @@ command line.
 
 from dataclasses import dataclass, field
 
-__all__ = ["FigureParameter", "Series", "FigureData", "FigureSpec", "REGISTRY", "register"]
+__all__ = ["FigureParameter", "WORK_LIMITS", "Series", "FigureData", "FigureSpec", "REGISTRY", "register"]
 
 
 @dataclass(frozen=True)
@@ -17,6 +17,33 @@ class FigureParameter:
     default: float
     unit: str
     description: str
+
+
+#: Inputs that set a figure's amount of work, and the values a figure accepts (SI,
+#: inclusive; None: no bound on that side). Each keeps one figure to minutes on one core
+#: (the defaults take seconds to about a minute), so that ``--set duration=1e7`` or a
+#: parameter file with a million members is refused at once, naming the range, instead of
+#: running for hours. One name means one concept across the chapters, so the table is
+#: keyed by name; the library functions behind the figures take any size.
+WORK_LIMITS = {
+    "orbits": (None, 50.0),
+    "samples": (None, 1e5),
+    "duration": (None, 1e4),
+    "steps": (None, 1e5),
+    "grid_points": (None, 200.0),
+    "span": (None, 1e5),
+    "integration_step": (0.01, None),
+    "bench_duration": (None, 3600.0),
+    "bench_members": (None, 2e4),
+    "budget_points": (None, 20.0),
+    "budget_base_samples": (None, 1024.0),
+    "envelope_members": (None, 1e4),
+    "envelope_duration": (None, 1e5),
+    "fig2_members": (None, 100.0),
+    "capture_duration": (None, 1e7),
+    "capture_members": (None, 1e4),
+    "full_run_duration": (None, 3e7),
+}
 
 
 @dataclass

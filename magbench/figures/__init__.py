@@ -18,7 +18,7 @@ __all__ = [
 ]
 
 
-from ..chapters._figures import REGISTRY, FigureData, FigureParameter, FigureSpec, Series, register
+from ..chapters._figures import REGISTRY, WORK_LIMITS, FigureData, FigureParameter, FigureSpec, Series, register
 from .._validate import shown
 
 _loaded = False
@@ -52,7 +52,8 @@ def resolve_parameters(figure_id, overrides=None):
     """Defaults of a figure's parameters updated with ``overrides`` (SI numbers).
 
     An unknown name raises ``KeyError`` listing the figure's parameters; a value that is
-    not a finite number raises ``ValueError`` naming it.
+    not a finite number, or lies outside the parameter's ``limits``, raises ``ValueError``
+    naming it.
     """
     import math
 
@@ -69,6 +70,17 @@ def resolve_parameters(figure_id, overrides=None):
         if not math.isfinite(number):
             raise ValueError(f"parameter {name} of {figure_id} must be finite, got {shown(value)}")
         values[name] = number
+    # Defaults too: they may come from a whole-book parameter file ($MAGBENCH_PARAMS).
+    for name, number in values.items():
+        low, high = WORK_LIMITS.get(name, (None, None))
+        unit = spec.parameters[name].unit
+        unit = f" {unit}" if unit not in ("", "1", "-") else ""
+        if low is not None and number < low:
+            raise ValueError(f"parameter {name} of {figure_id} must be >= {low:g}{unit} (a figure's work is "
+                             f"bounded to minutes; call the library for more), got {number:g}")
+        if high is not None and number > high:
+            raise ValueError(f"parameter {name} of {figure_id} must be <= {high:g}{unit} (a figure's work is "
+                             f"bounded to minutes; call the library for more), got {number:g}")
     return values
 
 
