@@ -7,7 +7,7 @@ command line.
 
 from dataclasses import dataclass, field
 
-__all__ = ["FigureParameter", "WORK_LIMITS", "Series", "FigureData", "FigureSpec", "REGISTRY", "register"]
+__all__ = ["FigureParameter", "WORK_LIMITS", "WHOLE_NUMBER_INPUTS", "Series", "FigureData", "FigureSpec", "REGISTRY", "register"]
 
 
 @dataclass(frozen=True)
@@ -44,6 +44,16 @@ WORK_LIMITS = {
     "capture_members": (None, 1e4),
     "full_run_duration": (None, 3e7),
 }
+
+#: Inputs that count something (members, points, steps, turns, a seed, a code): a figure
+#: refuses 1.5 instead of computing with 1 while its caption shows 1.5. Orbits are a
+#: length of time (2.5 orbits is meaningful) and are not here.
+WHOLE_NUMBER_INPUTS = frozenset({
+    "amplitude_checks", "bench_members", "bench_pwm_levels", "bench_seed", "budget_base_samples",
+    "budget_points", "budget_seed", "capture_members", "capture_seed", "coils", "envelope_members",
+    "envelope_seed", "estimator", "fig2_members", "fig2_seed", "grid_points", "mtq_turns", "order",
+    "row", "samples", "seed", "steps", "turns",
+})
 
 
 @dataclass

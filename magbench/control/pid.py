@@ -6,7 +6,7 @@ saturates it, and the integral stops winding up while the output is saturated. S
 
 import numpy as np
 
-from .._validate import as_positive
+from .._validate import as_positive, shown
 
 __all__ = ["pid_step", "pid_gains_for_triple_pole", "ziegler_nichols_pid"]
 
@@ -42,8 +42,8 @@ def pid_step(error, error_rate, integral, dt, kp, ki, kd, output_limit=np.inf):
     -----
     Thesis eq. (37), with rectangle-rule integration. The thesis does
     not state a sample time, derivative source or anti-windup; these
-    choices are ours. No argument checks: the simulation that calls this checks its
-    inputs once. Broadcasts over any shape (Monte Carlo members).
+    choices are ours. The only argument check is the limit's sign (a negative one would
+    invert the output); the simulation that calls this checks the rest once. Broadcasts over any shape (Monte Carlo members).
 
     Examples
     --------
@@ -54,6 +54,9 @@ def pid_step(error, error_rate, integral, dt, kp, ki, kd, output_limit=np.inf):
     >>> float(u), float(i)
     (0.4, 0.0)
     """
+    # np.clip with a negative limit returns the limit's sign flipped: the output inverted.
+    if np.any(np.less_equal(output_limit, 0.0)) or np.any(np.isnan(output_limit)):
+        raise ValueError(f"output_limit must be > 0 (inf for none), got {shown(np.ravel(output_limit)[0])}")
     candidate = integral + error * dt
     unsaturated = kp * error + ki * candidate + kd * error_rate
     output = np.clip(unsaturated, -output_limit, output_limit)

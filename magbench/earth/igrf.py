@@ -155,6 +155,20 @@ class IgrfField:
         return float(np.arctan2(self.east, self.north))
 
 
+#: Lowest altitude :func:`igrf_field` accepts [m]: the core-mantle boundary, 3480 km from
+#: the centre (PREM), below the 6371.2 km reference radius (the ellipsoid's heights differ
+#: from the sphere's by at most 21 km, which this bound does not need to resolve). The expansion describes the
+#: field outside its sources, which lie in the core.
+LOWEST_ALTITUDE = 3480e3 - IGRF_REFERENCE_RADIUS
+
+
+def _check_degree(max_degree):
+    """A whole number of degrees in [1, 13]; 1.5 is refused rather than truncated to 1."""
+    if isinstance(max_degree, bool) or not np.isfinite(float(max_degree)) \
+            or float(max_degree) != int(max_degree) or not 1 <= int(max_degree) <= 13:
+        raise ValueError(f"max_degree must be a whole number in [1, 13], got {shown(max_degree)}")
+
+
 def igrf_field(latitude, longitude, year, *, altitude=0.0, max_degree=13):
     """The IGRF-14 field at a geodetic position and date.
 
@@ -168,9 +182,12 @@ def igrf_field(latitude, longitude, year, *, altitude=0.0, max_degree=13):
     year : float
         Decimal year within 1900–2030 [year].
     altitude : float, optional
-        Height above the WGS-84 ellipsoid [m].
+        Height above the WGS-84 ellipsoid [m], > :data:`LOWEST_ALTITUDE` (−2891.2 km: about
+        the core-mantle boundary; the ellipsoid's height differs from the reference
+        sphere's by at most 21 km).
     max_degree : int, optional
-        Highest spherical-harmonic degree (1 gives the dipole part only) [-].
+        Highest spherical-harmonic degree (1 gives the dipole part only), a whole number
+        in [1, 13] [-].
 
     Returns
     -------
@@ -180,13 +197,19 @@ def igrf_field(latitude, longitude, year, *, altitude=0.0, max_degree=13):
     -----
     Not in the thesis: IGRF-14 via ``ppigrf.igrf``.
     """
+    for name, value in (("latitude", latitude), ("longitude", longitude), ("altitude", altitude)):
+        if np.ndim(value) != 0:
+            raise ValueError(f"{name} must be a scalar (igrf_field evaluates one point; call it per point "
+                             f"or use ppigrf.igrf for grids), got shape {np.shape(value)}")
     lat = as_in_range("latitude", latitude, -np.pi / 2, np.pi / 2, unit="rad")
     if abs(float(lat)) >= np.pi / 2:
         raise ValueError(f"latitude must lie strictly inside (-π/2, π/2) rad, got {shown(float(lat))}")
     lon = as_finite("longitude", longitude)
-    alt = as_finite("altitude", altitude)
-    if not 1 <= int(max_degree) <= 13:
-        raise ValueError(f"max_degree must lie in [1, 13], got {shown(max_degree)}")
+    alt = float(as_finite("altitude", altitude))
+    if alt <= LOWEST_ALTITUDE:
+        raise ValueError(f"altitude must be > {LOWEST_ALTITUDE:g} m (the core-mantle boundary: the expansion "
+                         f"holds only outside its sources), got {shown(alt)}")
+    _check_degree(max_degree)
     date = decimal_year_to_datetime(year)
     _check_date(date)
     import ppigrf
@@ -219,6 +242,9 @@ def igrf_mean_surface_b(year, *, max_degree=13, nodes=48):
     Kovalenko (1975) p. 40 defines the mean field T_c = (1/4π) ∮ T dΩ and evaluates
     it for the 1965 field with n ≤ 6 (0.436 Oe). Not in the thesis.
     """
+    _check_degree(max_degree)
+    if isinstance(nodes, bool) or not float(nodes) == int(nodes) or int(nodes) < 1:
+        raise ValueError(f"nodes must be a whole number >= 1, got {shown(nodes)}")
     date = decimal_year_to_datetime(year)
     _check_date(date)
     import ppigrf
@@ -251,8 +277,7 @@ def igrf_gauss_coefficients(year, *, max_degree=13):
     -----
     Not in the thesis: IGRF-14 as shipped with ppigrf.
     """
-    if not 1 <= int(max_degree) <= 13:
-        raise ValueError(f"max_degree must lie in [1, 13], got {shown(max_degree)}")
+    _check_degree(max_degree)
     date = decimal_year_to_datetime(year)
     _check_date(date)
     gdf, hdf = _coefficients()

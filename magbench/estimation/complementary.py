@@ -92,6 +92,8 @@ def complementary_filter(gyro_rate, accel_angle, dt, alpha, initial_angle=None):
         raise ValueError("gyro_rate must be an array with time along axis 0, got a scalar")
     gyro, ref = np.broadcast_arrays(gyro, ref)
     n = gyro.shape[0]
+    if n == 0:
+        raise ValueError("gyro_rate and accel_angle must hold at least one sample along axis 0, got none")
     step = as_positive("dt", dt, unit="s")
     if step.ndim == 1 and step.shape[0] == n:
         step = step.reshape((n,) + (1,) * (gyro.ndim - 1))

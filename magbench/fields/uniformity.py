@@ -102,6 +102,10 @@ def sphere_nonuniformity(radius, separation, sphere_radius):
     a = _positive_scalar("radius", radius, unit="m")
     d = _nonnegative_scalar("separation", separation, unit="m")
     s = _nonnegative_scalar("sphere_radius", sphere_radius, unit="m")
+    wire = np.hypot(a, d / 2.0)      # distance from the centre to every point of both wires
+    if s >= wire:
+        raise ValueError(f"sphere_radius must be < {wire:.6g} m (the distance to the wires, √(a² + d²/4)), "
+                         f"got {shown(s)}")
     return float(_sphere_boundary_dev(s / a, d / a))
 
 

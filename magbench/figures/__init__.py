@@ -18,7 +18,8 @@ __all__ = [
 ]
 
 
-from ..chapters._figures import REGISTRY, WORK_LIMITS, FigureData, FigureParameter, FigureSpec, Series, register
+from ..chapters._figures import (REGISTRY, WHOLE_NUMBER_INPUTS, WORK_LIMITS, FigureData, FigureParameter, FigureSpec,
+                                 Series, register)
 from .._validate import shown
 
 _loaded = False
@@ -69,6 +70,8 @@ def resolve_parameters(figure_id, overrides=None):
             raise ValueError(f"parameter {name} of {figure_id} must be a number, got {shown(value)}") from None
         if not math.isfinite(number):
             raise ValueError(f"parameter {name} of {figure_id} must be finite, got {shown(value)}")
+        if name in WHOLE_NUMBER_INPUTS and number != round(number):
+            raise ValueError(f"parameter {name} of {figure_id} must be a whole number, got {number:g}")
         values[name] = number
     # Defaults too: they may come from a whole-book parameter file ($MAGBENCH_PARAMS).
     for name, number in values.items():

@@ -262,7 +262,11 @@ def quantise_duty(duty, levels):
     d = np.asarray(duty, dtype=float)
     if np.ndim(levels) == 0 and not levels:
         return d
-    return np.rint(d * levels) / levels
+    steps = np.asarray(levels, dtype=float)
+    if np.any(~np.isfinite(steps) | (steps < 1) | (steps != np.rint(steps))):
+        bad = steps[~np.isfinite(steps) | (steps < 1) | (steps != np.rint(steps))].ravel()[0]
+        raise ValueError(f"levels must be a whole number of duty steps >= 1, or 0 for none, got {shown(bad)}")
+    return np.rint(d * steps) / steps
 
 
 def plant_step(psi, rate, moment_1, moment_2, dt, *, field, inertia, thread_stiffness=0.0,

@@ -325,7 +325,7 @@ class _Schedule:
 
 def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dipole, law="bdot",
                       mode="continuous", control_interval=0.1, on_time=16.0, off_time=1.0, estimator="model",
-                      step=None, gravity_gradient=True, record_interval=1.0):
+                      step=None, gravity_gradient=True, record_interval=None):
     r"""Simulate B-dot detumbling of M members at once (RK4, fixed step).
 
     Parameters
@@ -370,7 +370,9 @@ def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dip
     gravity_gradient : bool, optional
         Include the gravity-gradient torque [-].
     record_interval : float, optional
-        Interval between records of |ω|; a whole number of steps [s].
+        Interval between records of |ω|; a whole number of steps [s]. Default 1 s, or,
+        with a given ``step``, the whole number of steps nearest 1 s (at least one: a 2 s
+        step records every 2 s).
 
     Returns
     -------
@@ -406,7 +408,13 @@ def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dip
     delta = as_positive_scalar("control_interval", control_interval, unit="s")
     t_on = as_positive_scalar("on_time", on_time, unit="s")
     t_off = as_positive_scalar("off_time", off_time, unit="s")
-    every = as_positive_scalar("record_interval", record_interval, unit="s")
+    if record_interval is not None:
+        every = as_positive_scalar("record_interval", record_interval, unit="s")
+    elif step is None:
+        every = 1.0
+    else:
+        given = as_positive_scalar("step", step, unit="s")
+        every = given * max(1, round(1.0 / given))
     if not isinstance(gravity_gradient, (bool, np.bool_)):
         raise ValueError(f"gravity_gradient must be True or False, got {gravity_gradient!r}")
     speed = float(np.max(np.linalg.norm(w0, axis=-1)))
