@@ -36,6 +36,33 @@ def test_fingerprint_tracks_library_data_and_overrides(tmp_path, monkeypatch):
     assert fp.fingerprint() == after_code      # deterministic
 
 
+def test_fingerprint_tracks_the_broad_folder_and_its_recordings(tmp_path, monkeypatch):
+    # Adding a recording used to leave the "recordings not found" page in the cache.
+    fp = _load("fingerprint")
+    monkeypatch.setattr(fp, "ROOT", tmp_path)
+    monkeypatch.delenv("MAGBENCH_PARAMS", raising=False)
+    folder = tmp_path / "broad"
+    folder.mkdir()
+    monkeypatch.setenv("MAGBENCH_BROAD_DIR", str(folder))
+    empty = fp.fingerprint()
+    (folder / "01_trial.mat").write_bytes(b"x")
+    one = fp.fingerprint()
+    monkeypatch.setenv("MAGBENCH_BROAD_DIR", str(tmp_path / "elsewhere"))
+    moved = fp.fingerprint()
+    assert len({empty, one, moved}) == 3
+
+
+def test_a_relative_broad_folder_is_taken_from_the_repository(tmp_path, monkeypatch):
+    # pytest runs at the root, the book's kernels in book/: both must resolve the same folder.
+    from magbench.io import broad
+
+    monkeypatch.setenv("MAGBENCH_BROAD_DIR", "../shared/external/broad")
+    monkeypatch.chdir(ROOT)
+    at_root = broad.broad_directory()
+    monkeypatch.chdir(ROOT / "book")
+    assert broad.broad_directory() == at_root == (ROOT.parent / "shared" / "external" / "broad").resolve()
+
+
 def test_book_check_sees_every_page_including_sections():
     """tools/check_book.py must check nested toc sections too: every page in book/ is listed."""
     listed = set(_load("check_book").chapter_files())

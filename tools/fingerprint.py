@@ -29,6 +29,18 @@ def fingerprint():
     if overrides:
         digest.update(b"MAGBENCH_PARAMS")
         digest.update(Path(overrides).read_bytes())
+    # The BROAD recordings live outside the repository: the folder the kernels will read
+    # and its listing (name, size, modification time), so that adding or replacing a
+    # recording re-executes the pages that show them instead of serving "not found".
+    from magbench.io.broad import broad_directory
+
+    folder = broad_directory()
+    digest.update(b"BROAD " + str(folder).encode())
+    if folder.is_dir():
+        for path in sorted(folder.iterdir()):
+            if path.is_file():
+                stat = path.stat()
+                digest.update(f"{path.name} {stat.st_size} {stat.st_mtime_ns}\n".encode())
     return digest.hexdigest()
 
 

@@ -57,11 +57,17 @@ MISSING_MESSAGE = (
 
 
 def broad_directory():
-    """Folder of the BROAD recordings: ``$MAGBENCH_BROAD_DIR`` or the default beside the repository."""
+    """Folder of the BROAD recordings: ``$MAGBENCH_BROAD_DIR`` or the default beside the repository.
+
+    A relative ``$MAGBENCH_BROAD_DIR`` is taken from the repository's folder, not from the
+    current one: pytest runs at the root and the book's kernels in ``book/``, and both
+    must read the same recordings.
+    """
+    repository = Path(__file__).resolve().parents[2]
     configured = os.environ.get(BROAD_DIR_ENV)
     if configured:
-        return Path(configured)
-    return Path(__file__).resolve().parents[2].parent / "shared" / "external" / "broad"
+        return (repository / Path(configured).expanduser()).resolve()
+    return repository.parent / "shared" / "external" / "broad"
 
 
 def available_trials(directory=None):
