@@ -147,3 +147,26 @@ def test_cli_quiet_when_the_reader_closes_the_pipe():
     proc = subprocess.run(["bash", "-c", f"'{sys.executable}' -m magbench.cli figures | true; "
                            "echo ${PIPESTATUS[0]} >&2"], capture_output=True, text=True, timeout=120)
     assert proc.stderr == "0\n", proc.stderr
+
+
+def test_work_limits_and_whole_numbers_hold_for_every_figure():
+    # Every figure's defaults lie inside its bounds (a build must not trip them); just past
+    # a bound, or a count with a fraction, is refused naming the figure's parameter.
+    from magbench import figures
+    from magbench.chapters._figures import WHOLE_NUMBER_INPUTS, WORK_LIMITS
+
+    seen = set()
+    for fid in figures.figure_ids():
+        defaults = figures.resolve_parameters(fid)
+        for name, value in defaults.items():
+            low, high = WORK_LIMITS.get((fid, name), WORK_LIMITS.get(name, (None, None)))
+            for bound, beyond in ((low, 0.5), (high, 2.0)):
+                if bound is not None:
+                    seen.add(name)
+                    with pytest.raises(ValueError, match=f"parameter {name} of {fid} must be"):
+                        figures.resolve_parameters(fid, {name: bound * beyond})
+            if name in WHOLE_NUMBER_INPUTS:
+                assert value == round(value), (fid, name, value)
+                with pytest.raises(ValueError, match="whole number"):
+                    figures.resolve_parameters(fid, {name: value + 0.5})
+    assert seen == {k if isinstance(k, str) else k[1] for k in WORK_LIMITS}

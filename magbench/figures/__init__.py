@@ -75,7 +75,7 @@ def resolve_parameters(figure_id, overrides=None):
         values[name] = number
     # Defaults too: they may come from a whole-book parameter file ($MAGBENCH_PARAMS).
     for name, number in values.items():
-        low, high = WORK_LIMITS.get(name, (None, None))
+        low, high = WORK_LIMITS.get((figure_id, name), WORK_LIMITS.get(name, (None, None)))
         unit = spec.parameters[name].unit
         unit = f" {unit}" if unit not in ("", "1", "-") else ""
         if low is not None and number < low:
