@@ -102,3 +102,34 @@ def as_choice(name, value, choices):
     if not isinstance(value, str) or value not in choices:
         raise ValueError(f"{name} must be one of {', '.join(map(repr, choices))}, got {shown(value)}")
     return value
+
+
+#: Most member-steps (Monte Carlo members × integration steps) one simulation call takes:
+#: about 80 times the book's largest runs (1000 members × 12 000 steps), and roughly an
+#: hour on one core for the simulators here. More is refused at once with this number
+#: rather than left to run for hours or to exhaust memory; split such a run into seeded
+#: parts.
+MAX_MEMBER_STEPS = 1e9
+
+
+def as_count(name, value, *, minimum=1):
+    """Return ``value`` as an int, raising unless it is a whole number >= ``minimum``.
+
+    1.5 is refused rather than truncated to 1 (the caller would report 1.5 and compute 1).
+    """
+    try:
+        number = float(value)
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"{name} must be a whole number >= {minimum}, got {shown(value)}") from exc
+    if isinstance(value, bool) or not np.isfinite(number) or number != round(number) or number < minimum:
+        raise ValueError(f"{name} must be a whole number >= {minimum}, got {shown(value)}")
+    return int(round(number))
+
+
+def check_member_steps(members, steps):
+    """Raise if ``members`` × ``steps`` exceeds :data:`MAX_MEMBER_STEPS`."""
+    work = float(members) * float(steps)
+    if work > MAX_MEMBER_STEPS:
+        raise ValueError(f"members × steps = {int(members)} × {int(steps)} = {work:.3g} exceeds "
+                         f"{MAX_MEMBER_STEPS:.0e} member-steps (hours on one core): split the run into "
+                         "smaller seeded runs")

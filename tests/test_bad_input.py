@@ -55,3 +55,36 @@ def test_quantise_duty_keeps_its_documented_results():
     # The docstring's example and levels=0 (no quantisation) are unchanged by the check.
     np.testing.assert_allclose(quantise_duty([0.5, -0.001, 0.003], 255), [128 / 255, 0.0, 1 / 255], rtol=1e-15)
     assert quantise_duty(0.3, 0) == 0.3
+
+
+def _bench():
+    from magbench.io import load_parameter_set
+    from magbench.sim.bench import BenchSetup
+
+    return BenchSetup.from_parameters({k: p.value_si for k, p in load_parameter_set("thesis").items()})
+
+
+MC = dict(seed=1, duration=1.0, moment_tolerance=0.05, release_angle_spread=0.5, release_rate_std=0.01,
+          thread_stiffness_factor=3.0, window=0.5)
+
+
+def test_monte_carlo_refuses_a_fractional_count_and_an_unbounded_run():
+    from magbench.sim.bench import monte_carlo
+
+    # (was) 1.5 members computed one member
+    with pytest.raises(ValueError, match=r"members must be a whole number >= 1, got 1.5"):
+        monte_carlo(_bench(), 1.0, members=1.5, **MC)
+    # (was) members=1e9 ran for minutes before running out of memory; now refused before any work
+    with pytest.raises(ValueError, match=r"members × steps = 1000000000 × \d+ = .* exceeds 1e\+09 member-steps"):
+        monte_carlo(_bench(), 1.0, members=1e9, **MC)
+    assert monte_carlo(_bench(), 1.0, members=2, **MC).psi.shape[-1] == 2      # (time, members)
+
+
+def test_detumble_refuses_an_unbounded_run():
+    from magbench.earth.circular_orbit import CircularOrbit
+    from magbench.sim.detumble import detumble_monte_carlo
+
+    orbit = CircularOrbit(6871e3, 1.7, 7.7e22)
+    with pytest.raises(ValueError, match="member-steps"):
+        detumble_monte_carlo([0.03, 0.03, 0.01], orbit, members=10_000, seed=1, duration=1e6,
+                             rate_range=(0.0, 0.1), gain=5e4, max_dipole=0.2, step=1.0)

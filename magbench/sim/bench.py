@@ -49,7 +49,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .. import control, estimation, hardware
-from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, shown
+from .._validate import as_count, as_finite, as_in_range, as_nonnegative, as_positive, check_member_steps, shown
 from ..constants import MU_0
 from ..dynamics.pendulum import Mockup, mockup_rhs
 from ..rotations import wrap_angle
@@ -447,7 +447,8 @@ def _loop_inputs(setup, duration, window, members, release_angle, release_rate, 
         if sensor_errors is not None:
             sizes.append(np.shape(sensor_errors[0])[-1])
         members = max(sizes + [1])
-    members = int(as_positive("members", members))
+    members = as_count("members", members)
+    check_member_steps(members, steps)
     psi = _member_array("release_angle", release_angle, members)
     omega = _member_array("release_rate", release_rate, members)
     kappa = _member_array("thread_stiffness",
@@ -870,7 +871,9 @@ def monte_carlo(setup, psi_des, *, members, seed, duration, moment_tolerance, re
     >>> bool(np.array_equal(a.psi, b.psi))
     True
     """
-    members = int(as_positive("members", members))
+    members = as_count("members", members)
+    # Before the draws: a billion members would spend minutes drawing inputs first.
+    check_member_steps(members, float(as_positive("duration", duration, unit="s")) / setup.sample_interval)
     tol = float(as_in_range("moment_tolerance", moment_tolerance, 0.0, 0.5))
     spread = float(as_in_range("release_angle_spread", release_angle_spread, 0.0, np.pi, unit="rad"))
     rate_std = float(as_nonnegative("release_rate_std", release_rate_std, unit="rad/s"))

@@ -18,11 +18,10 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from .._validate import (as_choice, as_finite, as_nonnegative, as_positive, as_positive_or_infinite,
-                         as_positive_scalar, as_vectors)
+                         as_positive_scalar, as_vectors, check_member_steps, shown)
 from ..dynamics.rigid_body import _as_quaternions, _inertia_matrix
 from ..earth.circular_orbit import CircularOrbit
 from .result import SimulationResult
-from .._validate import shown
 
 __all__ = ["DetumbleRun", "simulate_detumble", "detumble_time", "detumble_monte_carlo"]
 
@@ -426,6 +425,7 @@ def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dip
     stride = _multiple("record_interval", every, h)
     n_records = int(np.ceil(span / every - 1e-9)) + 1
     n_steps = (n_records - 1) * stride
+    check_member_steps(members, n_steps)
 
     body = _Body(j, orbit.mean_motion if gravity_gradient else None)
     law_fn = _law_bdot if law == "bdot" else _law_projected
