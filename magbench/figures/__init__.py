@@ -53,8 +53,8 @@ def resolve_parameters(figure_id, overrides=None):
     """Defaults of a figure's parameters updated with ``overrides`` (SI numbers).
 
     An unknown name raises ``KeyError`` listing the figure's parameters; a value that is
-    not a finite number, or lies outside the parameter's ``limits``, raises ``ValueError``
-    naming it.
+    not a finite number, a count with a fraction (:data:`WHOLE_NUMBER_INPUTS`) or a work
+    input beyond its bound (:data:`WORK_LIMITS`) raises ``ValueError`` naming it.
     """
     import math
 
@@ -70,11 +70,11 @@ def resolve_parameters(figure_id, overrides=None):
             raise ValueError(f"parameter {name} of {figure_id} must be a number, got {shown(value)}") from None
         if not math.isfinite(number):
             raise ValueError(f"parameter {name} of {figure_id} must be finite, got {shown(value)}")
-        if name in WHOLE_NUMBER_INPUTS and number != round(number):
-            raise ValueError(f"parameter {name} of {figure_id} must be a whole number, got {number:g}")
         values[name] = number
     # Defaults too: they may come from a whole-book parameter file ($MAGBENCH_PARAMS).
     for name, number in values.items():
+        if name in WHOLE_NUMBER_INPUTS and number != round(number):
+            raise ValueError(f"parameter {name} of {figure_id} must be a whole number, got {number:g}")
         low, high = WORK_LIMITS.get((figure_id, name), WORK_LIMITS.get(name, (None, None)))
         unit = spec.parameters[name].unit
         unit = f" {unit}" if unit not in ("", "1", "-") else ""

@@ -36,6 +36,10 @@ OUT_OF_DOMAIN = {
     ("ch04", "filter_coefficient_high", 2.0): "a complementary-filter coefficient lies in [0, 1]",
     ("ch04", "bench_filter_coefficient", 2.0): "a complementary-filter coefficient lies in [0, 1]",
     ("ch05", "orbit_inclination", 2.0): "twice SamSat-218D's 97.3° is not an inclination (0–180°)",
+    # Counts are refused with a fraction, not truncated (the caption would show the fraction).
+    ("ch04", "bench_pwm_levels", 0.5): "127.5 PWM levels is not a count",
+    ("ch05", "envelope_seed", 0.5): "278.5 is not a seed",
+    ("ch07", "capture_seed", 0.5): "1002.5 is not a seed",
 }
 
 FAST = ("ch01", "ch02", "ch03")
