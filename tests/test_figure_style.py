@@ -16,7 +16,7 @@ matplotlib.use("Agg")
 
 #: Figures whose defaults take several seconds, or need the BROAD recordings.
 SLOW = {"ch04-montecarlo", "ch04-period-ratio", "ch04-tau-sensitivity", "ch04-broad-tilt",
-        "ch04-offline-tilt",
+        "ch04-offline-tilt", "ch04-offline-timing",
         "thesis-fig03", "ch04-step-response", "rotor-simulation", "rotor-asymmetry", "tns0-capture",
         "tns0-full-run", "samsat-fig2",
         "ch05-rate-decay", "ch05-duty-estimators", "ch05-detumble-distribution", "ch05-basilisk-peer",

@@ -71,3 +71,20 @@ def test_offline_beats_causal_on_every_available_trial():
         trial = broad.load_trial(name)
         rmse = broad.evaluate_trial(trial)
         assert rmse["offline"] < rmse["complementary"], (name, rmse)
+
+
+@pytest.mark.broad
+@needs_data
+def test_timing_diagnostic_is_the_metric_at_zero_shift_and_whole_sample_shifts_are_index_shifts():
+    # The figure's interpolation must not move the metric: at s = 0 it is BROAD's RMSE, and
+    # at s = 1 it is the estimate one index later (no interpolation between samples then).
+    from magbench import figures
+
+    data = figures.compute("ch04-offline-timing", earliest_shift=0.0, latest_shift=1.0, shift_step=1.0)
+    trial = broad.load_trial(TRIALS[0])
+    q = estimation.offline_tilt(trial.gyro, trial.accel, trial.dt)
+    at = data.series[0].columns["trial_0"][1]
+    # 1e-12 rad: slerp at the nodes returns the node's rotation up to rounding.
+    np.testing.assert_allclose(at[0], broad.inclination_rmse(q, trial.reference, trial.movement), atol=1e-12)
+    later = np.concatenate([q[1:], q[-1:]])      # the last sample is held (clipped), as in the figure
+    np.testing.assert_allclose(at[1], broad.inclination_rmse(later, trial.reference, trial.movement), atol=1e-12)

@@ -491,3 +491,71 @@ def plot_offline_tilt(data):
 register(FigureSpec("ch04-offline-tilt", "offline_tilt on BROAD beside the causal filters and VQF",
                     BROAD_SOURCE, compute_offline_tilt, plot_offline_tilt,
                     {"tau": FigureParameter(3.0, "s", "offline_tilt's time constant (default)")}))
+
+
+# --- BROAD: what limits the offline estimator (a diagnostic of the comparison's timing) -----
+
+def compute_offline_timing(earliest_shift, latest_shift, shift_step):
+    """offline_tilt's inclination RMSE with its estimate read a fraction of a sample later.
+
+    Not a metric: a diagnostic of the comparison. The estimate at time t_k + s·dt
+    (spherical interpolation between neighbouring samples) is compared with the optical
+    reference at t_k, for shifts s from ``earliest_shift`` to ``latest_shift`` [samples].
+    s = 0 is BROAD's metric. A lag of the IMU's clock behind the optical system shows as a
+    minimum at s > 0 on every trial; the RMSE at the minimum is what is left when timing is
+    removed (measured on these trials; the estimator is not changed by it).
+    """
+    from scipy.spatial.transform import Rotation, Slerp
+
+    if latest_shift <= earliest_shift or shift_step <= 0 or (latest_shift - earliest_shift) / shift_step > 200:
+        raise ValueError("shifts must satisfy earliest_shift < latest_shift and 0 < shift_step, with at most 200 "
+                         f"steps, got {earliest_shift:g}, {latest_shift:g}, {shift_step:g}")
+    names = broad.available_trials()
+    if not names:
+        return _missing("ch04-offline-timing")
+    shifts = np.arange(earliest_shift, latest_shift + 0.5 * shift_step, shift_step)
+    per_trial = []
+    for name in names:
+        trial = _trial(name)
+        q = estimation.offline_tilt(trial.gyro, trial.accel, trial.dt)
+        k = np.arange(len(q), dtype=float)
+        between = Slerp(k, Rotation.from_quat(q, scalar_first=True))
+        per_trial.append([broad.inclination_rmse(between(np.clip(k + s, 0.0, k[-1])).as_quat(scalar_first=True),
+                                                 trial.reference, trial.movement) for s in shifts])
+    per_trial = np.array(per_trial)
+    series = [Series("shift", {"shift": ("1", shifts),
+                               **{f"trial_{i}": ("rad", per_trial[i]) for i in range(len(names))}})]
+    return FigureData("ch04-offline-timing", "", "", {}, series,
+                      extra={"trials": names, "sample_interval": _trial(names[0]).dt})
+
+
+def plot_offline_timing(data):
+    """RMSE against the shift: each trial in grey, the mean in red, the metric's s = 0 marked."""
+    import matplotlib.pyplot as plt
+
+    if "missing" in data.extra:
+        return _plot_missing(data)
+    cols = data.series[0].columns
+    shifts = cols["shift"][1]
+    per_trial = np.degrees(np.array([cols[f"trial_{i}"][1] for i in range(len(data.extra["trials"]))]))
+    mean = per_trial.mean(axis=0)
+    best = int(np.argmin(mean))
+    fig, ax = plt.subplots(figsize=(6.0, 3.6), layout="constrained")
+    ax.plot(shifts, per_trial.T, color="0.8", lw=0.7)
+    ax.plot([], [], color="0.8", lw=0.7, label="each trial")
+    ax.plot(shifts, mean, "o-", color="C3", ms=3.5, lw=1.5, label="mean over trials")
+    ax.axvline(0.0, color="0.3", lw=0.8, ls="--", label="s = 0: BROAD's metric")
+    ax.plot(shifts[best], mean[best], "v", color="k", ms=7,
+            label=f"smallest mean: s = {shifts[best]:+.2f} samples ({shifts[best] * data.extra['sample_interval'] * 1e3:+.1f} ms)")
+    ax.set_xlabel("estimate read s samples after the reference's time stamp")
+    ax.set_ylabel("inclination RMSE, movement phases [°]")
+    ax.set_ylim(0, None)
+    ax.legend(fontsize=7, loc="upper left")
+    return fig
+
+
+register(FigureSpec("ch04-offline-timing", "What limits offline_tilt on BROAD: the timing of the comparison",
+                    BROAD_SOURCE, compute_offline_timing, plot_offline_timing,
+                    {"earliest_shift": FigureParameter(-1.0, "1", "first shift [samples]"),
+                     "latest_shift": FigureParameter(1.5, "1", "last shift [samples]"),
+                     "shift_step": FigureParameter(0.125, "1", "spacing of the shifts [samples]")}))
