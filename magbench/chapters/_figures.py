@@ -7,7 +7,8 @@ command line.
 
 from dataclasses import dataclass, field
 
-__all__ = ["FigureParameter", "WORK_LIMITS", "WHOLE_NUMBER_INPUTS", "Series", "FigureData", "FigureSpec", "REGISTRY", "register"]
+__all__ = ["FigureParameter", "WORK_LIMITS", "WHOLE_NUMBER_INPUTS", "Series", "FigureData", "FigureSpec", "REGISTRY",
+           "register"]
 
 
 @dataclass(frozen=True)

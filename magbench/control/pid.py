@@ -43,7 +43,8 @@ def pid_step(error, error_rate, integral, dt, kp, ki, kd, output_limit=np.inf):
     Thesis eq. (37), with rectangle-rule integration. The thesis does
     not state a sample time, derivative source or anti-windup; these
     choices are ours. The only argument check is the limit's sign (a negative one would
-    invert the output); the simulation that calls this checks the rest once. Broadcasts over any shape (Monte Carlo members).
+    invert the output); the simulation that calls this checks the rest once. Broadcasts
+    over any shape (Monte Carlo members).
 
     Examples
     --------

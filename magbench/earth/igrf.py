@@ -156,9 +156,9 @@ class IgrfField:
 
 
 #: Lowest altitude :func:`igrf_field` accepts [m]: the core-mantle boundary, 3480 km from
-#: the centre (PREM), below the 6371.2 km reference radius (the ellipsoid's heights differ
-#: from the sphere's by at most 21 km, which this bound does not need to resolve). The expansion describes the
-#: field outside its sources, which lie in the core.
+#: the centre (PREM), below the 6371.2 km reference radius. The expansion describes the
+#: field outside its sources, which lie in the core; heights above the ellipsoid differ
+#: from the sphere's by at most 21 km, which this bound does not need to resolve.
 LOWEST_ALTITUDE = 3480e3 - IGRF_REFERENCE_RADIUS
 
 

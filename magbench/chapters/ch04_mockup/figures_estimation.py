@@ -545,8 +545,9 @@ def plot_offline_timing(data):
     ax.plot([], [], color="0.8", lw=0.7, label="each trial")
     ax.plot(shifts, mean, "o-", color="C3", ms=3.5, lw=1.5, label="mean over trials")
     ax.axvline(0.0, color="0.3", lw=0.8, ls="--", label="s = 0: BROAD's metric")
+    lag_ms = shifts[best] * data.extra["sample_interval"] * 1e3
     ax.plot(shifts[best], mean[best], "v", color="k", ms=7,
-            label=f"smallest mean: s = {shifts[best]:+.2f} samples ({shifts[best] * data.extra['sample_interval'] * 1e3:+.1f} ms)")
+            label=f"smallest mean: s = {shifts[best]:+.2f} samples ({lag_ms:+.1f} ms)")
     ax.set_xlabel("estimate read s samples after the reference's time stamp")
     ax.set_ylabel("inclination RMSE, movement phases [°]")
     ax.set_ylim(0, None)
