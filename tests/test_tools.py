@@ -182,17 +182,22 @@ def test_book_check_allows_output_of_a_visible_cell(tmp_path):
 
 _GOOD_PAGE = """<!DOCTYPE html><html><head><meta charset="utf-8"></head><body><main>
 <article class="bd-article" style="width: 700px"><p>Fine.</p>
-<img src="dot.png"><table><tr><td>narrow</td></tr></table></article></main></body></html>"""
+<img src="dot.png"><table><tr><td>narrow</td></tr></table>
+<div id="equation-fits"><mjx-container display="true" style="display: block; overflow: hidden; width: 300px">
+<span style="display: inline-block; width: 200px">x</span></mjx-container></div></article></main></body></html>"""
 
 _BAD_PAGE = """<!DOCTYPE html><html><head><meta charset="utf-8"></head><body><main>
 <article class="bd-article" style="width: 700px"><p>Left raw: $$x^2$$</p>
 <img src="missing.png"><table style="width: 2000px"><caption>too wide</caption><tr><td>x</td></tr></table>
+<div id="equation-wide"><mjx-container display="true" style="display: block; overflow: hidden; width: 300px">
+<span style="display: inline-block; width: 600px">x</span></mjx-container></div>
 <script>undefinedFunction();</script></article></main></body></html>"""
 
 
 def test_browser_check_names_each_defect(tmp_path):
-    """The browser check fails a page for a missing image, raw TeX, a wide table and a JS error,
-    and passes a clean page: each check can fail for the defect it names."""
+    """The browser check fails a page for a missing image, raw TeX, a wide table, a clipped
+    equation and a JS error, and passes a clean page: each check can fail for the defect it
+    names."""
     browser_check = _load("browser_check")
     if not browser_check.chromium_installed():
         pytest.skip("Chromium not installed (apt-get install -y chromium)")
@@ -203,7 +208,8 @@ def test_browser_check_names_each_defect(tmp_path):
     assert browser_check.check_site(tmp_path, ["good"], search=None) == []
     problems = "\n".join(browser_check.check_site(tmp_path, ["bad"], search=None))
     for defect in ("image did not load: missing.png", "equation not typeset", "table wider than the column",
-                   "JavaScript error", "HTTP 404"):
+                   "JavaScript error", "HTTP 404", "equation clipped (600 px of content in a 300 px box): "
+                   "#equation-wide (at 1200 px)"):
         assert defect in problems, defect
 
 

@@ -1,12 +1,15 @@
 """Open every page of the built book in a real browser and check what a reader sees.
 
 Serves the HTML folder on 127.0.0.1 and drives the system Chromium (Debian's
-``chromium``) with Playwright at a 1024 × 768 window. For each page of the toc it fails
+``chromium``) with Playwright at two window widths: 1024 px, and 1200 px, where the theme
+switches to three columns and the text column is at its narrowest (553 px against 685 px
+at 1024). For each page of the toc it fails
 on: a failed request (no answer, or an HTTP error status) or any request that leaves
 the local server (the book must work offline), a JavaScript error (an uncaught
 exception; the theme's console messages are not errors of the book), an image that did not load (``naturalWidth == 0``), an
-equation left untypeset (raw ``\\(``, ``\\[`` or ``$$`` in the text), and a table or
-display equation wider than the content column. The search page must find "Helmholtz".
+equation left untypeset (raw ``\\(``, ``\\[`` or ``$$`` in the text), a table wider than
+the content column, and a display equation wider than its own box (clipped: a reader
+sees part of it). The search page must find "Helmholtz".
 
 Usage: ``python tools/browser_check.py HTML_DIR [--screenshots DIR]``. Exit 0 when every
 page passes, 1 on any problem, 3 when Chromium is not installed (the caller says so).
@@ -27,6 +30,9 @@ CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networki
                  "--disable-component-update", "--disable-sync", "--no-first-run", "--disable-quic"]
 #: Width tolerance [px] for sub-pixel rounding.
 SLACK = 1.5
+#: Window widths [px] every page is checked at: a laptop's, and the theme's narrowest
+#: three-column layout.
+WIDTHS = (1024, 1200)
 
 PAGE_PROBE = r"""
 async () => {
@@ -42,9 +48,11 @@ async () => {
     ok: i.complete && i.naturalWidth > 0}));
   const tables = [...article.querySelectorAll("table")].map(t => ({
     width: t.getBoundingClientRect().width, caption: (t.caption ? t.caption.innerText : "").slice(0, 60)}));
+  // A labelled equation's box is as wide as the column and clips what does not fit, so the
+  // measure is the content's width against the box's, not the box's against the column.
   const equations = [...article.querySelectorAll("mjx-container[display='true']")].map(e => ({
-    width: e.firstElementChild ? e.firstElementChild.getBoundingClientRect().width : 0,
-    tex: (e.getAttribute("aria-label") || "").slice(0, 60)}));
+    content: e.scrollWidth, box: e.clientWidth,
+    where: (e.closest("[id]") || {id: ""}).id}));
   const typeset = article.querySelectorAll("mjx-container").length;
   const raw = [];
   for (const marker of ["\\(", "\\[", "$$"]) {
@@ -85,8 +93,8 @@ def check_page(page, url, origin):
     column = result["column"]
     problems += [f"table wider than the column ({t['width']:.0f} > {column:.0f} px): {t['caption']!r}"
                  for t in result["tables"] if t["width"] > column + SLACK]
-    problems += [f"equation wider than the column ({e['width']:.0f} > {column:.0f} px): {e['tex']!r}"
-                 for e in result["equations"] if e["width"] > column + SLACK]
+    problems += [f"equation clipped ({e['content']:.0f} px of content in a {e['box']:.0f} px box): "
+                 f"#{e['where']}" for e in result["equations"] if e["content"] > e["box"] + SLACK]
     return problems, {"images": len(result["images"]), "typeset": result["typeset"],
                       "tables": len(result["tables"])}
 
@@ -108,17 +116,22 @@ def check_site(html_dir, pages, screenshots=None, search="Helmholtz"):
     try:
         with sync_playwright() as p:
             browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-            context = browser.new_context(viewport={"width": 1024, "height": 768}, service_workers="block")
+            contexts = {w: browser.new_context(viewport={"width": w, "height": 768}, service_workers="block")
+                        for w in WIDTHS}
             for name in pages:
-                page = context.new_page()
-                problems, summary = check_page(page, f"{origin}/{name}.html", origin)
-                if shots:
-                    page.screenshot(path=str(shots / f"{Path(name).name}.png"), full_page=True)
-                page.close()
+                problems = []
+                for width, context in contexts.items():
+                    page = context.new_page()
+                    found, summary = check_page(page, f"{origin}/{name}.html", origin)
+                    if shots and width == WIDTHS[0]:
+                        page.screenshot(path=str(shots / f"{Path(name).name}.png"), full_page=True)
+                    page.close()
+                    problems += [f"{problem} (at {width} px)" for problem in found]
                 status = "ok" if not problems else f"{len(problems)} problems"
                 print(f"  {name:32s} {summary['images']:3d} images loaded  {summary['typeset']:4d} equations typeset  "
                       f"{summary['tables']:3d} tables  {status}")
                 failures += [f"{name}: {problem}" for problem in problems]
+            context = contexts[WIDTHS[0]]
             if search:
                 page = context.new_page()
                 page.goto(f"{origin}/search.html?q={search}", wait_until="load")
@@ -154,7 +167,7 @@ def main(argv=None):
     if failures:
         print("browser check failed:\n  " + "\n  ".join(failures))
         return 1
-    print(f"browser check: {len(pages)} pages at 1024 px, offline, no problems")
+    print(f"browser check: {len(pages)} pages at {' and '.join(map(str, WIDTHS))} px, offline, no problems")
     return 0
 
 
