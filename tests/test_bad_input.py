@@ -88,3 +88,13 @@ def test_detumble_refuses_an_unbounded_run():
     with pytest.raises(ValueError, match="member-steps"):
         detumble_monte_carlo([0.03, 0.03, 0.01], orbit, members=10_000, seed=1, duration=1e6,
                              rate_range=(0.0, 0.1), gain=5e4, max_dipole=0.2, step=1.0)
+
+
+def test_an_electromagnet_core_beyond_its_saturation_is_refused():
+    # (was) permalloy_design_magnetization = 2e6 A/m, above the curve's saturation a, drew a design
+    from magbench import figures
+
+    a = figures.resolve_parameters("ch03-actuators")["permalloy_a"]
+    with pytest.raises(ValueError, match=r"permalloy_design_magnetization must lie in \(0, permalloy_a"):
+        figures.compute("ch03-actuators", permalloy_design_magnetization=1.6 * a)
+    figures.compute("ch03-actuators", permalloy_design_magnetization=0.95 * a)

@@ -32,6 +32,8 @@ OUT_OF_DOMAIN = {
     ("ch02", "thesis_epoch", 0.5): "the year 1008 is outside IGRF-14 (1900–2030)",
     ("ch02", "thesis_epoch", 2.0): "the year 4032 is outside IGRF-14 (1900–2030)",
     ("ch03", "core_averaging_factor", 2.0): "an averaging factor (mean over peak magnetisation) is at most 1",
+    ("ch03", "permalloy_design_magnetization", 2.0): "2.2e6 A/m is above permalloy's saturation a = 1.25e6 A/m",
+    ("ch03", "permalloy_a", 0.5): "a saturation of 6.25e5 A/m is below the design magnetisation 1.1e6 A/m",
     ("ch04", "filter_coefficient_low", 2.0): "a complementary-filter coefficient lies in [0, 1]",
     ("ch04", "filter_coefficient_high", 2.0): "a complementary-filter coefficient lies in [0, 1]",
     ("ch04", "bench_filter_coefficient", 2.0): "a complementary-filter coefficient lies in [0, 1]",

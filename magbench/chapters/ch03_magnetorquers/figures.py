@@ -292,6 +292,12 @@ def compute_actuators(mtq_moment, mtq_voltage, mtq_side, mtq_max_power, mtq_max_
                       magnet_density, alnico_max_magnetization, alnico_elongation):
     """Mass, power and size of an air-core coil, a rod electromagnet and permanent magnets."""
     m, u, rho, g = mtq_moment, mtq_voltage, copper_resistivity, copper_density
+    # electromagnet_design takes J° and H° as given; the curve (9.21) J = aH/(b + H) never
+    # reaches a, so a design magnetisation at or above it is no state of this material.
+    if not 0 < permalloy_design_magnetization < permalloy_a:
+        raise ValueError(f"permalloy_design_magnetization must lie in (0, permalloy_a = {permalloy_a:g}) A/m, "
+                         f"below the saturation of the magnetisation curve (Kovalenko 9.21), "
+                         f"got {shown(permalloy_design_magnetization)}")
     d, od, _ = _wire_sizes()
     coil = hardware.design_magnetorquer(m, u, mtq_side, "square", mtq_max_power, mtq_max_mass, d, rho, g,
                                    require_fit=True, overall_diameters=od)["min_mass"]
