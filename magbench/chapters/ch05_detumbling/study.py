@@ -190,7 +190,10 @@ def duty_study(params, estimators=("model",), rates=None, members=None, duration
     modes = [("continuous", dict(mode="continuous"))]
     modes += [(e, dict(mode="duty", estimator=e, on_time=p["on_time"], off_time=p["off_time"])) for e in estimators]
     for name, kw in modes:
-        largest = 1.0 if name in ("continuous", "model") else p["off_time"] / 4.0
+        # A duty cycle needs whole steps in its off time: 1 s for the model estimator at the
+        # printed 1 s off time, never more than the off time (0.5 s crashed: found by the sweep).
+        largest = (1.0 if name == "continuous" else min(1.0, p["off_time"]) if name == "model"
+                   else p["off_time"] / 4.0)
         t, r = chained_detumble(inertia(p), many, q0, w0, duration, gain=k, max_dipole=p["max_dipole"],
                                 largest_step=largest, threshold=threshold, rotation_per_step=rotation_per_step,
                                 **kw)
