@@ -58,6 +58,13 @@ class Chapter:
     source_names : tuple of (str, str)
         The data key of each source the chapter checks and how the book cites it
         (``("kovalenko", "Kovalenko (1975)")``).
+    check_classes : tuple of (str, str, str or None)
+        Source-check id (or id prefix ending in ``-``), its basis (a key of
+        :data:`magbench.errata.CHECK_BASES`) and, for a check that disagrees, its severity
+        (a key of :data:`magbench.errata.SEVERITIES`).
+    discussed_in : tuple of (str, str)
+        Row or check id (or id prefix ending in ``-``) and the label of the book section
+        that discusses it; the ledger pages link each row there.
 
     The chapter's first page carries the label ``(key)=``, so ``{ref}`key``` links it.
     """
@@ -75,6 +82,8 @@ class Chapter:
     cites: str = ""
     finds: str = ""
     source_names: tuple = ()
+    check_classes: tuple = ()
+    discussed_in: tuple = ()
 
 
 def _chapters():
