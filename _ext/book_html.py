@@ -9,6 +9,10 @@
   ``SOURCE_DATE_EPOCH`` when set, for reproducible builds) and the SHA-256 of
   ``requirements.lock``. The computation itself is named by each page's own line
   (``magbench.report.provenance``: library and data hashes), which is cached with it.
+* **Provenance in small print.** A figure caption ends with the figure's id and the
+  function that drew it (pasted from the page's glue). That text gets the class
+  ``provenance`` (small, normal weight, free to wrap anywhere; ``_static/magbench.css``),
+  so the caption's own sentence stays what the reader sees first.
 * **No duplicate scripts.** sphinx-thebe and sphinx-togglebutton (pulled in by
   jupyter-book even with Thebe switched off) register their inline configuration scripts
   at every read phase. Sphinx dedupes scripts on registration, but it stores the first
@@ -21,8 +25,21 @@ import datetime
 import hashlib
 import html
 import os
+import re
 import subprocess
 from pathlib import Path
+
+from docutils import nodes
+
+#: A figure's caption provenance as ``magbench.figures.caption_provenance`` writes it.
+_PROVENANCE = re.compile(r"^\[[\w.-]+\] made by ")
+
+
+def _mark_provenance(app, doctree, docname):
+    """Give the pasted caption provenance (``[id] made by …``) the class ``provenance``."""
+    for node in doctree.findall(nodes.inline):
+        if "pasted-text" in node["classes"] and _PROVENANCE.match(node.astext()):
+            node["classes"].append("provenance")
 
 
 def _script_key(script):
@@ -129,6 +146,7 @@ def _config_inited(app, config):
 def setup(app):
     app.add_config_value("book_build_provenance", "", "html")   # every page rewritten: its footer is this build's
     app.connect("config-inited", _config_inited)
+    app.connect("doctree-resolved", _mark_provenance)
     app.connect("html-page-context", _offer_notebook, priority=400)    # before the theme's buttons (501)
     app.connect("html-page-context", _add_provenance, priority=400)
     app.connect("html-page-context", _dedupe_scripts, priority=900)

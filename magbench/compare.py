@@ -6,6 +6,12 @@ provenance and uncertainty, the value the model or the source's own formula give
 their difference and the tolerance within which they count as agreeing. The verdict is
 computed, never typed, and a disagreement is a finding, not an error.
 
+Every row says what it compares with (:data:`ROW_KINDS`: a measurement, an
+independent reference, a peer simulation, a published or verbal claim, a design value,
+or a consistency check with calibrated parameters, which is not counted), and every
+printed-value check whether its value was printed or evaluated from a printed formula
+and, when it disagrees, how much that matters (:mod:`magbench.errata`).
+
 Tolerances are never chosen to make a row agree: they come from the measurement's
 stated uncertainty, or, where the model rests on rounded printed inputs, from the
 spread of the model over those inputs' last printed digit, or, for a printed value,
@@ -20,7 +26,7 @@ number beside the source's own formula). Each chapter contributes its rows and c
 
 from dataclasses import dataclass
 
-__all__ = ["Comparison", "CompareRow", "ROW_KINDS", "make_row"]
+__all__ = ["Comparison", "CompareRow", "ROW_KINDS", "COUNTED_ROW_KINDS", "make_row"]
 
 
 @dataclass(frozen=True)
@@ -52,6 +58,18 @@ class Comparison:
     chapter, location, note, computation : str
         The chapter's key; the place in the source; the explanation; the library function
         that computes ``model``.
+    kind : str
+        For a model-vs-measurement row, what the compared value is: a key of
+        :data:`ROW_KINDS`. Set by :func:`magbench.chapters.comparisons` from the
+        chapter's declaration.
+    basis, severity : str
+        For a source check, whether the compared value was printed by the source or
+        evaluated by us from a printed formula (a key of
+        :data:`magbench.errata.CHECK_BASES`), and, when it disagrees, how much it matters
+        (a key of :data:`magbench.errata.SEVERITIES`). Set by
+        :func:`magbench.chapters.source_checks`.
+    section : str
+        Label of the book section that discusses the row or check ("" if none).
     """
 
     id: str
@@ -69,11 +87,21 @@ class Comparison:
     location: str = ""
     computation: str = ""
     scale: float = 1.0
+    kind: str = ""
+    basis: str = ""
+    severity: str = ""
+    section: str = ""
 
     @property
     def agrees(self):
         """Whether the two values agree within ``tolerance``."""
         return self.verdict == "agrees"
+
+    @property
+    def counted(self):
+        """Whether the row counts towards agree/disagree totals (a consistency check with
+        calibrated parameters does not: it states consistency, it cannot test the model)."""
+        return self.kind in COUNTED_ROW_KINDS
 
     @property
     def printed(self):
@@ -135,12 +163,23 @@ def make_row(id, quantity, source, measured, model, tolerance, *, unit, uncertai
     )
 
 
-#: What the value a row compares with is (its ``measured`` column): a measurement, an
-#: independent reference (a model fitted to measurements, such as IGRF), the source's
-#: own simulation, or a value the source printed as its design or calculation.
+#: What the value a row compares with is (its ``measured`` column): the kind of a
+#: model-vs-measurement row, its column heading on the ledger pages, and what it means.
 ROW_KINDS = {
-    "measurement": "measured by a person (on the bench, the coils or in flight)",
-    "reference": "independent reference (IGRF-14, fitted to observatory and satellite data)",
-    "simulation": "the source's own simulation (COMSOL)",
-    "printed": "printed design or calculated value of the source",
+    "measurement": ("measured", "a value a person measured (on the bench, the coils or in flight)"),
+    "reference": ("reference", "an independent reference: the IGRF-14 field model (fitted to observatory and "
+                               "satellite data) or a closed-form result"),
+    "simulation": ("simulated", "a peer simulation: another tool's run of the same case (Basilisk; the "
+                                "thesis's COMSOL model)"),
+    "claim": ("claimed", "a published claim: a number a paper, book or software repository states for its "
+                         "own case, not re-run here"),
+    "verbal": ("stated in words", "a verbal claim: a range read from the source's words, shown as that range"),
+    "design": ("design value", "a design value: a limit or value the source chose, which the built hardware "
+                               "should meet"),
+    "consistency": ("reported", "a consistency check with calibrated parameters: the model was fitted to part "
+                                "of the same data, so agreement shows consistency, not a prediction (not "
+                                "counted as agree or disagree)"),
 }
+
+#: The kinds whose rows are counted as agreeing or disagreeing.
+COUNTED_ROW_KINDS = tuple(k for k in ROW_KINDS if k != "consistency")

@@ -11,10 +11,38 @@ which checks are expected to disagree: those become strict xfail tests asserting
 printed value, the rest ordinary reference-value tests.
 """
 
+import dataclasses
+
 from .compare import Comparison, verdict
 from .units import SI_FACTORS
 
-__all__ = ["source_check", "printed_check", "kovalenko_page"]
+__all__ = ["source_check", "printed_check", "kovalenko_page", "classified", "is_last_digit_rounding",
+           "CHECK_BASES", "SEVERITIES", "HAND_TABLE_PRECISION"]
+
+#: Where the compared ("printed") value of a check comes from.
+CHECK_BASES = {
+    "printed": "printed value: a number the source prints, with the digits it prints",
+    "evaluated": "evaluated from a printed formula: the source prints the formula (or a count of figures), "
+                 "the number is ours, from its formula and its own inputs",
+}
+
+#: How much a disagreeing check matters, most serious first.
+SEVERITIES = {
+    "conclusion": "changes a conclusion or a design: a wrong sign, a missing factor or a wrong formula whose "
+                  "result the source uses",
+    "downstream": "slip with downstream effect: a wrong number the source goes on to use",
+    "contained": "slip without downstream effect: a wrong number or formula nothing else in the source "
+                 "depends on",
+    "rounding": "last-digit rounding: the printed value is off by at most one unit of its last printed digit",
+    "lost": "lost or garbled in the source: the transcription cannot decide what was printed",
+}
+
+#: Relative precision at which a table the source computed by hand is judged: the spread
+#: of such tables about their own formulas, 0.6 % in Kovalenko's Table 2 (its n = 1 entry
+#: at R + 1000 km against the (R/r)^6 scaling of its own entry at R) and 0.2–1.4 % in the
+#: computed column of his Table 5 against (9.25). Half a unit of the last printed digit
+#: would ask a 1975 slide-rule table for more than its method gave.
+HAND_TABLE_PRECISION = 0.015
 
 def source_check(*, id, chapter, source, location, quantity, printed, computed, tolerance, unit,
                  explanation, computation):
@@ -64,3 +92,51 @@ def kovalenko_page(seed_line):
     page N from line 116 on (an unnumbered page before it), per the seed's README.
     """
     return seed_line - 1 if seed_line <= 115 else seed_line
+
+
+def is_last_digit_rounding(check):
+    """Whether a printed value is off by at most one unit of its last printed digit.
+
+    A printed check's tolerance is half a unit of its last digit, so this is
+    |printed − computed| ≤ 2·tolerance; a check about a formula (tolerance 0) never is.
+    """
+    return check.tolerance > 0 and abs(check.measured - check.model) <= 2.0 * check.tolerance * (1 + 1e-12)
+
+
+def classified(check, basis, severity=None, *, precision=None, section=""):
+    """The check with its basis, severity and discussing section set.
+
+    Parameters
+    ----------
+    basis : str
+        A key of :data:`CHECK_BASES`.
+    severity : str or None
+        For a check that disagrees, a key of :data:`SEVERITIES`; ``None`` lets the
+        last-digit rule decide (:func:`is_last_digit_rounding`) and is refused for any
+        other disagreement. An agreeing check has no severity.
+    precision : float, optional
+        Relative precision of the source's method (``HAND_TABLE_PRECISION`` for a table
+        computed by hand): the tolerance becomes at least ``precision · |computed|``.
+    """
+    if basis not in CHECK_BASES:
+        raise ValueError(f"check {check.id}: basis must be one of {', '.join(CHECK_BASES)}, got {basis!r}")
+    if severity is not None and severity not in SEVERITIES:
+        raise ValueError(f"check {check.id}: severity must be one of {', '.join(SEVERITIES)}, got {severity!r}")
+    if precision is not None:
+        if not 0 < precision < 0.1:
+            raise ValueError(f"check {check.id}: precision must lie in (0, 0.1), got {precision!r}")
+        tolerance = max(check.tolerance, precision * abs(check.model))
+        check = dataclasses.replace(check, tolerance=tolerance,
+                                    verdict=verdict(check.measured - check.model, tolerance))
+    if check.agrees:
+        severity = ""
+    elif severity is None:
+        if not is_last_digit_rounding(check):
+            raise ValueError(f"check {check.id} disagrees beyond its last printed digit "
+                             f"({check.measured:g} vs {check.model:g} {check.unit}): declare its severity, "
+                             f"one of {', '.join(SEVERITIES)}")
+        severity = "rounding"
+    elif severity == "rounding" and not is_last_digit_rounding(check):
+        raise ValueError(f"check {check.id}: 'rounding' is for a value within one unit of its last printed "
+                         f"digit, but {check.measured:g} vs {check.model:g} {check.unit} is not")
+    return dataclasses.replace(check, basis=basis, severity=severity, section=section)

@@ -14,6 +14,7 @@ from ._format import format_number
 
 __all__ = ["provenance", "figure", "figure_png", "glue_number", "glue_text", "glue_quantity",
            "format_number", "format_quantity", "format_percent", "display_unit", "printed_text", "printed_quantity",
+           "format_with_uncertainty", "format_range", "linked", "compared_value", "row_verdict", "source_value",
            "table", "compare_table", "checks_table", "benchmark_result",
            "FIGURE_DPI", "CSS_PIXELS_PER_INCH"]
 
@@ -238,50 +239,155 @@ def table(frame, caption, *, label=None, wide_columns=(), widths=None):
     return Markdown("\n".join(lines) + "\n:::\n")
 
 
-def compare_table(rows, caption="Model beside measurement", *, label=None, against="measured"):
+def format_with_uncertainty(value, uncertainty, unit=""):
+    """A value and its uncertainty with the digits the uncertainty supports.
+
+    The uncertainty keeps one significant digit (two when its first is 1) and the value
+    is rounded to the same decimal place: 12.5 ± 1.5 Ω, not 12.50 ± 1.5 Ω.
+
+    >>> format_with_uncertainty(12.5, 1.5, "ohm")
+    '12.5 ± 1.5 Ω'
+    >>> format_with_uncertainty(4259.5, 192.4, "s")
+    '4260 ± 190 s'
+    """
+    uncertainty = abs(float(uncertainty))
+    if not math.isfinite(uncertainty) or uncertainty == 0:
+        return format_quantity(value, unit, 4)
+    exponent = math.floor(math.log10(uncertainty))
+    if int(uncertainty / 10.0 ** exponent) < 2:      # a leading 1 keeps a second digit
+        exponent -= 1
+    decimals = max(-exponent, 0)
+
+    def rounded(x):
+        x = round(float(x), -exponent)
+        return (f"{abs(x):.{decimals}f}", "−" if x < 0 else "")
+
+    number, sign = rounded(value)
+    text = f"{sign}{number} ± {rounded(uncertainty)[0]}"
+    unit = display_unit(unit)
+    if not unit:
+        return text
+    return f"{text}{unit}" if unit in ("°", "%") else f"{text} {unit}"
+
+
+def format_range(low, high, unit=""):
+    """A range read from words, low–high, with the digits such a reading has.
+
+    >>> format_range(10, 15, "deg")
+    '10–15°'
+    >>> format_range(20.0, 90.0, "rpm")
+    '20–90 rpm'
+    """
+    def short(x):
+        return f"{float(x):.3g}".replace("-", "−")
+
+    unit = display_unit(unit)
+    text = f"{short(low)}–{short(high)}"
+    if not unit:
+        return text
+    return f"{text}{unit}" if unit in ("°", "%") else f"{text} {unit}"
+
+
+def compared_value(row):
+    """The value a row compares with, as a reader should see it.
+
+    A verbal claim is shown as the range read from the words; a value with a stated
+    uncertainty with the digits that uncertainty supports; a value a person or a source
+    wrote down (a measurement, a claim, a design value, a read-off) with the digits it
+    was written with; a reference with four significant digits.
+    """
+    from .chapters import row_kind
+
+    kind = row_kind(row)
+    if kind == "verbal":
+        half = row.uncertainty or row.tolerance
+        return format_range(row.measured - half, row.measured + half, row.unit)
+    if row.uncertainty:
+        return format_with_uncertainty(row.measured, row.uncertainty, row.unit)
+    if kind in ("reference", "consistency"):
+        return format_quantity(row.measured, row.unit, 4)
+    return printed_quantity(row.measured, row.tolerance, row.unit)
+
+
+def row_verdict(row):
+    """"agrees"/"disagrees", or for a consistency check "consistent"/"not consistent"."""
+    from .chapters import row_kind
+
+    if row_kind(row) == "consistency":
+        return "consistent" if row.agrees else "not consistent"
+    return row.verdict
+
+
+def linked(text, section):
+    """``text`` as a link to the book section labelled ``section`` (plain text if none)."""
+    if not section:
+        return text
+    text = re.sub(r"[<>`]", "", text)
+    return f"{{ref}}`{text} <{section}>`"
+
+
+def compare_table(rows, caption="Model beside measurement", *, label=None, kind=None):
     """A captioned table of model-vs-measurement :class:`magbench.compare.Comparison` rows.
 
-    Columns: quantity (with the row's source), the value compared with (headed
-    ``against``: "measured", "IGRF-14", "printed", … with its uncertainty), model,
-    difference, tolerance, verdict.
+    Columns: quantity (with the row's source, linked to the section that discusses it),
+    the value compared with, model, difference, tolerance, verdict. With ``kind`` (a key
+    of :data:`magbench.compare.ROW_KINDS`) every row must be of that kind and the second
+    column is headed by the kind ("measured", "reference", "claimed", …); a row of
+    another kind raises ``ValueError``, so no row is filed under another kind's column.
+    Without it, the column is "compared with" and each value names its kind.
     """
     import pandas as pd
 
-    def value(x, unit, digits=4):
-        return format_quantity(x, unit, digits)
-
     from .chapters import row_kind
+    from .compare import ROW_KINDS
 
-    def reference(r):
-        if r.uncertainty or row_kind(r) not in ("measurement", "printed"):
-            return format_quantity(r.measured, r.unit, 4, uncertainty=r.uncertainty or None)
-        # A value a person or a source wrote down without an uncertainty: its tolerance is
-        # half a unit of the last written digit, so show those digits (10°, not 10.00°).
-        return printed_quantity(r.measured, r.tolerance, r.unit)
+    if kind is not None:
+        if kind not in ROW_KINDS:
+            raise ValueError(f"kind must be one of {', '.join(ROW_KINDS)}, got {kind!r}")
+        misfiled = [r.id for r in rows if row_kind(r) != kind]
+        if misfiled:
+            raise ValueError(f"rows {', '.join(misfiled)} are not of kind {kind!r}: they cannot be shown under "
+                             f"the column {ROW_KINDS[kind][0]!r}")
+        heading = ROW_KINDS[kind][0]
+    else:
+        heading = "compared with"
+
+    def against(r):
+        text = compared_value(r)
+        return text if kind is not None else f"{ROW_KINDS[row_kind(r)][0]}: {text}"
 
     frame = pd.DataFrame([{
-        "quantity": f"{r.quantity} ({r.source})",
-        against: reference(r),
-        "model": value(r.model, r.unit),
-        "difference": ("+" if r.difference > 0 else "") + value(r.difference, r.unit, 3),
-        "tolerance": value(r.tolerance, r.unit, 2),
-        "verdict": r.verdict} for r in rows])
+        "quantity": linked(f"{r.quantity} ({r.source})", r.section),
+        heading: against(r),
+        "model": format_quantity(r.model, r.unit, 4),
+        "difference": ("+" if r.difference > 0 else "") + format_quantity(r.difference, r.unit, 3),
+        "tolerance": format_quantity(r.tolerance, r.unit, 2),
+        "verdict": row_verdict(r)} for r in rows])
     return table(frame, caption, label=label, wide_columns=("quantity",))
 
 
 def checks_table(checks, caption="Printed values beside the computation", *, label=None):
     """A captioned table of printed-value checks (:class:`magbench.compare.Comparison`).
 
-    Printed values keep the source's printed digits (:func:`printed_text`).
+    Printed values keep the source's printed digits (:func:`printed_text`); a value we
+    evaluated from a printed formula says so.
     """
     import pandas as pd
 
     frame = pd.DataFrame([{
         "quantity": c.quantity, "where": c.location,
-        "printed": printed_quantity(c.printed, c.tolerance, c.unit),
+        "the source": source_value(c),
         "computed": format_quantity(c.computed, c.unit, 4),
         "verdict": "reproduces" if c.agrees else "does not reproduce"} for c in checks])
     return table(frame, caption, label=label, wide_columns=("quantity", "where"))
+
+
+def source_value(check):
+    """The source's side of a check: the printed value with its printed digits, or, for
+    a value evaluated from a printed formula, that value marked as ours."""
+    if getattr(check, "basis", "") == "evaluated":
+        return f"{format_quantity(check.printed, check.unit, 4)} (evaluated from its formula)"
+    return printed_quantity(check.printed, check.tolerance, check.unit)
 
 
 def benchmark_result(name, directory=None):

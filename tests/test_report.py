@@ -87,5 +87,30 @@ def test_compare_table_shows_written_digits_for_values_written_without_uncertain
     rows = {r.id: r for r in chapters.comparisons()}
     bench = [r for r in rows.values() if chapters.row_kind(r) == "measurement" and r.unit == "deg"]
     assert bench, "the bench's orientation-error rows"
-    text = report.compare_table(bench, "bench").data
+    text = report.compare_table(bench, "bench", kind="measurement").data
     assert "  - 10°" in text and "10.00°" not in text
+
+
+def test_compare_table_refuses_a_row_of_another_kind():
+    """A row is shown only under its own kind's column: the IGRF-14 column of the old
+    ledger held Basilisk's and Cp557's rows, which now raises."""
+    import pytest
+
+    from magbench import compare
+
+    row = compare.make_row("ch05-cp557-median", "q", "s", 1.0, 1.0, 0.1, unit="s")
+    assert chapters.row_kind(row) == "claim"
+    assert "claimed" in report.compare_table([row], "c", kind="claim").data
+    with pytest.raises(ValueError, match="not of kind 'reference'"):
+        report.compare_table([row], "c", kind="reference")
+
+
+def test_values_show_the_digits_their_source_supports():
+    """A verbal claim as the range read from words; an uncertainty with the digits it
+    supports (the review's '12.50 ± 1.0 Ω' and '12.50 ± 2.5°')."""
+    from magbench import compare
+
+    verbal = compare.make_row("rotor-pointing-accuracy", "q", "s", 12.5, 5.7, 2.5, unit="deg")
+    assert report.compared_value(verbal) == "10–15°"
+    measured = compare.make_row("sim-coil-resistance", "q", "s", 12.5, 13.7, 1.5, unit="ohm", uncertainty=1.5)
+    assert report.compared_value(measured) == "12.5 ± 1.5 Ω"

@@ -91,8 +91,8 @@ def _page(tmp_path, body, image=None, provenance=True):
     return page, html
 
 
-FIGURE = ('<figure><img src="../_images/f.png"/><figcaption>Caption. '
-          '[thesis-fig06] made by magbench.figures.x; all parameters at their defaults.</figcaption></figure>')
+FIGURE = ('<figure><img src="../_images/f.png"/><figcaption>Caption. <span class="pasted-text provenance">'
+          '[thesis-fig06] made by magbench.figures.x; all parameters at their defaults.</span></figcaption></figure>')
 
 
 def _drawing():
@@ -181,7 +181,8 @@ def test_book_check_allows_output_of_a_visible_cell(tmp_path):
 
 
 _GOOD_PAGE = """<!DOCTYPE html><html><head><meta charset="utf-8"></head><body><main>
-<article class="bd-article" style="width: 700px"><p>Fine.</p>
+<article class="bd-article" style="max-width: 700px"><p>Fine, and a long name that may break:
+<span style="overflow-wrap: anywhere">magbench.chapters.ch05_detumbling.figures.compute_duty_estimators</span></p>
 <img src="dot.png"><table><tr><td>narrow</td></tr></table>
 <div id="equation-fits"><mjx-container display="true" style="display: block; overflow: hidden; width: 300px">
 <span style="display: inline-block; width: 200px">x</span></mjx-container></div></article></main></body></html>"""
@@ -191,12 +192,14 @@ _BAD_PAGE = """<!DOCTYPE html><html><head><meta charset="utf-8"></head><body><ma
 <img src="missing.png"><table style="width: 2000px"><caption>too wide</caption><tr><td>x</td></tr></table>
 <div id="equation-wide"><mjx-container display="true" style="display: block; overflow: hidden; width: 300px">
 <span style="display: inline-block; width: 600px">x</span></mjx-container></div>
+<p>[ch05-duty] made by magbench.chapters.ch05_detumbling.figures.compute_duty_estimators_and_more_of_it</p>
 <script>undefinedFunction();</script></article></main></body></html>"""
 
 
 def test_browser_check_names_each_defect(tmp_path):
     """The browser check fails a page for a missing image, raw TeX, a wide table, a clipped
-    equation and a JS error, and passes a clean page: each check can fail for the defect it
+    equation, a JS error and (on the phone) an unbreakable caption line that makes the page
+    wider than the screen, and passes a clean page: each check can fail for the defect it
     names."""
     browser_check = _load("browser_check")
     if not browser_check.chromium_installed():
@@ -209,22 +212,33 @@ def test_browser_check_names_each_defect(tmp_path):
     problems = "\n".join(browser_check.check_site(tmp_path, ["bad"], search=None))
     for defect in ("image did not load: missing.png", "equation not typeset", "table wider than the column",
                    "JavaScript error", "HTTP 404", "equation clipped (600 px of content in a 300 px box): "
-                   "#equation-wide (at 1200 px)"):
+                   "#equation-wide (at 1200 px)", "page wider than the screen", "(at 414 px)"):
         assert defect in problems, defect
+
+
+_HEADLINE = ("<p>Of 70 numbers, 9 are errors that change a conclusion or a design (a sign), 3 are "
+             "slips the source goes on to use, 8 are slips nothing depends on, and 6 differ only in "
+             "the last printed digit.</p><p>Against measurements 2 of 5 rows agree; 6 further rows are "
+             "consistency checks with calibrated parameters.</p>")
 
 
 def test_book_check_names_a_chapter_missing_from_the_generated_parts():
     """The errata page and the landing page's chapter table are generated from CHAPTERS;
-    the book check fails when a chapter with errata has no table there, or the landing
-    table does not link a chapter."""
+    the book check fails when the errata summary misses a chapter with checks, the landing
+    table does not link a chapter, or the headline does not state its counts by class."""
     check = _load("check_book").check_chapter_parts
-    errata = '<table id="errata-ch01"></table><table id="errata-ch02"></table>'
-    intro = '<table class="x" id="chapters-table"><a href="book/ch01-earth-field.html#ch01">1</a></table>'
+    errata = ('<table class="x" id="errata-summary"><a href="ch01-earth-field.html#ch01">1</a>'
+              '<a href="ch02-field-simulator.html#ch02">2</a></table>')
+    intro = ('<table class="x" id="chapters-table"><a href="book/ch01-earth-field.html#ch01">1</a></table>'
+             + _HEADLINE)
     assert check(errata, intro, ["ch01", "ch02"], ["ch01"]) == []
     problems = check(errata, intro, ["ch01", "ch03"], ["ch01", "ch02"])
-    assert problems == ["errata page has no table errata-ch03 for its chapter's errata",
+    assert problems == ["errata page's summary does not list ch03",
                         "landing page's chapter table does not link ch02"]
     assert check(errata, "<p>no table</p>", [], ["ch01"]) == ["landing page has no chapters-table"]
+    old_headline = intro.replace(_HEADLINE, "<p>Of the 70 printed numbers, 34 do not reproduce.</p>")
+    problems = check(errata, old_headline, ["ch01"], ["ch01"])
+    assert len(problems) == 6 and all("count by class" in p for p in problems)
 
 
 def test_params_file_is_checked_before_a_build(tmp_path, capsys):
@@ -237,3 +251,23 @@ def test_params_file_is_checked_before_a_build(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "orbit_altitud" in err and "orbit_altitude" in err and len(err.strip().splitlines()) == 1
     assert check.main([str(tmp_path / "missing.toml")]) == 2
+
+
+def test_book_check_fails_on_the_developers_voice(tmp_path):
+    """A library path, a parameter key or an entry id in the prose fails the check; the
+    same words in code or in the small provenance text do not."""
+    check_page = _load("check_book").check_page
+    for body in ("<p>It is computed by magbench.earth.dipole_inclination here.</p>",
+                 "<p>The offset (as magnetometer_offset_x) is set.</p>",
+                 "<p>The thread's stiffness bench_thread_stiffness is ours.</p>",
+                 "<p>See entry thesis-eq3-inclination-sign.</p>",
+                 "<p>Cp557's holdout runs.</p>"):
+        page, html = _page(tmp_path / str(abs(hash(body))), body, None)
+        problems = check_page("p", page, html)[0]
+        assert any("developer's voice" in p for p in problems), (body, problems)
+    for body in ("<p>Computed <code>magbench.earth.dipole_inclination</code>.</p>",
+                 '<p>An entry. <span class="provenance">Computed by magbench.earth.x; entry '
+                 'thesis-eq3-inclination-sign.</span></p>',
+                 "<p>The magnetometer's offset and the thesis's inclination sign.</p>"):
+        page, html = _page(tmp_path / str(abs(hash(body))), body, None)
+        assert not any("developer's voice" in p for p in check_page("p", page, html)[0]), body

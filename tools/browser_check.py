@@ -1,15 +1,18 @@
 """Open every page of the built book in a real browser and check what a reader sees.
 
 Serves the HTML folder on 127.0.0.1 and drives the system Chromium (Debian's
-``chromium``) with Playwright at two window widths: 1024 px, and 1200 px, where the theme
-switches to three columns and the text column is at its narrowest (553 px against 685 px
-at 1024). For each page of the toc it fails
+``chromium``) with Playwright at three window widths: a phone's 414 px (mobile emulation,
+as an iPhone Plus shows a page), 1024 px, and 1200 px, where the theme switches to three
+columns and the text column is at its narrowest (553 px against 685 px at 1024). For
+each page of the toc it fails
 on: a failed request (no answer, or an HTTP error status) or any request that leaves
 the local server (the book must work offline), a JavaScript error (an uncaught
 exception; the theme's console messages are not errors of the book), an image that did not load (``naturalWidth == 0``), an
 equation left untypeset (raw ``\\(``, ``\\[`` or ``$$`` in the text), a table wider than
-the content column, and a display equation wider than its own box (clipped: a reader
-sees part of it). The search page must find "Helmholtz".
+the content column, a display equation wider than its own box (clipped: a reader
+sees part of it; on the phone a display equation may instead scroll inside its box), and,
+on the phone, a page wider than the screen (the phone would zoom the whole page out),
+naming the widest elements that stick out. The search page must find "Helmholtz".
 
 Usage: ``python tools/browser_check.py HTML_DIR [--screenshots DIR]``. Exit 0 when every
 page passes, 1 on any problem, 3 when Chromium is not installed (the caller says so).
@@ -30,9 +33,11 @@ CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networki
                  "--disable-component-update", "--disable-sync", "--no-first-run", "--disable-quic"]
 #: Width tolerance [px] for sub-pixel rounding.
 SLACK = 1.5
-#: Window widths [px] every page is checked at: a laptop's, and the theme's narrowest
-#: three-column layout.
-WIDTHS = (1024, 1200)
+#: Window widths [px] every page is checked at: a phone's, a laptop's, and the theme's
+#: narrowest three-column layout.
+WIDTHS = (414, 1024, 1200)
+#: Widths below this are phones: mobile emulation, and a page wider than the screen fails.
+PHONE = 600
 
 PAGE_PROBE = r"""
 async () => {
@@ -51,15 +56,35 @@ async () => {
   // A labelled equation's box is as wide as the column and clips what does not fit, so the
   // measure is the content's width against the box's, not the box's against the column.
   const equations = [...article.querySelectorAll("mjx-container[display='true']")].map(e => ({
-    content: e.scrollWidth, box: e.clientWidth,
+    content: e.scrollWidth, box: e.clientWidth, right: e.getBoundingClientRect().right,
+    scrolls: ["auto", "scroll"].includes(getComputedStyle(e).overflowX),
     where: (e.closest("[id]") || {id: ""}).id}));
+  // What sticks out of the screen: elements whose right edge passes the viewport and that
+  // are not inside a box that scrolls or clips them; the outermost of each is reported.
+  const viewport = document.documentElement.clientWidth;
+  const wide = [];
+  for (const el of document.querySelectorAll("body *")) {
+    const r = el.getBoundingClientRect();
+    if (r.width === 0 || r.right <= viewport + 1.5) { continue; }
+    let contained = false;
+    for (let a = el.parentElement; a && a !== document.body; a = a.parentElement) {
+      const o = getComputedStyle(a).overflowX;
+      if (o !== "visible") { contained = true; break; }
+    }
+    if (contained || (el.parentElement && wide.some(w => w.el.contains(el)))) { continue; }
+    wide.push({el, what: el.tagName.toLowerCase() + (el.className && typeof el.className === "string" ?
+      "." + el.className.trim().split(/\s+/).join(".") : ""), right: Math.round(r.right),
+      text: (el.innerText || "").trim().slice(0, 50)});
+  }
+  const page = {width: document.documentElement.scrollWidth, viewport,
+                wide: wide.slice(0, 4).map(w => ({what: w.what, right: w.right, text: w.text}))};
   const typeset = article.querySelectorAll("mjx-container").length;
   const raw = [];
   for (const marker of ["\\(", "\\[", "$$"]) {
     const k = text.indexOf(marker);
     if (k >= 0) { raw.push(text.slice(Math.max(0, k - 20), k + 40)); }
   }
-  return {column, images, tables, equations, typeset, raw};
+  return {column, images, tables, equations, typeset, raw, page};
 }
 """
 
@@ -76,8 +101,9 @@ def serve(directory):
     return server
 
 
-def check_page(page, url, origin):
-    """Load one page; return (problems, summary dict)."""
+def check_page(page, url, origin, *, phone=False):
+    """Load one page; return (problems, summary dict). ``phone``: also fail on a page
+    wider than the screen, and let display equations scroll in their own box."""
     problems, requests = [], []
     page.on("request", lambda r: requests.append(r.url))
     page.on("requestfailed", lambda r: problems.append(f"request failed: {r.url} ({r.failure})"))
@@ -94,7 +120,12 @@ def check_page(page, url, origin):
     problems += [f"table wider than the column ({t['width']:.0f} > {column:.0f} px): {t['caption']!r}"
                  for t in result["tables"] if t["width"] > column + SLACK]
     problems += [f"equation clipped ({e['content']:.0f} px of content in a {e['box']:.0f} px box): "
-                 f"#{e['where']}" for e in result["equations"] if e["content"] > e["box"] + SLACK]
+                 f"#{e['where']}" for e in result["equations"]
+                 if e["content"] > e["box"] + SLACK and not (phone and e["scrolls"])]
+    layout = result["page"]
+    if phone and layout["width"] > layout["viewport"] + SLACK:
+        culprits = "; ".join(f"{w['what']} to {w['right']} px ({w['text']!r})" for w in layout["wide"])
+        problems.append(f"page wider than the screen ({layout['width']} > {layout['viewport']} px): {culprits}")
     return problems, {"images": len(result["images"]), "typeset": result["typeset"],
                       "tables": len(result["tables"])}
 
@@ -116,22 +147,24 @@ def check_site(html_dir, pages, screenshots=None, search="Helmholtz"):
     try:
         with sync_playwright() as p:
             browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-            contexts = {w: browser.new_context(viewport={"width": w, "height": 768}, service_workers="block")
+            contexts = {w: browser.new_context(viewport={"width": w, "height": 768 if w >= PHONE else 736},
+                                               service_workers="block", is_mobile=w < PHONE, has_touch=w < PHONE,
+                                               device_scale_factor=2 if w < PHONE else 1)
                         for w in WIDTHS}
             for name in pages:
                 problems = []
                 for width, context in contexts.items():
                     page = context.new_page()
-                    found, summary = check_page(page, f"{origin}/{name}.html", origin)
-                    if shots and width == WIDTHS[0]:
-                        page.screenshot(path=str(shots / f"{Path(name).name}.png"), full_page=True)
+                    found, summary = check_page(page, f"{origin}/{name}.html", origin, phone=width < PHONE)
+                    if shots and width in (WIDTHS[0], WIDTHS[1]):
+                        page.screenshot(path=str(shots / f"{Path(name).name}-{width}.png"), full_page=True)
                     page.close()
                     problems += [f"{problem} (at {width} px)" for problem in found]
                 status = "ok" if not problems else f"{len(problems)} problems"
                 print(f"  {name:32s} {summary['images']:3d} images loaded  {summary['typeset']:4d} equations typeset  "
                       f"{summary['tables']:3d} tables  {status}")
                 failures += [f"{name}: {problem}" for problem in problems]
-            context = contexts[WIDTHS[0]]
+            context = contexts[WIDTHS[1]]
             if search:
                 page = context.new_page()
                 page.goto(f"{origin}/search.html?q={search}", wait_until="load")

@@ -62,6 +62,36 @@ HEX_ID = re.compile(r"\b(?:commit|sha256) [0-9a-f]{7,64}\b")
 INTERNAL_LABEL = re.compile(r"seed line|seed text|inventory gap|\bTH-[A-Za-z0-9]+|\bgap G\d+|[(,] ?L\d{2,4}\b")
 
 
+#: The developer's voice: a dotted path into the library, words of the project's own
+#: working documents. Code, and text marked as provenance, are exempt.
+DEVELOPER_WORDS = re.compile(r"\bmagbench\.[A-Za-z_][\w.]*|\bholdout\b|\bshared reference\b")
+
+
+def developer_names():
+    """A pattern of the names only a developer knows: the chapters' parameter keys, the
+    figures' parameter names and the error budget's source names (snake_case), and the
+    ids of rows and checks."""
+    import functools
+
+    @functools.cache
+    def pattern():
+        import tomllib
+
+        from magbench import chapters, figures
+        from magbench.io import DATA_DIR
+
+        names = {name for spec in chapters.CHAPTERS for name in spec.inputs}
+        names |= set(tomllib.loads((DATA_DIR / "bench" / "error_sources.toml").read_text(encoding="utf-8")))
+        names |= {name for fid in figures.figure_ids() for name in figures.get_spec(fid).parameters}
+        names = {n for n in names if "_" in n}        # one-word names ("duration") are English
+        ids = {entry[0].rstrip("-") for spec in chapters.CHAPTERS
+               for entry in (*spec.row_kinds, *spec.check_classes) if "-" in entry[0].rstrip("-")}
+        words = sorted(names | ids, key=len, reverse=True)
+        return re.compile(r"(?<![\w-])(?:" + "|".join(map(re.escape, words)) + r")(?![\w])")
+
+    return pattern()
+
+
 #: A LaTeX command left in the text: math that did not render (a "$" lost, or a line of a
 #: formula that Markdown read as a list item).
 RAW_LATEX = re.compile(r"\\(?:[a-zA-Z]{2,})\b|\$\\")
@@ -72,7 +102,7 @@ def _prose_text(main, *, without_math=False):
     import copy
 
     main = copy.copy(main)
-    for node in main.select("div.cell_input, pre, code"
+    for node in main.select("div.cell_input, pre, code, .provenance"
                             + (", div.math, span.math, .MathJax, mjx-container, script" if without_math else "")):
         node.decompose()
     # Commit ids and content hashes are hex: "5861051e3259" is not a number in e-notation.
@@ -93,6 +123,11 @@ def check_page(name, page_path, html_dir):
             snippet = " ".join(prose[max(0, match.start() - 30):match.end() + 20].split())
             problems.append(f"{name}: {what} in the text: …{snippet}…")
     bare = _prose_text(main, without_math=True)
+    for pattern, what in ((DEVELOPER_WORDS, "the developer's voice (a library path or a working word)"),
+                          (developer_names(), "the developer's voice (a parameter key or an entry id)")):
+        for match in pattern.finditer(bare):
+            snippet = " ".join(bare[max(0, match.start() - 30):match.end() + 20].split())
+            problems.append(f"{name}: {what} in the text: …{snippet}…")
     for match in RAW_LATEX.finditer(bare):
         snippet = " ".join(bare[max(0, match.start() - 30):match.end() + 30].split())
         problems.append(f"{name}: unrendered LaTeX in the text: …{snippet}…")
@@ -159,17 +194,35 @@ def _download_problems(name, soup, page_path, html_dir, expect_images):
     return []
 
 
+#: The landing page's headline states its counts by class: each of these must appear
+#: with its number.
+HEADLINE_CLASSES = (r"\d+ are errors that change a conclusion or a design",
+                    r"\d+ are\s+slips the source goes on to use",
+                    r"\d+ are slips nothing\s+depends on",
+                    r"\d+ differ only in the last printed digit",
+                    r"Against measurements\s+\d+ of \d+ rows agree",
+                    r"\d+ further rows are consistency checks")
+
+
 def check_chapter_parts(errata_html, intro_html, errata_keys, chapter_keys):
-    """Problems of the pages that walk CHAPTERS: the errata page must show a table for each
-    chapter with errata (labelled ``errata-<key>``) and the landing page's chapter table
-    must link every chapter."""
-    problems = [f"errata page has no table errata-{key} for its chapter's errata"
-                for key in errata_keys if f'id="errata-{key}"' not in errata_html]
+    """Problems of the pages that walk CHAPTERS: the errata page's summary table must link
+    each chapter with source checks, the landing page's chapter table must link every
+    chapter, and the landing page's headline must state its counts by class."""
+    problems = []
+    summary = re.search(r'<table[^>]*id="errata-summary".*?</table>', errata_html, re.S)
+    if summary is None:
+        problems.append("errata page has no errata-summary table")
+    else:
+        problems += [f"errata page's summary does not list {key}" for key in errata_keys
+                     if f'href="{key}' not in summary.group(0) and f'#{key}"' not in summary.group(0)]
     table = re.search(r'<table[^>]*id="chapters-table".*?</table>', intro_html, re.S)
     if table is None:
         return problems + ["landing page has no chapters-table"]
     problems += [f"landing page's chapter table does not link {key}" for key in chapter_keys
                  if f'href="book/{key}' not in table.group(0) and f'#{key}"' not in table.group(0)]
+    text = " ".join(re.sub(r"<[^>]+>", " ", intro_html).split())
+    problems += [f"landing page's headline lacks a count by class: /{pattern}/" for pattern in HEADLINE_CLASSES
+                 if not re.search(pattern, text)]
     return problems
 
 
@@ -193,7 +246,7 @@ def main(html_dir):
     errata_page, intro_page = html / "book" / "errata.html", html / "book" / "intro.html"
     if errata_page.is_file() and intro_page.is_file():
         problems += check_chapter_parts(errata_page.read_text(encoding="utf-8"), intro_page.read_text(encoding="utf-8"),
-                                        sorted({e.chapter for e in chapters.errata()}),
+                                        [c.key for c in chapters.CHAPTERS if c.source_checks],
                                         [c.key for c in chapters.CHAPTERS])
     reports = list((html / "reports").glob("**/*.err.log")) if (html / "reports").exists() else []
     problems += [f"execution failure logged in {r}" for r in reports]

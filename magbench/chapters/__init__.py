@@ -56,14 +56,52 @@ def _selected(key):
     return CHAPTERS if key is None else [chapter(key)]
 
 
+def _match(entries, item_id):
+    """The first entry of ``(id or "prefix-", *values)`` that names ``item_id``, or None."""
+    for entry in entries:
+        prefix = entry[0]
+        if item_id == prefix or (prefix.endswith("-") and item_id.startswith(prefix)):
+            return entry
+    return None
+
+
+def _section(spec, item_id):
+    entry = _match(spec.discussed_in, item_id)
+    return entry[1] if entry else ""
+
+
 def comparisons(key=None):
-    """Every model-vs-measurement row (of one chapter, or of all), in book order."""
-    return [row for spec in _selected(key) if spec.comparisons for row in spec.comparisons()]
+    """Every model-vs-measurement row (of one chapter, or of all), in book order, each
+    with its kind (:data:`magbench.compare.ROW_KINDS`) and the section discussing it."""
+    import dataclasses
+
+    return [dataclasses.replace(row, kind=_row_kind(spec, row), chapter=row.chapter or spec.key,
+                                section=_section(spec, row.id))
+            for spec in _selected(key) if spec.comparisons for row in spec.comparisons()]
 
 
 def source_checks(key=None):
-    """Every printed-vs-computed check (of one chapter, or of all), in book order."""
-    return [check for spec in _selected(key) for provider in spec.source_checks for check in provider()]
+    """Every printed-vs-computed check (of one chapter, or of all), in book order, each
+    classified as its chapter declares (:func:`magbench.errata.classified`): printed or
+    evaluated, and, when it disagrees, how much it matters.
+
+    A check its chapter does not classify raises ``KeyError``.
+    """
+    from ..errata import HAND_TABLE_PRECISION, classified
+
+    checks = []
+    for spec in _selected(key):
+        for provider in spec.source_checks:
+            for check in provider():
+                entry = _match(spec.check_classes, check.id)
+                if entry is None:
+                    raise KeyError(f"source check {check.id!r} has no class; add it to the check_classes "
+                                   f"of chapter {spec.key}: (id, 'printed' or 'evaluated', severity or None)")
+                _, basis, severity, *method = entry
+                precision = HAND_TABLE_PRECISION if method == ["hand table"] else None
+                checks.append(classified(check, basis, severity, precision=precision,
+                                         section=_section(spec, check.id)))
+    return checks
 
 
 def errata(key=None):
@@ -71,21 +109,29 @@ def errata(key=None):
     return [c for c in source_checks(key) if not c.agrees]
 
 
+def _row_kind(spec, row):
+    from ..compare import ROW_KINDS
+
+    entry = _match(spec.row_kinds, row.id)
+    if entry is None or entry[1] not in ROW_KINDS:
+        raise KeyError(f"compare row {row.id!r} has no kind; add it to its chapter's row_kinds "
+                       f"as one of {', '.join(ROW_KINDS)}")
+    return entry[1]
+
+
 def row_kind(row):
     """The kind of value a row's ``measured`` column holds: a key of
     :data:`magbench.compare.ROW_KINDS`, as the row's chapter declares it.
 
-    A row that no chapter classifies raises ``KeyError``: every new row must say whether
-    it compares with a measurement, a reference, a simulation or a printed value.
+    A row that no chapter classifies raises ``KeyError``: every new row must say what
+    it compares with.
     """
-    from ..compare import ROW_KINDS
-
+    if row.kind:
+        return row.kind
     for spec in CHAPTERS:
-        for prefix, kind in spec.row_kinds:
-            if row.id == prefix or (prefix.endswith("-") and row.id.startswith(prefix)):
-                return kind
-    raise KeyError(f"compare row {row.id!r} has no kind; add it to its chapter's row_kinds "
-                   f"as one of {', '.join(ROW_KINDS)}")
+        if _match(spec.row_kinds, row.id):
+            return _row_kind(spec, row)
+    return _row_kind(CHAPTERS[0], row)      # raises, naming the kinds
 
 
 def figure_modules():

@@ -285,6 +285,18 @@ CHAPTER = Chapter(
     comparisons=geomagnetic_rows,
     row_kinds=(("dipole-", "reference"), ("pole-", "reference"), ("lab-", "reference"),
                ("equatorial-dipole-field", "reference")),
+    check_classes=(
+        ("thesis-eq3-inclination-sign", "evaluated", "conclusion"),   # sign: the field points up
+        ("thesis-equator-field", "printed", None),
+        ("thesis-pole-field-rounding", "printed", None),
+        ("thesis-eq5-cgs-torque", "evaluated", "conclusion"),          # missing µ0, the law the thesis uses
+        ("thesis-eq12a-energy-ratio", "evaluated", "contained"),       # wrong formula, conclusion holds
+        ("kovalenko-mean-dipole-field", "printed", None, "hand table"),
+        ("kovalenko-rms-", "printed", None, "hand table"),
+        ("kovalenko-mean-field-n6", "printed", None, "hand table"),
+        ("kovalenko-dipole-accuracy", "printed", None, "hand table"),
+        ("kovalenko-polar-orbit-b2-ratio", "printed", None),
+    ),
     source_checks=(geomagnetic_checks, kovalenko_field_checks),
     cites="thesis §1, eqs. (1)–(12), Figs. 1–2; Kovalenko ch. 1–2",
     finds=("how far the thesis's dipole is from the real field at the laboratory in 2016; which of Kovalenko's field numbers reproduce"),

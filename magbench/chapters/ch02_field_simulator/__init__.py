@@ -299,8 +299,20 @@ CHAPTER = Chapter(
     pages=("book/ch02-field-simulator",), source="thesis", inputs=INPUTS,
     figure_modules=("magbench.chapters.ch02_field_simulator.figures",),
     comparisons=simulator_rows,
-    row_kinds=(("comsol-", "simulation"), ("sim-center-h", "measurement"),
-               ("sim-coil-resistance", "measurement")),
+    row_kinds=(("comsol-", "simulation"), ("sim-center-h", "measurement"), ("sim-coil-resistance", "measurement")),
+    check_classes=(
+        ("thesis-sim-ampere-turns", "printed", "downstream"),         # the coils were wound for it
+        ("thesis-sim-coil-resistance", "printed", "contained"),
+        ("thesis-sim-coil-power", "printed", "contained"),
+        ("thesis-eq15-required-field", "printed", "conclusion"),      # sizes the simulator's field
+        ("thesis-eq15-with-amplitude", "printed", None),
+        ("thesis-sim-coil-voltage", "printed", None),
+        ("thesis-sim-power-at-limit", "printed", None),
+        ("thesis-sim-center-deviation", "printed", "conclusion"),     # the thesis's verdict on its coils
+        ("thesis-sim-moment-", "printed", "downstream"),
+        ("kovalenko-four-coil-sphere", "printed", "conclusion"),      # a design statement, 3x off
+        ("kovalenko-", "printed", None),
+    ),
     source_checks=(simulator_checks, simulator_field_checks),
     cites="thesis §2, eqs. (13)–(16), Figs. 3, 5–8; Kovalenko §3.4",
     finds=("what the coil pair should make, what was built and measured, and which explanations of the gap the data can exclude"),

@@ -285,9 +285,18 @@ CHAPTER = Chapter(
     pages=("book/ch03-magnetorquers",), source="thesis", inputs=INPUTS,
     figure_modules=("magbench.chapters.ch03_magnetorquers.figures",),
     comparisons=magnetorquer_rows,
-    row_kinds=(("mtq-resistance-computed", "printed"), ("mtq-resistance", "measurement"),
-               ("mtq-moment", "printed"), ("mtq-power", "printed"),
-               ("mtq-current-for-moment", "printed"), ("mtq-winding-length", "printed")),
+    row_kinds=(("mtq-resistance", "measurement"), ("mtq-power", "design"), ("mtq-", "design")),
+    check_classes=(
+        ("thesis-mtq-built-moment", "printed", "downstream"),
+        ("thesis-mtq-current-for-moment", "printed", "contained"),
+        ("thesis-mtq-current-025", "printed", "contained"),
+        ("thesis-mtq-winding-length", "printed", "contained"),
+        ("thesis-mtq-built-power", "printed", "conclusion"),          # the built coil breaks the design limit
+        ("thesis-mtq-", "printed", None),
+        ("kovalenko-table5-nu-p40", "printed", "contained"),          # a misplaced decimal point
+        ("kovalenko-table5-", "printed", None, "hand table"),
+        ("kovalenko-", "printed", None),
+    ),
     source_checks=(magnetorquer_checks, magnetorquer_design_checks, kovalenko_actuator_checks),
     cites="thesis §3, eqs. (17)–(32), Fig. 9; Kovalenko ch. 8–11",
     finds=("which magnetorquer designs real wire allows, and whether the built coils meet the thesis's own limits"),

@@ -182,7 +182,11 @@ CHAPTER = Chapter(
     figure_modules=("magbench.chapters.ch04_mockup.figures", "magbench.chapters.ch04_mockup.figures_estimation", "magbench.chapters.ch04_mockup.figures_bench",
                     "magbench.chapters.ch04_mockup.figures_budget"),
     comparisons=_rows,
-    row_kinds=(("bench-error-", "measurement"), ("bench-budget-", "measurement")),
+    row_kinds=(("bench-error-", "measurement"), ("bench-budget-", "consistency")),
+    check_classes=(
+        ("thesis-eq14-design-amplitude", "printed", "conclusion"),   # the design rests on it
+        ("thesis-pid-gains-stable-si", "evaluated", "conclusion"),   # the count of figures, not a printed number
+    ),
     source_checks=(dynamics_checks,),
     cites="thesis §4, eqs. (33)–(39), Figs. 10–20",
     finds=("whether the printed PID gains stabilise the mock-up, how the filter behaves on real IMU data, and what the bench's measured orientation error can and cannot come from"),

@@ -237,7 +237,16 @@ CHAPTER = Chapter(
     pages=("book/ch05-detumbling",), source="samsat", inputs=INPUTS,
     figure_modules=("magbench.chapters.ch05_detumbling.figures",),
     comparisons=peer_rows,
-    row_kinds=(("ch05-", "reference"),),
+    row_kinds=(("ch05-basilisk-", "simulation"), ("ch05-cp557-", "claim"), ("ch05-kovalenko-", "reference"),
+               ("ch05-kstar-", "claim")),
+    check_classes=(
+        ("samsat-fig2-gain-small", "printed", "conclusion"),
+        ("samsat-fig2-", "printed", None),
+        ("samsat-kinematics-orbital-term", "evaluated", "conclusion"),   # a wrong formula of the algorithm
+        ("samsat-dipole-projections", "evaluated", "conclusion"),        # commands a torque, not a dipole
+        ("samsat-torque-mu0", "evaluated", "contained"),                 # the other reading of the same line
+        ("kov-", "printed", None),
+    ),
     source_checks=(detumbling_checks, formula_checks),
     cites="SamSat-218D §§ Rate damping, Attitude determination, Kinematics, Figs. 1–2; Kovalenko ch. 5–6",
     finds=("how fast B-dot detumbles a 3U beside Basilisk, Cp557 and Kovalenko's estimate, what SamSat-218D's "

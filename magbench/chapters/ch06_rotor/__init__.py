@@ -292,7 +292,11 @@ CHAPTER = Chapter(
     inputs=INPUTS,
     figure_modules=("magbench.chapters.ch06_rotor.figures",),
     comparisons=claim_rows,
-    row_kinds=(("rotor-", "printed"), ("kov-spin-accuracy", "printed"), ("kov-spin-axis-precession", "printed")),
+    row_kinds=(("rotor-", "verbal"), ("kov-spin-accuracy", "claim"), ("kov-spin-axis-precession", "claim")),
+    check_classes=(
+        ("rotor-damping-sign", "evaluated", "conclusion"),   # the printed law pumps energy in
+        ("kov-", "printed", None),
+    ),
     source_checks=(damping_checks, kovalenko_checks),
     cites="rotor slides (equations, control law, damping projection; the two lost plots); Kovalenko ch. 7",
     finds=("that the slides' law holds the reference exactly for any gain, that the printed damping sign "

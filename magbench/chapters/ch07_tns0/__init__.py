@@ -454,7 +454,11 @@ CHAPTER = Chapter(
     inputs=INPUTS,
     figure_modules=("magbench.chapters.ch07_tns0.figures",),
     comparisons=capture_rows,
-    row_kinds=(("tns0-final-angle-", "measurement"), ("tns0-full-run-", "measurement")),
+    row_kinds=(("tns0-final-angle-", "consistency"), ("tns0-full-run-", "consistency")),
+    check_classes=(
+        ("tns0-", "printed", None),
+        ("kovalenko-", "printed", None),
+    ),
     source_checks=(cone_checks, table_checks, kovalenko_checks),
     cites="TNS-0 preprint (Ilyin et al. 2006), §1–§4, Tables 1–2, Figs. 3 and 14; Kovalenko ch. 12",
     finds=("how far the averaged field cone is from the real field, that Table 1's spin decays linearly "
