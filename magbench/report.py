@@ -15,7 +15,7 @@ from ._format import format_number
 __all__ = ["provenance", "figure", "figure_png", "glue_number", "glue_text", "glue_quantity",
            "format_number", "format_quantity", "format_percent", "display_unit", "printed_text", "printed_quantity",
            "format_with_uncertainty", "format_range", "linked", "compared_value", "row_verdict", "source_value",
-           "table", "compare_table", "checks_table", "benchmark_result",
+           "table", "compare_table", "checks_table", "benchmark_result", "concordance_entries", "reader_title",
            "FIGURE_DPI", "CSS_PIXELS_PER_INCH"]
 
 #: Resolution of the PNG files in the book: twice the CSS pixel density, so figures
@@ -414,3 +414,69 @@ def benchmark_result(name, directory=None):
     if not path.exists():
         raise FileNotFoundError(f"no benchmark record {path}; run `make bench` first")
     return json.loads(path.read_text(encoding="utf-8"))
+
+
+#: How each source is named in the figures' citations (``FigureSpec.source``): a pattern
+#: of the name, which the concordance removes to leave the place in the source.
+SOURCE_CITATIONS = {
+    "thesis": r"Bui \(2016\),?\s*(?:thesis\s*)?",
+    "kovalenko": r"Kovalenko \(1975\),?\s*",
+    "samsat": r"(?:Kramlikh & Melnik \(2016\),?\s*)?SamSat-218D,?\s*",
+    "rotor": r"(?:ours, beyond the\s*)?rotor slides(?: \(Ovchinnikov, Pen'kov, Roldugin, Tkachev\))?,?\s*",
+    "tns0": r"TNS-0 preprint(?: \(Ilyin et al\. 2006\))?,?\s*",
+}
+
+
+def _top_level_split(text, sep=";"):
+    """``text`` split at ``sep`` outside parentheses."""
+    parts, depth, current = [], 0, ""
+    for char in text:
+        depth += (char == "(") - (char == ")")
+        if char == sep and depth == 0:
+            parts.append(current)
+            current = ""
+        else:
+            current += char
+    return parts + [current]
+
+
+def reader_title(title):
+    """A figure title without the developer's notes on how long it takes to compute."""
+    title = re.sub(r";\s*(?:slow|about \d+\s*(?:–\s*\d+\s*)?s to compute)[^);]*(?=\))", "", title)
+    return re.sub(r"\s*\((?:slow|about \d+\s*(?:–\s*\d+\s*)?s to compute)[^)]*\)", "", title).strip()
+
+
+def concordance_entries(source):
+    """Where the book reproduces each place of a source, in reading order.
+
+    Generated from the chapters' own citations: each chapter's ``concordance`` entries,
+    then every figure whose citation names the source (its place in the source as the
+    figure cites it). Returns a list of dicts with keys ``source`` (the place in the
+    source), ``what`` and ``book`` (MyST markup linking the book's place).
+    """
+    from . import figures
+    from .chapters import CHAPTERS
+
+    name = re.compile(SOURCE_CITATIONS[source])
+    entries = []
+    for spec in CHAPTERS:
+        linked = set()
+        for key, place, what, book in spec.concordance:
+            if key == source:
+                entries.append({"source": place, "what": what, "book": book})
+                linked |= set(re.findall(r"`([\w-]+)`", book))
+        for module in spec.figure_modules:
+            for figure_id in figures.figure_ids():
+                figure = figures.get_spec(figure_id)
+                if figure_id in linked or not figure.function_name.startswith(module + "."):
+                    continue
+                parts = [p.strip() for p in _top_level_split(figure.source) if name.search(p)]
+                if parts:
+                    beyond = parts[0].startswith("ours, beyond")
+                    place = name.sub("", parts[0], count=1).strip(" ,") or "the source as a whole"
+                    if beyond:
+                        place = f"{place} (beyond the source: ours)".strip()
+                    title = reader_title(figure.title)
+                    entries.append({"source": place, "what": title, "book": f"{{numref}}`{figure_id}`"})
+                    linked.add(figure_id)
+    return entries

@@ -65,6 +65,11 @@ class Chapter:
     discussed_in : tuple of (str, str)
         Row or check id (or id prefix ending in ``-``) and the label of the book section
         that discusses it; the ledger pages link each row there.
+    concordance : tuple of (str, str, str, str)
+        Places of the sources the chapter reproduces: the source's data key, the place as
+        the source numbers it ("§2.2, eq. (16)"), what it is, and where the book has it
+        (MyST markup: ``{ref}``, ``{eq}`` or ``{numref}`` links). The concordance page is
+        generated from these and from the figures' own citations.
 
     The chapter's first page carries the label ``(key)=``, so ``{ref}`key``` links it.
     """
@@ -84,6 +89,7 @@ class Chapter:
     source_names: tuple = ()
     check_classes: tuple = ()
     discussed_in: tuple = ()
+    concordance: tuple = ()
 
 
 def _chapters():

@@ -298,6 +298,13 @@ CHAPTER = Chapter(
         ("kovalenko-", "printed", None),
     ),
     source_checks=(magnetorquer_checks, magnetorquer_design_checks, kovalenko_actuator_checks),
+    concordance=(
+        ("thesis", "§3.1–3.2, eqs. (17)–(32)", "sizing a magnetorquer",
+         "{ref}`ch03`, {eq}`eq-ch03-moment`, {eq}`eq-ch03-eq20`, {eq}`eq-ch03-wm`, {numref}`ch03-design-space`, "
+         "{numref}`ch03-wm-product`"),
+        ("thesis", "§3.3, Fig. 9", "the built coils on the mock-up", "{numref}`thesis-fig09`"),
+        ("kovalenko", "ch. 8–11", "magnets, rods and coils as actuators", "{ref}`ch03`"),
+    ),
     cites="thesis §3, eqs. (17)–(32), Fig. 9; Kovalenko ch. 8–11",
     finds=("which magnetorquer designs real wire allows, and whether the built coils meet the thesis's own limits"),
     source_names=(("thesis", "thesis"), ("kovalenko", "Kovalenko (1975)")),

@@ -188,6 +188,21 @@ CHAPTER = Chapter(
         ("thesis-pid-gains-stable-si", "evaluated", "conclusion"),   # the count of figures, not a printed number
     ),
     source_checks=(dynamics_checks,),
+    concordance=(
+        ("thesis", "§4.1, eqs. (33)–(36), Figs. 10–13", "the mock-up on a thread: equations of motion, free swing",
+         "{ref}`ch04`, {eq}`eq-ch04-lagrange`, {eq}`eq-ch04-motion`, {numref}`thesis-fig10`, {numref}`thesis-fig11`, "
+         "{numref}`thesis-fig12`, {numref}`thesis-fig13`"),
+        ("thesis", "§4.1, eqs. (37)–(38), Figs. 14–18", "PID control and the printed gains",
+         "{eq}`eq-ch04-pid`, {eq}`eq-ch04-routh`, {numref}`thesis-fig14` to {numref}`thesis-fig18`, "
+         "{numref}`ch04-gain-readings`"),
+        ("thesis", "§4.2, eq. (39)", "sensors and the complementary filter",
+         "{ref}`ch04-estimation`, {eq}`eq-ch04-cf`, {eq}`eq-ch04-tau`, {numref}`ch04-filter-alpha`, "
+         "{numref}`ch04-heading-fusion`"),
+        ("thesis", "§4.4, Figs. 19–20", "the bench runs",
+         "{ref}`ch04-bench`, {eq}`eq-ch04b-plant`, {numref}`thesis-fig19`, {numref}`thesis-fig20`, "
+         "{numref}`ch04-montecarlo`; the error budget in {ref}`ch04-budget`"),
+        ("thesis", "Conclusion, p. 37", "the thesis's conclusion", "{ref}`findings`"),
+    ),
     cites="thesis §4, eqs. (33)–(39), Figs. 10–20",
     finds=("whether the printed PID gains stabilise the mock-up, how the filter behaves on real IMU data, and what the bench's measured orientation error can and cannot come from"),
     source_names=(("thesis", "thesis"),),
