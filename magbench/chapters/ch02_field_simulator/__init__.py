@@ -160,7 +160,7 @@ def simulator_checks():
             location="§2.2, eq. (16)", quantity=f"Ampere-turns per coil for {h:g} A/m (a = {a:g} m, d/a = {ratio:g})",
             computed=ni, unit="A",
             explanation=(f"Eq. (16) gives {ni:.1f} A·turns; the printed {ni_slip:.0f} is reproduced exactly by "
-                         "evaluating (d/2a)² as (d/a)²/2 (magbench.chapters.ch02_field_simulator.thesis_printed_ampere_turns)."),
+                         "evaluating (d/2a)² as (d/a)²/2, i.e. without squaring the 2."),
             computation="magbench.fields.helmholtz_ampere_turns"),
         printed_check(
             printed["thesis-sim-coil-resistance"], id="thesis-sim-coil-resistance", chapter="ch02",
@@ -211,7 +211,32 @@ def simulator_field_checks():
     rubens_dev = 100 * fields.coaxial_system_cylinder_nonuniformity(*rubens, 0.25, 0.5)
     design_h = v["sim_design_h"]
     deviation_printed = printed["sim-center-h-deviation"]
-    return [
+    # Thesis §3.2 solves eq. (15) for the moment, with A, at the chosen field: one line, two periods.
+    j, amp, t = v["mockup_inertia"], v["oscillation_amplitude"], v["oscillation_period"]
+    m60 = float(dynamics.oscillation_moment(j, design_h, t, amp))
+    m60_no_a = float(dynamics.oscillation_moment(j, design_h, t))
+    t_for_printed = t * np.sqrt(m60 / printed["thesis-mtq-moment-60s"].value)
+    t5 = 5 * 60.0
+    m5 = float(dynamics.oscillation_moment(j, design_h, t5, amp))
+    m5_no_a = float(dynamics.oscillation_moment(j, design_h, t5))
+    moment_checks = [
+        printed_check(
+            printed["thesis-mtq-moment-60s"], id="thesis-mtq-moment-60s", chapter="ch02",
+            location="§3.2", quantity=f"Coil moment for a {t:g} s swing at {design_h:g} A/m",
+            computed=m60, unit="A m^2",
+            explanation=(f"The printed formula m = 4π²JA/(μ0HT²) with A = π, J = {j:g} kg·m², T = {t:g} s, "
+                         f"H = {design_h:g} A/m gives {m60:.3f} A·m² ({m60_no_a:.3f} A·m² without A); "
+                         f"the printed ≈ 0.4 would need T = {t_for_printed:.0f} s. The coils are sized for 0.4."),
+            computation="magbench.dynamics.oscillation_moment"),
+        printed_check(
+            printed["thesis-mtq-moment-5min"], id="thesis-mtq-moment-5min", chapter="ch02",
+            location="§3.2", quantity=f"Coil moment for a 5 min swing at {design_h:g} A/m",
+            computed=m5, unit="A m^2",
+            explanation=(f"The same formula with T = 5 min gives {m5:.4f} A·m², which '≈ 0.02' rounds "
+                         f"({m5_no_a:.4f} A·m² without A)."),
+            computation="magbench.dynamics.oscillation_moment"),
+    ]
+    return moment_checks + [
         printed_check(
             printed["thesis-eq15-field"], id="thesis-eq15-required-field", chapter="ch02",
             location="§2.1, eq. (15)", quantity="Field for a 60 s swing, eq. (15) as printed",

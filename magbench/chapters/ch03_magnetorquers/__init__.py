@@ -28,12 +28,15 @@ INPUTS = ("copper_resistivity", "copper_density", "mtq_moment", "mtq_voltage", "
 def magnetorquer_rows(params=None):
     """Chapter 3: the built magnetorquers beside the thesis's own formulas.
 
-    One row is a measurement (the coil's resistance, ≈ 55 Ω); the others set a number the
-    thesis printed for the built coil beside what its own equations give for it (square
-    turn of side l, N = 240, 0.2 mm wire, 12 V). The resistance's tolerance is the spread
-    of the model over the wire standard's diameter tolerance (IEC 60317-0-1, ±3 µm at
-    0.2 mm) plus half a unit of the measured value's last digit; the others use half a unit
-    of the printed value's last digit.
+    Two rows: the coil's measured resistance (≈ 55 Ω) beside the model of the built
+    winding (square turn of side l, N = 240, 0.2 mm wire), and the design's power limit
+    (2 W, a design value) beside the built coil's power at 12 V with the measured
+    resistance. The numbers the thesis computed and printed for the built coil (its
+    resistance, moment, current and winding length) are source checks
+    (:func:`magnetorquer_checks`, :func:`magnetorquer_design_checks`), not rows. The resistance's tolerance is the spread of the
+    model over the wire standard's diameter tolerance (IEC 60317-0-1, ±3 µm at 0.2 mm)
+    plus half a unit of the measured value's last digit; the power's is half a unit of
+    the limit's printed digit.
 
     Parameters
     ----------
@@ -44,7 +47,7 @@ def magnetorquer_rows(params=None):
 
     p = params or chapter_parameters("ch03")
     rho, u, side, n = p["copper_resistivity"], p["mtq_voltage"], p["mtq_side"], p["mtq_turns"]
-    built, printed = load_measurements("thesis"), load_printed("thesis")
+    built = load_measurements("thesis")
     d = built["mtq-wire-diameter"].value
     table = load_wire_table("iec60317")
     d_tol = table.tolerance[int(np.argmin(np.abs(np.array(table.nominal_diameter) - d)))]
@@ -55,30 +58,13 @@ def magnetorquer_rows(params=None):
     r_model, r_meas = resistance(d), built["mtq-resistance"].value
     r_spread = max(abs(resistance(d - d_tol) - r_model), abs(resistance(d + d_tol) - r_model))
     src = "thesis"
-    square = hardware.turn_area(side, "square")
-    s_design = hardware.wire_area_for_moment(p["mtq_moment"], u, side, rho)
     return [
         make_row("mtq-resistance", "Resistance of a built magnetorquer (0.2 mm wire, N = 240)",
                  f"{src} §3.3 (measured, ≈ 55 Ω)", r_meas, r_model, r_spread + 0.5,
                  unit="ohm", note=f"model spread over d ± {d_tol * 1e6:.0f} µm: ±{r_spread:.2f} Ω"),
-        make_row("mtq-resistance-computed", "Resistance the thesis computed for the built coil",
-                 f"{src} §3.3 (printed)", printed["mtq-resistance-computed"].value, r_model,
-                 printed["mtq-resistance-computed"].resolution, unit="ohm"),
-        make_row("mtq-moment", "Dipole moment of the built coil at 12 V (eq. 20)",
-                 f"{src} §3.3 (printed)", printed["mtq-moment"].value,
-                 hardware.moment_from_voltage(u, side, hardware.wire_area(d), rho), printed["mtq-moment"].resolution,
-                 unit="A m^2",
-                 note=f"with the measured resistance: {u / r_meas * n * float(square):.3f} A·m²"),
         make_row("mtq-power", "Joule power of the built coil at 12 V (measured resistance)",
                  "thesis §3.2 (the design's 2 W)", p["mtq_max_power"],
                  hardware.joule_power(u, r_meas), 0.5, unit="W"),
-        make_row("mtq-current-for-moment", "Coil current for 0.4 A·m² (square, N = 240)",
-                 "thesis §4.1 (printed)", printed["thesis-mtq-current-024"].value,
-                 hardware.current_for_moment(p["mtq_moment"], n, square),
-                 printed["thesis-mtq-current-024"].resolution, unit="A"),
-        make_row("mtq-winding-length", "Single-layer winding length N·√S_r at N = 240",
-                 "thesis §3.2 (printed, ≈ 0.1 m)", printed["thesis-mtq-winding-length"].value,
-                 hardware.winding_length(n, s_design), printed["thesis-mtq-winding-length"].resolution, unit="m"),
     ]
 
 
