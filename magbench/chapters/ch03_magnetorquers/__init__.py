@@ -199,8 +199,9 @@ def magnetorquer_design_checks():
               quantity=f"Excess of the measured ≈ {r_meas:g} Ω over the computed resistance"),
         check("thesis-mtq-built-power", "thesis-mtq-design-power", "§3.2–3.3", p_built, "W",
               (f"The {built['mtq-wire-diameter'].value * 1e3:g} mm wire (thicker than the {d_mm(s_design)} mm "
-               f"design) at N = {n:.0f} draws {u:g}²/{r_built:.1f} = {p_built:.2f} W, above the W ≤ {w_max:g} W "
-               f"limit the thesis set itself; N ≥ {n_for_limit} turns would keep it."),
+               f"design) at N = {n:.0f} draws {u:g}²/{r_built:.1f} = {p_built:.2f} W with the computed "
+               f"resistance ({float(hardware.joule_power(u, r_meas)):.2f} W with the measured ≈ {r_meas:g} Ω), "
+               f"above the W ≤ {w_max:g} W limit the thesis set itself; N ≥ {n_for_limit} turns would keep it."),
               "joule_power",
               quantity=f"Joule power of the built coil at {u:g} V, against the design's {w_max:g} W"),
         check("thesis-mtq-current-025", "thesis-mtq-current-025", "§4.1",
