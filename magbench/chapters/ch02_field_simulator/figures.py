@@ -453,9 +453,10 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
     Returns a list of dicts with keys ``id``, ``hypothesis``; ``predicted_h`` [A/m], the
     centre field the hypothesis predicts (NaN when its free parameter is solved for);
     ``needed`` and ``needed_unit``, the value of that free parameter that reproduces
-    the measurement (NaN when there is none); ``constraint``, ``constraint_unit`` and
-    ``allowed`` (low, high), a second observable the hypothesis predicts and the range
-    the thesis's measurements allow for it (NaN/None when there is none); and
+    the measurement (NaN when there is none); ``constraint``, ``constraint_unit``,
+    ``constraint_what`` (what the second number is, in words) and ``allowed`` (low, high),
+    a second observable the hypothesis predicts and the range the thesis's measurements
+    allow for it (NaN/None when there is none); and
     ``excluded``: True when the prediction misses the measurement by more than
     ``tolerance_h``, the constraint falls outside its allowed range, or no value of the
     free parameter reproduces the measurement (``needed`` NaN: a field above the largest
@@ -469,7 +470,7 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
     def resistance(radius, n_turns):
         return float(hardware.winding_resistance(radius, n_turns, wire_diameter, copper_resistivity))
 
-    def row(id_, text, predicted=np.nan, needed=np.nan, unit="", constraint=np.nan, c_unit="",
+    def row(id_, text, predicted=np.nan, needed=np.nan, unit="", constraint=np.nan, c_unit="", c_what="",
             allowed=None):
         excluded = bool(np.isfinite(predicted) and abs(predicted - measured_center_h) > tolerance_h)
         excluded |= bool(unit) and not np.isfinite(needed)     # solved for, and no value fits
@@ -477,7 +478,7 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
             excluded |= not allowed[0] <= constraint <= allowed[1]
         return {"id": id_, "hypothesis": text, "predicted_h": float(predicted), "needed": float(needed),
                 "needed_unit": unit, "constraint": float(constraint), "constraint_unit": c_unit,
-                "allowed": allowed, "excluded": excluded}
+                "constraint_what": c_what, "allowed": allowed, "excluded": excluded}
 
     r_turn = resistance(a, 1.0)
     n_eff = n * frac
@@ -492,22 +493,23 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
     return [
         row("exact", "exact field of the pair as built", predicted=h_model),
         row("fewer-turns", "fewer effective turns per coil", needed=n_eff, unit="turns",
-            constraint=resistance(a, n_eff), c_unit="ohm", allowed=(r_lo, r_hi)),
+            constraint=resistance(a, n_eff), c_unit="ohm", c_what="resistance", allowed=(r_lo, r_hi)),
         row("resistance-turns", "the fewest turns the measured resistance allows",
             predicted=float(fields.helmholtz_center_h(i, r_lo / r_turn, a, d)), needed=r_lo / r_turn,
             unit="turns"),
         row("lower-current", "a lower current than the stated one", needed=i * frac, unit="A"),
         row("larger-radius", "larger coils", needed=a_eff, unit="m",
-            constraint=resistance(a_eff, n) if np.isfinite(a_eff) else np.nan, c_unit="ohm", allowed=(r_lo, r_hi)),
+            constraint=resistance(a_eff, n) if np.isfinite(a_eff) else np.nan, c_unit="ohm", c_what="resistance",
+            allowed=(r_lo, r_hi)),
         row("one-coil-off", "one coil unpowered", predicted=h_model / 2),
         row("one-coil-reversed", "one coil reversed", predicted=reversed_h),
         row("earth-field", "the Earth's field against the coils' (at most)", predicted=h_model - earth_h),
         row("probe-axial", "probe displaced along the axis",
             needed=fields.pair_distance_to_h(frac, a, d, "axial") if reading_lower else np.nan,
-            unit="m", constraint=d / 2, c_unit="m (coil plane)"),
+            unit="m", constraint=d / 2, c_unit="m", c_what="coil plane at"),
         row("probe-transverse", "probe displaced across the axis",
             needed=fields.pair_distance_to_h(frac, a, d, "transverse") if reading_lower else np.nan, unit="m",
-            constraint=a, c_unit="m (coil radius)"),
+            constraint=a, c_unit="m", c_what="coil radius"),
         row("probe-tilt", "single-axis probe tilted from the coil axis",
             needed=float(np.degrees(np.arccos(frac))) if reading_lower else np.nan, unit="deg"),
     ]
