@@ -528,8 +528,9 @@ def compute_hypotheses(turns, current, coil_radius, built_spacing, wire_diameter
     r_lo, r_hi = resistance_range(m["sim-coil-resistance"])
     f = igrf.igrf_field(p["laboratory_latitude"], p["laboratory_longitude"], p["thesis_epoch"])
     earth_h = f.total / MU_0
+    tolerance = ch02_field_simulator.simulator_center_h_tolerance(current, turns, coil_radius)
     rows = hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper_resistivity,
-                      measured, (r_lo, r_hi), earth_h, ch02_field_simulator.simulator_center_h_tolerance(current, turns, coil_radius))
+                      measured, (r_lo, r_hi), earth_h, tolerance)
     a, d = coil_radius, built_spacing
     n_axis = np.linspace(40, 150, 111)
     s = np.linspace(0.0, 0.6, 241)
@@ -548,7 +549,7 @@ def compute_hypotheses(turns, current, coil_radius, built_spacing, wire_diameter
             "predicted_h": ("A/m", [np.nan_to_num(r["predicted_h"], nan=-1.0) for r in rows])}),
     ]
     return FigureData("ch02-hypotheses", "", "", {}, series, extra={
-        "rows": rows, "measured": measured, "turns_band": (r_lo / r_turn, r_hi / r_turn),
+        "rows": rows, "measured": measured, "tolerance": tolerance, "turns_band": (r_lo / r_turn, r_hi / r_turn),
         "separation": d, "radius": a, "turns": turns})
 
 
@@ -566,42 +567,61 @@ def resistance_range(row):
 
 def plot_hypotheses(data):
     """Three panels: turns (with the resistance band), probe offset, and the predictions."""
+    import textwrap
+
     import matplotlib.pyplot as plt
 
     e = data.extra
-    meas = e["measured"]
-    fig = plt.figure(figsize=(7.0, 6.4), layout="constrained")
-    grid = fig.add_gridspec(2, 2, height_ratios=[1.0, 0.9])
+    meas, tol = e["measured"], e["tolerance"]
+    fig = plt.figure(figsize=(7.0, 7.0), layout="constrained")
+    grid = fig.add_gridspec(2, 2, height_ratios=[1.0, 1.0])
     a1, a2, a3 = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1]), fig.add_subplot(grid[1, :])
     c = {k: np.asarray(v) for k, (u, v) in data.series[0].columns.items()}
-    a1.plot(c["turns"], c["H_centre"], "C0")
+    a1.plot(c["turns"], c["H_centre"], "C0", label="centre field")
     lo, hi = e["turns_band"]
-    a1.axvspan(lo, hi, color="C2", alpha=0.2, label="turns allowed by R = 11–14 Ω")
+    a1.axvspan(lo, hi, color="C2", alpha=0.2, label="turns the measured\nresistance allows")
     a1.axvline(e["turns"], color="0.4", linestyle=":", label=f"{e['turns']:.0f} turns (stated)")
     a1.axhline(meas, color="k", linestyle="--", label=f"measured {meas:.0f} A/m")
-    a1.set_xlabel("effective turns per coil", fontsize=8)
-    a1.set_ylabel("H at the center [A/m]", fontsize=8)
-    a1.legend(fontsize=7, loc="upper left")
+    a1.set_xlabel("effective turns per coil", fontsize=9)
+    a1.set_ylabel("$H$ at the centre [A/m]", fontsize=9)
+    a1.legend(fontsize=7.5, loc="upper left", framealpha=0.9)
+    a1.set_ylim(top=1.35 * float(np.max(c["H_centre"])))
     c = {k: np.asarray(v) for k, (u, v) in data.series[1].columns.items()}
     a2.plot(c["offset"] * 100, c["axial"], label="along the axis")
     a2.plot(c["offset"] * 100, c["transverse"], label="across the axis")
     a2.axhline(meas, color="k", linestyle="--")
     a2.axvline(e["separation"] / 2 * 100, color="C0", linestyle=":", label="coil plane")
     a2.axvline(e["radius"] * 100, color="C1", linestyle=":", label="coil radius")
-    a2.set_xlabel("probe offset from the center [cm]", fontsize=8)
-    a2.set_ylabel("|H| [A/m]", fontsize=8)
-    a2.legend(fontsize=7, loc="lower left")
+    a2.set_xlabel("probe offset from the centre [cm]", fontsize=9)
+    a2.set_ylabel("$|H|$ [A/m]", fontsize=9)
+    a2.legend(fontsize=7.5, loc="lower left", framealpha=0.9)
     rows = [r for r in e["rows"] if np.isfinite(r["predicted_h"])]
-    a3.barh(range(len(rows)), [r["predicted_h"] for r in rows], color="C0")
-    a3.set_yticks(range(len(rows)))
-    a3.set_yticklabels([r["hypothesis"] for r in rows], fontsize=7)
-    a3.invert_yaxis()
+    values = [r["predicted_h"] for r in rows]
+    colours = ["0.55" if r["id"] == "exact" else "C0" for r in rows]
+    names = ["none: the exact field of the pair as built" if r["id"] == "exact" else r["hypothesis"]
+             for r in rows]
+    y = np.arange(len(rows))
+    a3.barh(y, values, color=colours, height=0.6)
+    a3.axvspan(meas - tol, meas + tol, color="k", alpha=0.12, lw=0)
     a3.axvline(meas, color="k", linestyle="--")
-    a3.set_xlabel("predicted H at the center [A/m]; dashed: measured", fontsize=8)
+    top = 1.2 * max(max(values), meas)
+    for yi, v, r in zip(y, values, rows):
+        # A bar end marker, so that a zero-length bar stays visible.
+        a3.plot([v], [yi], "D" if v < 0.01 * top else "|", color="k", markersize=7 if v < 0.01 * top else 14,
+                clip_on=False, zorder=3)
+        note = " (the coils cancel at the centre)" if r["id"] == "one-coil-reversed" else ""
+        a3.text(v + 0.015 * top, yi, f" {v:.0f} A/m{note}", va="center", fontsize=8.5)
+    a3.set_xlim(0, top)
+    a3.set_yticks(y)
+    a3.set_yticklabels([textwrap.fill(n, 26) for n in names], fontsize=8.5)
+    a3.invert_yaxis()
+    a3.set_xlabel(f"predicted centre field [A/m]; dashed, grey band: measured {meas:.0f} ± {tol:.0f} A/m",
+                  fontsize=9)
     for ax in (a1, a2, a3):
-        ax.tick_params(labelsize=7)
-    fig.suptitle(f"What could make the center field read {meas:.0f} A/m instead of the model's?",
-                 fontsize=8.5)
+        ax.tick_params(labelsize=8)
+    fig.suptitle(f"No fixed hypothesis (bottom) reaches the measured {meas:.0f} A/m;\n"
+                 "fewer turns would, but their resistance is too low (top left); a displaced probe could (top right)",
+                 fontsize=9)
     return fig
 
 

@@ -87,6 +87,7 @@ def plot_fig09(data):
     h, w, n = data.extra["side"] / 2, data.extra["width"], data.extra["coils"]
     fig = plt.figure(figsize=(6.4, 5.6))
     ax = fig.add_subplot(projection="3d")
+    ax.computed_zorder = False          # the moments and their labels stay on top of the bands
     for s in data.series[:2]:
         c = s.columns
         ax.plot(c["x"][1], c["y"][1], c["z"][1], color="0.5", linewidth=0.8)
@@ -108,21 +109,22 @@ def plot_fig09(data):
         ax.add_collection3d(Poly3DCollection(quads, facecolor=colours[axis], alpha=0.35,
                                              edgecolor=colours[axis]))
         tip = [0.0, 0.0, 0.0]
-        tip[axis] = 1.6 * h
-        ax.quiver(0, 0, 0, *tip, color=colours[axis], linewidth=2, arrow_length_ratio=0.15)
-        ax.text(*[1.7 * v for v in tip], f"m{'xyz'[axis]}", color=colours[axis])
-    lim = 1.7 * h
+        tip[axis] = 1.5 * h
+        ax.quiver(0, 0, 0, *tip, color=colours[axis], linewidth=2.5, arrow_length_ratio=0.15, zorder=10)
+        ax.text(*[1.2 * v for v in tip], rf"$\mathbf{{m}}_{'xyz'[axis]}$", color=colours[axis], fontsize=12,
+                ha="center", va="center", zorder=11)
+    lim = 1.9 * h
     ax.set_xlim(-lim, lim)
     ax.set_ylim(-lim, lim)
     ax.set_zlim(-lim, lim)
-    ax.set_box_aspect((1, 1, 1))
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("y [m]")
-    ax.set_zlabel("z [m]")
+    ax.set_box_aspect((1, 1, 1), zoom=1.2)
+    # The drawing is to scale and its size is in the title: axes, ticks and panes would only
+    # compete with the moments' labels.
+    ax.set_axis_off()
     layers = data.extra.get("layers", 1)
     kind = "single-layer" if layers == 1 else f"{layers}-layer"
-    ax.set_title(f"1U mock-up with {n} orthogonal coils ({kind} bands {w * 1e3:.0f} mm wide)",
-                 fontsize=8.5)
+    ax.set_title(f"1U mock-up, a {2 * h * 1e2:.0f} cm cube, with {n} orthogonal coils\n"
+                 f"({kind} bands {w * 1e3:.0f} mm wide) and the moment $\\mathbf{{m}}$ of each", fontsize=9)
     return fig
 
 
