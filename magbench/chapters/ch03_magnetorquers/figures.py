@@ -249,8 +249,8 @@ def plot_wm_product(data):
     p = {k: v for k, (u, v) in data.series[0].columns.items()}
     s = {k: v for k, (u, v) in data.series[1].columns.items()}
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.0, 4.6))
-    a1.loglog(p["side"], p["copper"], "C1", label="copper (thesis ρ̃ρ)")
-    a1.loglog(p["side"], p["aluminium"], "C0", label="aluminium (Kovalenko γρ)")
+    a1.loglog(p["side"], p["copper"], "C1", label=r"copper (the thesis's $\gamma\rho$)")
+    a1.loglog(p["side"], p["aluminium"], "C0", label=r"aluminium (Kovalenko's $\gamma\rho$)")
     a1.axvline(data.extra["side0"], color="0.6", linestyle=":", label="mock-up coil, l = 0.1 m")
     a1.set_xlabel("coil size l [m]")
     a1.set_ylabel("M·W [kg·W]")
@@ -312,10 +312,10 @@ def compute_actuators(mtq_moment, mtq_voltage, mtq_side, mtq_max_power, mtq_max_
     em_moment = core_averaging_factor * j_c * math.pi * em["core_diameter"] ** 2 * em["length"] / 4
     j_r = magnet_remanence / MU_0
     pm = [("permanent magnet, B_r = %.2g T" % magnet_remanence, j_r, alnico_elongation, magnet_density),
-          ("permanent magnet, alnico ЮН13ДК25БА", alnico_max_magnetization, alnico_elongation, magnet_density)]
+          ("permanent magnet, AlNiCo YuN13DK25BA", alnico_max_magnetization, alnico_elongation, magnet_density)]
     rows = [("air-core coil (IEC wire, least mass)", coil["mass"] if coil else np.nan,
              coil["power"] if coil else np.nan, mtq_side, m if coil is None else coil["moment"], 1.0),
-            ("rod electromagnet, permalloy 50Н", em["mass"], em["power"], em["length"], em_moment, 1.0)]
+            ("rod electromagnet, permalloy 50N", em["mass"], em["power"], em["length"], em_moment, 1.0)]
     for label, j, p0, gam in pm:
         length, dia, mass = hardware.permanent_magnet_min_mass(m, j, p0, gam)
         rows.append((label, float(mass), 0.0, float(length), m, 0.0))
@@ -359,13 +359,13 @@ def _actuator_parameters():
             ("permalloy_design_field", "A/m", "field in the core at J°, H°"),
             ("permalloy_a", "A/m", "magnetisation-curve constant a (9.21)"),
             ("permalloy_b", "A/m", "magnetisation-curve constant b (9.21)"),
-            ("core_averaging_factor", "1", "k = J_c/J_ц"),
+            ("core_averaging_factor", "1", "k, mean over central magnetisation of the core"),
             ("em_current_density", "A/m^2", "winding current density"),
             ("em_fill_factor", "1", "winding fill factor"),
             ("core_density", "kg/m^3", "core density"),
             ("magnet_remanence", "T", "remanence of the best magnet material (Kovalenko E02)"),
             ("magnet_density", "kg/m^3", "magnet density"),
-            ("alnico_max_magnetization", "A/m", "largest mean magnetisation of ЮН13ДК25БА"),
+            ("alnico_max_magnetization", "A/m", "largest mean magnetisation of YuN13DK25BA (an AlNiCo alloy)"),
             ("alnico_elongation", "1", "elongation at which it is reached")):
         params[name] = FigureParameter(p[name], unit, text)
     return params
