@@ -291,4 +291,10 @@ CHAPTER = Chapter(
     cites="thesis §1, eqs. (1)–(12), Figs. 1–2; Kovalenko ch. 1–2",
     finds=("how far the thesis's dipole is from the real field at the laboratory in 2016; which of Kovalenko's field numbers reproduce"),
     source_names=(("thesis", "thesis"), ("kovalenko", "Kovalenko (1975)")),
+    discussed_in=(("dipole-", "ch01-dipole-quality"), ("pole-", "ch01-dipole-quality"),
+                  ("lab-", "ch01-dipole-quality"), ("equatorial-dipole-field", "ch01-dipole-quality"),
+                  ("thesis-eq3-inclination-sign", "ch01-elements"), ("thesis-equator-field", "ch01-elements"),
+                  ("thesis-pole-field-rounding", "ch01-elements"), ("thesis-eq5-cgs-torque", "ch01-torque"),
+                  ("thesis-eq12a-energy-ratio", "ch01-energy"), ("kovalenko-polar-orbit-b2-ratio", "ch01-orbit"),
+                  ("kovalenko-", "ch01-kovalenko")),
 )

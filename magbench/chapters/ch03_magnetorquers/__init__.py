@@ -279,4 +279,8 @@ CHAPTER = Chapter(
     cites="thesis §3, eqs. (17)–(32), Fig. 9; Kovalenko ch. 8–11",
     finds=("which magnetorquer designs real wire allows, and whether the built coils meet the thesis's own limits"),
     source_names=(("thesis", "thesis"), ("kovalenko", "Kovalenko (1975)")),
+    discussed_in=(("mtq-resistance", "ch03-built"), ("mtq-power", "ch03-built"),
+                  ("thesis-mtq-resistance", "ch03-built"), ("thesis-mtq-resistance-excess", "ch03-built"),
+                  ("thesis-mtq-built-", "ch03-built"), ("thesis-mtq-current-", "ch03-built"),
+                  ("thesis-mtq-", "ch03-derivation"), ("kovalenko-", "ch03-kovalenko")),
 )
