@@ -115,16 +115,18 @@ def plot_fig05(data):
         ax.contour(c["x"], c["z"], dev, levels=[data.extra["tolerance"]], colors="C3", linewidths=1.2)
         d = c["separation"]
         ax.plot([-a, a, -a, a], [-d / 2, -d / 2, d / 2, d / 2], "ko", markersize=5)
-        ax.set_title(f"{s.label.replace(' (', chr(10) + '(')}\nH(center) = {h0:.0f} A/m", fontsize=7.5)
+        ax.set_title(f"{s.label.replace(' (', chr(10) + '(')}\n$H_0$ = {h0:.0f} A/m at the centre", fontsize=7.5)
         ax.set_aspect("equal")
-        ax.set_xlabel("x (across the axis) [m]", fontsize=8)
+        ax.set_xlabel("$x$ (across the axis) [m]", fontsize=8)
         ax.tick_params(labelsize=7)
-    axes[0].set_ylabel("z (coil axis) [m]", fontsize=8)
+    axes[0].set_ylabel("axis $z$ [m]", fontsize=8, labelpad=1)
+    # Equal-aspect panels leave constrained layout no room for the left label: keep a margin.
+    fig.get_layout_engine().set(rect=(0.03, 0.0, 0.97, 1.0))
     bar = fig.colorbar(ScalarMappable(norm=norm, cmap="viridis"), ax=axes, shrink=0.8, pad=0.02)
-    bar.set_label("|H| / H(center)", fontsize=8)
+    bar.set_label("$|H|/H_0$", fontsize=8)
     bar.ax.tick_params(labelsize=7)
     fig.suptitle(f"Field lines of the coil pair (thesis Fig. 5); red: |H| within "
-                 f"{100 * data.extra['tolerance']:.3g} % of the center value", fontsize=8.5)
+                 f"{100 * data.extra['tolerance']:.3g} % of the centre value", fontsize=8.5)
     return fig
 
 
