@@ -6,7 +6,7 @@ import numpy as np
 
 from ... import hardware
 from ...constants import MU_0
-from ...io import load_wire_table
+from ...io import load_measurements, load_wire_table
 from . import CHAPTER
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
@@ -168,7 +168,8 @@ def compute_design_space(mtq_moment, mtq_voltage, mtq_side, mtq_max_power, mtq_m
         Series("eq. (21) wire", {"turns": ("1", n), "power": ("W", power), "mass": ("kg", mass)}),
         Series("IEC 60317 wires", wires)],
         extra={"n_lo": float(lo * u), "n_hi": float(hi * u), "d_design": float(hardware.wire_diameter(s_design)),
-               "built_power": float(u**2 / hardware.coil_resistance(240, l, hardware.wire_area(0.2e-3), rho, "square")),
+               # the built coil at this voltage across its measured resistance (thesis §3.3, ≈ 55 Ω)
+               "built_power": float(u**2 / load_measurements("thesis")["mtq-resistance"].value),
                "best": best, "moment": m, "max_power": mtq_max_power, "max_mass": mtq_max_mass})
 
 
@@ -180,23 +181,24 @@ def plot_design_space(data):
     c = {k: v for k, (unit, v) in data.series[0].columns.items()}
     w = {k: v for k, (unit, v) in data.series[1].columns.items()}
     fig, (a1, a3) = plt.subplots(1, 2, figsize=(7.0, 4.3))
-    a1.plot(c["turns"], c["power"], "C3", label="power W (eq. 28)")
+    a1.plot(c["turns"], c["power"], "C3", label="power $P$ (eq. 28)")
     a1.axhline(e["max_power"], color="C3", linestyle=":", linewidth=0.8)
-    a1.axvspan(e["n_lo"], e["n_hi"], color="C2", alpha=0.12, label="feasible: W and M within limits")
+    a1.axvspan(e["n_lo"], e["n_hi"], color="C2", alpha=0.12, label="feasible ($P$, $m_c$ within limits)")
     a1.plot([240], [2.0], "o", color="C3", mfc="none", label="thesis design, N = 240 (2 W)")
-    a1.plot([240], [e["built_power"]], "x", color="k", label=f"built coil, 0.2 mm ({e['built_power']:.2f} W)")
+    a1.plot([240], [e["built_power"]], "x", color="k", label=f"built coil, 0.2 mm wire\n({e['built_power']:.2f} W with its measured $R$)")
     a1.set_xlabel("turns N")
     a1.set_ylabel("Joule power [W]", color="C3")
     a1.set_ylim(0, 5)
     a2 = a1.twinx()
-    a2.plot(c["turns"], c["mass"] * 1e3, "C0", label="mass M (eq. 29)")
+    a2.plot(c["turns"], c["mass"] * 1e3, "C0", label="mass $m_c$ (eq. 29)")
     a2.axhline(e["max_mass"] * 1e3, color="C0", linestyle=":", linewidth=0.8)
     a2.plot([240], [c["mass"][c["turns"] == 240][0] * 1e3], "o", color="C0", mfc="none")
     a2.set_ylabel("conductor mass [g]", color="C0")
     a2.set_ylim(0, 125)
     h1, l1 = a1.get_legend_handles_labels()
     h2, l2 = a2.get_legend_handles_labels()
-    a1.legend(h1 + h2, l1 + l2, fontsize=7, loc="upper right")
+    # On the twin axes, so that no line is drawn over it; above the mass line, right of the power curve.
+    a2.legend(h1 + h2, l1 + l2, fontsize=7, loc="upper left", bbox_to_anchor=(0.1, 1.0), framealpha=0.95)
     a1.set_title(f"wire of eq. (21), d = {e['d_design'] * 1e3:.3f} mm", fontsize=8.5)
     d = w["wire_diameter"]
     ok = w["moment"] >= e["moment"]
@@ -204,8 +206,8 @@ def plot_design_space(data):
     for k in np.flatnonzero(ok):
         if top[k] >= w["n_min_power"][k]:
             a3.plot([d[k], d[k]], [w["n_min_power"][k], top[k]], color="C2", linewidth=6, alpha=0.6)
-    a3.plot(d, w["n_min_power"], "C3v", markersize=4, label="fewest turns for W ≤ limit")
-    a3.plot(d, w["n_max_mass"], "C0^", markersize=4, label="most turns for M ≤ limit")
+    a3.plot(d, w["n_min_power"], "C3v", markersize=4, label="fewest turns for $P$ ≤ limit")
+    a3.plot(d, w["n_max_mass"], "C0^", markersize=4, label="most turns for $m_c$ ≤ limit")
     a3.plot(d, w["n_max_single_layer"], "k_", markersize=8, label="most turns in one layer")
     a3.plot(d[~ok], w["n_min_power"][~ok], "x", color="0.5", label="moment below the requirement")
     if e["best"]:
@@ -253,9 +255,9 @@ def plot_wm_product(data):
     a1.loglog(p["side"], p["aluminium"], "C0", label=r"aluminium (Kovalenko's $\gamma\rho$)")
     a1.axvline(data.extra["side0"], color="0.6", linestyle=":", label="mock-up coil, l = 0.1 m")
     a1.set_xlabel("coil size l [m]")
-    a1.set_ylabel("M·W [kg·W]")
+    a1.set_ylabel("$m_c P$ [kg·W]")
     a1.legend(fontsize=8)
-    a1.set_title("M·W = 16 m² γρ / l², any N, U and shape", fontsize=8.5)
+    a1.set_title(r"$m_c P = 16 m^2 \gamma\rho / l^2$, any $N$, $U$ and shape", fontsize=8.5)
     for shape, style in (("round", "--"), ("square", "-")):
         a2.plot(s["side"], s[f"power_{shape}"], "C3" + style, label=f"power, {shape}")
     a2.set_xlabel("coil size l [m]")
