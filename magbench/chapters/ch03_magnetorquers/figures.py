@@ -256,6 +256,10 @@ def plot_wm_product(data):
     a1.axvline(data.extra["side0"], color="0.6", linestyle=":", label="mock-up coil, l = 0.1 m")
     a1.set_xlabel("coil size l [m]")
     a1.set_ylabel("$m_c P$ [kg·W]")
+    from matplotlib.ticker import FixedLocator, NullFormatter, ScalarFormatter
+    a1.xaxis.set_major_locator(FixedLocator([0.03, 0.05, 0.1, 0.2, 0.3]))
+    a1.xaxis.set_major_formatter(ScalarFormatter())
+    a1.xaxis.set_minor_formatter(NullFormatter())     # the log axis labelled its minor ticks on top of each other
     a1.legend(fontsize=8)
     a1.set_title(r"$m_c P = 16 m^2 \gamma\rho / l^2$, any $N$, $U$ and shape", fontsize=8.5)
     for shape, style in (("round", "--"), ("square", "-")):
