@@ -16,7 +16,7 @@ from .pendulum import (Mockup, amplitude_for_period, body_rates_313, euler_313_m
                        mockup_rhs, natural_frequency, pendulum_energy, pendulum_peak_rate, pendulum_period, pendulum_rhs,
                        small_angle_period, thread_center_of_mass, two_coil_rhs, two_coil_torque)
 from .rigid_body import euler_rates, gravity_gradient_torque, quaternion_rate, rotate_to_body, rotate_to_inertial
-from .swing import oscillation_field_h
+from .swing import oscillation_field_h, oscillation_moment
 from .torques import (axial_magnet_torque, hysteresis_rod_moment, magnetic_torque, magnetic_torque_from_h,
                       perpendicular_moment)
 from .axisymmetric import (body_rate_from_momentum, conical_rotation_angle, conical_rotation_rate, euler_case_angles,
@@ -26,7 +26,7 @@ __all__ = ["momentum_exchange_energy_ratio", "thesis_energy_ratio", "two_coil_to
            "euler_313_matrix", "thread_center_of_mass", "body_rates_313", "pendulum_rhs", "two_coil_rhs", "mockup_rhs",
            "pendulum_energy", "natural_frequency", "small_angle_period", "pendulum_period",
            "pendulum_peak_rate", "field_for_period", "amplitude_for_period", "magnetic_torque",
-           "magnetic_torque_from_h", "perpendicular_moment", "oscillation_field_h",
+           "magnetic_torque_from_h", "perpendicular_moment", "oscillation_field_h", "oscillation_moment",
            "rotate_to_body", "rotate_to_inertial", "quaternion_rate", "euler_rates", "gravity_gradient_torque",
            "aerodynamic_attitude_matrix", "aerodynamic_angles", "aerodynamic_body_rates", "hysteresis_rod_moment",
            "axial_magnet_torque", "euler_case_rates", "euler_case_angles", "euler_case_matrix",

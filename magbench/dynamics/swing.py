@@ -8,7 +8,7 @@ import numpy as np
 from .._validate import as_positive
 from ..constants import MU_0
 
-__all__ = ["oscillation_field_h"]
+__all__ = ["oscillation_field_h", "oscillation_moment"]
 
 
 def oscillation_field_h(inertia, moment, period, amplitude=1.0):
@@ -56,3 +56,50 @@ def oscillation_field_h(inertia, moment, period, amplitude=1.0):
     t = as_positive("period", period, unit="s")
     amp = as_positive("amplitude", amplitude, unit="rad")
     return 4.0 * np.pi**2 * j * amp / (MU_0 * m * t**2)
+
+
+def oscillation_moment(inertia, field_h, period, amplitude=1.0):
+    r"""Dipole moment that makes a mock-up swing with a given period in a given field.
+
+    Parameters
+    ----------
+    inertia : array_like
+        Moment of inertia of the mock-up about its suspension axis J [kg m²], > 0.
+    field_h : array_like
+        Field strength H [A/m], > 0.
+    period : array_like
+        Small-oscillation period T [s], > 0.
+    amplitude : array_like, optional
+        The factor A [rad] that the thesis defines as the oscillation amplitude, > 0.
+        1 gives the small-oscillation moment of eq. (14).
+
+    Returns
+    -------
+    ndarray
+        m [A m²].
+
+    Notes
+    -----
+    Thesis §3.2, an unnumbered formula at the start of the section: eq. (15) solved for the
+    moment, printed with the factor A,
+
+    .. math:: m = \frac{4\pi^2 J A}{\mu_0 H T^2}.
+
+    Deviation from source: with the thesis's own inputs (J = 0.005 kg m², A = π,
+    H = 250 A/m) this gives 0.548 A m² at T = 60 s, not the printed "≈ 0.4", and
+    0.0219 A m² at T = 5 min (printed "≈ 0.02"). As for :func:`oscillation_field_h`, a
+    small-oscillation period does not depend on the amplitude; A = 1 is the physical
+    value.
+
+    Examples
+    --------
+    >>> round(float(oscillation_moment(0.005, 250.0, 60.0, amplitude=np.pi)), 3)
+    0.548
+    >>> round(float(oscillation_moment(0.005, 250.0, 300.0, amplitude=np.pi)), 4)
+    0.0219
+    """
+    j = as_positive("inertia", inertia, unit="kg m^2")
+    h = as_positive("field_h", field_h, unit="A/m")
+    t = as_positive("period", period, unit="s")
+    amp = as_positive("amplitude", amplitude, unit="rad")
+    return 4.0 * np.pi**2 * j * amp / (MU_0 * h * t**2)

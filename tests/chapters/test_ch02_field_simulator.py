@@ -53,6 +53,30 @@ def test_oscillation_field_bad_input(kw):
         dynamics.oscillation_field_h(**args)
 
 
+def test_oscillation_moment_gives_the_period_of_eq14():
+    j, h, t = 0.005, 250.0, 60.0
+    m = dynamics.oscillation_moment(j, h, t)
+    # Eq. (14) with B = μ0 H must give back T; a handful of roundings.
+    assert_allclose(2 * np.pi / np.sqrt(m * MU_0 * h / j), t, rtol=1e-14)
+
+
+def test_oscillation_moment_thesis_numbers():
+    # Thesis §3.2 (seed line 398) written out by hand: 4π²·0.005·π/(4π·1e-7·250·T²).
+    by_hand = [4 * np.pi**2 * 0.005 * np.pi / (4e-7 * np.pi * 250.0 * t**2) for t in (60.0, 300.0)]
+    assert_allclose(dynamics.oscillation_moment(0.005, 250.0, np.array([60.0, 300.0]), np.pi), by_hand,
+                    rtol=1e-9)      # MU_0 is CODATA's, not 4π·1e-7: they differ by 5.5e-10
+    # The printed "≈ 0.02" at 5 min rounds 0.0219; "≈ 0.4" at 60 s does not round 0.548.
+    assert_allclose(by_hand[0], 0.548, atol=5e-4)      # to the digits quoted
+    assert_allclose(by_hand[1], 0.0219, atol=5e-5)
+
+
+@pytest.mark.parametrize("kw", [{"field_h": 0.0}, {"period": -60.0}, {"amplitude": np.nan}])
+def test_oscillation_moment_bad_input(kw):
+    args = {"inertia": 0.005, "field_h": 250.0, "period": 60.0, **kw}
+    with pytest.raises(ValueError, match=next(iter(kw))):
+        dynamics.oscillation_moment(**args)
+
+
 # ----------------------------------------------------------------- inverse problems
 
 
@@ -368,6 +392,7 @@ EXPECTED_ERRATA = {
     "thesis-sim-coil-voltage": "RI = 31.48 V for N = 110, printed 32 (NI = 258)",
     "thesis-sim-center-deviation": "262 vs the as-built 357.7 A/m is −27 %, printed 4.8 %",
     "kovalenko-four-coil-sphere": "1.46 % in the sphere of radius 2r/3, printed 0.5 %",
+    "thesis-mtq-moment-60s": "§3.2's m = 4π²JA/(μ0HT²) gives 0.548 A·m² at T = 60 s, printed ≈ 0.4",
 }
 
 

@@ -332,3 +332,15 @@ def test_printed_value(printed_check):
 
 def test_errata_match_expectation():
     assert {e.id for e in errata(CHAPTER_KEY)} == set(EXPECTED_ERRATA)
+
+
+def test_rows_are_the_measurement_and_the_design_limit():
+    """The built coil's printed numbers are source checks, not rows: the ledger keeps the
+    measured resistance and the design's 2 W limit only."""
+    from magbench.chapters import ch03_magnetorquers
+
+    rows = {r.id: r for r in ch03_magnetorquers.magnetorquer_rows()}
+    assert set(rows) == {"mtq-resistance", "mtq-power"}
+    # P = U²/R with the measured ≈ 55 Ω (seed line 441) and 12 V; a few roundings.
+    assert_allclose(rows["mtq-power"].model, 12.0**2 / 55.0, rtol=1e-12)
+    assert_allclose(rows["mtq-power"].measured, 2.0, rtol=0)      # the design's limit, seed line 435

@@ -67,33 +67,47 @@ def compute_fig01(earth_dipole_moment, geomagnetic_pole_latitude, geomagnetic_po
 
 
 def plot_fig01(data):
-    """Draw the field vector and its elements in the local north-east-down frame."""
+    """Draw the field vector and its elements in the local north-east-down frame.
+
+    The vertical axis points down, as the frame's z does, and the axes keep the true
+    proportions of the vector, so the inclination is seen as it is.
+    """
     import matplotlib.pyplot as plt
 
-    fig = plt.figure(figsize=(7.0, 4.0), layout="constrained")
+    def signed(value, fmt):
+        return format(value, fmt).replace("-", "−")
+
+    fig = plt.figure(figsize=(7.0, 4.4), layout="constrained")
     for k, s in enumerate(data.series):
         ax = fig.add_subplot(1, 2, k + 1, projection="3d")
         c = {name: vals[0] for name, (unit, vals) in s.columns.items()}
-        # Draw with z up (−down) so the picture reads like the thesis's sketch.
-        x, y, z = c["X_north"], c["Y_east"], -c["Z_down"]
-        lim = c["T"] * 1.05
-        ax.quiver(0, 0, 0, x, y, z, color="C3", linewidth=2, arrow_length_ratio=0.08)
-        ax.quiver(0, 0, 0, x, y, 0, color="C0", arrow_length_ratio=0.1)
+        x, y, z = c["X_north"], c["Y_east"], c["Z_down"]
+        m = 1.35 * max(abs(x), abs(y), c["H"])
+        bottom = 1.1 * max(z, 0.0) + 1e-9
+        ax.quiver(0, 0, 0, x, y, z, color="C3", linewidth=2.5, arrow_length_ratio=0.08)
+        ax.quiver(0, 0, 0, x, y, 0, color="C0", linewidth=2, arrow_length_ratio=0.15)
         for vec in ((x, 0, 0), (0, y, 0), (0, 0, z)):
-            ax.quiver(0, 0, 0, *vec, color="0.3", linewidth=1, arrow_length_ratio=0.1)
+            ax.quiver(0, 0, 0, *vec, color="0.35", linewidth=1.2, arrow_length_ratio=0.12)
         ax.plot([x, x], [y, y], [0, z], "k:", linewidth=0.8)
-        ax.set_xlim(-lim, lim)
-        ax.set_ylim(-lim, lim)
-        ax.set_zlim(-lim, lim)
-        ax.set_xlabel("X north [µT]", fontsize=7.5, labelpad=-2)
-        ax.set_ylabel("Y east [µT]", fontsize=7.5, labelpad=-2)
-        ax.set_zlabel("−Z up [µT]", fontsize=7.5, labelpad=-2)
+        labels = ((x, y, z, r"$T$", "C3"), (x, y, 0, r"$H$", "C0"), (x, 0, 0, r"$X$", "0.35"),
+                  (0, y, 0, r"$Y$", "0.35"), (0, 0, z, r"$Z$", "0.35"))
+        for px, py, pz, text, color in labels:
+            ax.text(px, py, pz, " " + text, color=color, fontsize=10)
+        ax.set_xlim(-m, m)
+        ax.set_ylim(-m, m)
+        ax.set_zlim(bottom, 0.0)                 # z down: larger Z lower on the page
+        ax.set_box_aspect((2 * m, 2 * m, bottom), zoom=0.9)
+        ax.view_init(elev=20, azim=-55)
+        ax.set_xlabel(r"$X$ north [µT]", fontsize=7.5, labelpad=-2)
+        ax.set_ylabel(r"$Y$ east [µT]", fontsize=7.5, labelpad=-2)
+        ax.set_zlabel(r"$Z$ down [µT]", fontsize=7.5, labelpad=-2)
         ax.tick_params(labelsize=7, pad=0)
-        ax.set_title(f"{s.label}: T = {c['T']:.1f} µT, H = {c['H']:.1f} µT\n"
-                     f"D = {c['D']:.1f}°, I = {c['J']:.1f}°", fontsize=8)
-        ax.set_box_aspect(None, zoom=0.85)
-    fig.suptitle("Elements of the Earth's field at the laboratory (thesis Fig. 1);\n"
-                 "red: total field T, blue: horizontal component H, grey: X, Y, Z", fontsize=8.5)
+        for axis in (ax.xaxis, ax.yaxis):
+            axis.set_major_locator(plt.MaxNLocator(3))
+        ax.set_title(f"{s.label}: $T$ = {c['T']:.1f} µT, $H$ = {c['H']:.1f} µT\n"
+                     f"$D$ = {signed(c['D'], '.1f')}°, $I$ = {signed(c['J'], '.1f')}°", fontsize=8)
+    fig.suptitle("Elements of the Earth's field at the laboratory (thesis Fig. 1), true to scale;\n"
+                 "red: total field $T$, blue: horizontal component $H$, grey: $X$, $Y$, $Z$", fontsize=8.5)
     return fig
 
 
@@ -198,8 +212,8 @@ def plot_elements(data):
 
     c = {k: v for k, (u, v) in data.series[0].columns.items()}
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.0, 4.2))
-    for key, style in (("T", "-"), ("Z", "--"), ("H", ":")):
-        a1.plot(c["geomagnetic_latitude"], c[key], style, label=key)
+    for key, style, label in (("T", "-", "total $T$"), ("Z", "--", "vertical $Z$"), ("H", ":", "horizontal $H$")):
+        a1.plot(c["geomagnetic_latitude"], c[key], style, label=label)
     a1.set_xlabel("geomagnetic latitude Φ [deg]")
     a1.set_ylabel("field [µT]")
     a1.axhline(0, color="0.7", linewidth=0.6)
@@ -252,12 +266,13 @@ def plot_orbit_field(data):
     fig, axes = plt.subplots(1, len(data.series), figsize=(7.0, 3.6), sharey=True, layout="constrained")
     for ax, s in zip(np.atleast_1d(axes), data.series):
         c = {k: v for k, (u, v) in s.columns.items()}
-        for key, style in (("B_x", "-"), ("B_y", "--"), ("B_z", "-."), ("|B|", "k-")):
-            ax.plot(c["time"], c[key], style, label=key, linewidth=1.0)
+        for key, style, label in (("B_x", "-", "$B_x$"), ("B_y", "--", "$B_y$"), ("B_z", "-.", "$B_z$"),
+                                  ("|B|", "k-", r"$|\mathbf{B}|$")):
+            ax.plot(c["time"], c[key], style, label=label, linewidth=1.0)
         ax.set_title(s.label)
         ax.set_xlabel("time [min]")
         ax.axhline(0, color="0.8", linewidth=0.6)
-    np.atleast_1d(axes)[0].set_ylabel("B in orbital axes [µT]")
+    np.atleast_1d(axes)[0].set_ylabel(r"$\mathbf{B}$ in orbital axes [µT]")
     # Below the panels: inside, the legend covered the curves.
     fig.legend(*np.atleast_1d(axes)[0].get_legend_handles_labels(), loc="outside lower center", ncol=4,
                fontsize=7.5, frameon=False)
@@ -279,7 +294,12 @@ def _orbit_parameters():
 # --- chapter 1: reachable torques lie in the plane normal to B ----------------------------
 
 def compute_torque_plane(field_elevation, samples):
-    """Torques L × B of many random unit moments L, for a field of 1 T (eqs. 4, 8)."""
+    """Torques L = m × B of many random unit moments m, for a field of 1 T (eqs. 4, 8).
+
+    Columns in the book's symbols (the thesis writes M = L × B): ``L_x``, ``L_y``,
+    ``L_z`` and ``L_norm`` [N m], ``L_dot_b`` [N m] (the torque along B), ``m_perp``
+    [A m²] (the moment's part normal to B).
+    """
     count = int(samples)
     if not 10 <= count <= 100_000:
         raise ValueError(f"samples must lie in [10, 100000], got {shown(samples)}")
@@ -292,34 +312,40 @@ def compute_torque_plane(field_elevation, samples):
     perp = np.linalg.norm(dynamics.perpendicular_moment(moments, b), axis=1)
     return FigureData("ch01-torque-plane", "Magnetic torques are confined to the plane normal to B",
                       "Bui (2016) eqs. (4)–(8)", {}, [Series("random unit moments", {
-                          "M_x": ("N m", torques[:, 0]), "M_y": ("N m", torques[:, 1]),
-                          "M_z": ("N m", torques[:, 2]), "M_dot_b": ("N m", along),
-                          "L_perp": ("A m^2", perp), "M_norm": ("N m", np.linalg.norm(torques, axis=1))})],
+                          "L_x": ("N m", torques[:, 0]), "L_y": ("N m", torques[:, 1]),
+                          "L_z": ("N m", torques[:, 2]), "L_dot_b": ("N m", along),
+                          "m_perp": ("A m^2", perp), "L_norm": ("N m", np.linalg.norm(torques, axis=1))})],
                       extra={"b": b})
 
 
 def plot_torque_plane(data):
-    """3-D scatter of the torques, with B and the plane normal to it."""
+    """3-D scatter of the torques with B, and |L| against |m_perp|, in the book's symbols."""
     import matplotlib.pyplot as plt
 
     c = {k: v for k, (u, v) in data.series[0].columns.items()}
     b = data.extra["b"]
-    fig = plt.figure(figsize=(7.0, 3.6))
+    fig = plt.figure(figsize=(7.0, 3.6), layout="constrained")
     ax = fig.add_subplot(1, 2, 1, projection="3d")
-    ax.scatter(c["M_x"], c["M_y"], c["M_z"], s=2, alpha=0.4)
-    ax.quiver(0, 0, 0, *b, color="C3", linewidth=2)
-    ax.text(*b, " B", color="C3")
-    ax.set_xlabel("M_x [N m]")
-    ax.set_ylabel("M_y [N m]")
-    ax.set_zlabel("M_z [N m]")
-    ax.set_title("M = L × B for |L| = 1 A·m², |B| = 1 T", fontsize=8.5)
+    ax.scatter(c["L_x"], c["L_y"], c["L_z"], s=2, alpha=0.35, color="C0", label=r"torques $\mathbf{L}$")
+    ax.quiver(0, 0, 0, *(1.2 * b), color="C3", linewidth=2.5, arrow_length_ratio=0.15)
+    ax.text(*(1.2 * b + [0.0, 0.0, 0.2]), r"$\mathbf{B}$", color="C3", fontsize=11)
+    ax.set_box_aspect((1, 1, 1))
+    ax.view_init(elev=12, azim=-60)
+    for lim, ticks in ((ax.set_xlim, ax.set_xticks), (ax.set_ylim, ax.set_yticks), (ax.set_zlim, ax.set_zticks)):
+        lim(-1.4, 1.4)
+        ticks([-1, 0, 1])
+    for setter, name in ((ax.set_xlabel, "x"), (ax.set_ylabel, "y"), (ax.set_zlabel, "z")):
+        setter(f"$L_{name}$ [N·m]", fontsize=8, labelpad=0)
+    ax.tick_params(labelsize=7, pad=0)
+    ax.set_title(r"$\mathbf{L} = \mathbf{m}\times\mathbf{B}$ for $|\mathbf{m}|$ = 1 A·m², $|\mathbf{B}|$ = 1 T:"
+                 "\nevery torque lies in the plane normal to $\\mathbf{B}$", fontsize=8.5)
     a2 = fig.add_subplot(1, 2, 2)
-    a2.plot(c["L_perp"], c["M_norm"], ".", markersize=2)
-    a2.set_xlabel("|L⊥| [A·m²]")
-    a2.set_ylabel("|M| [N·m]")
-    a2.yaxis.set_label_position("right")     # clear of the 3-D panel's axis labels
-    a2.yaxis.tick_right()
-    a2.set_title(f"largest |M·b| = {format_number(np.max(np.abs(c['M_dot_b'])), 2)} N·m", fontsize=8.5)
+    a2.plot(c["m_perp"], c["L_norm"], ".", markersize=2)
+    a2.set_xlabel(r"$|\mathbf{m}_\perp|$, part of the moment normal to $\mathbf{B}$ [A·m²]", fontsize=8)
+    a2.set_ylabel(r"$|\mathbf{L}|$ [N·m]", fontsize=8)
+    a2.tick_params(labelsize=7.5)
+    a2.set_aspect("equal")
+    a2.set_title(r"$|\mathbf{L}| = |\mathbf{m}_\perp|\,|\mathbf{B}|$: only $\mathbf{m}_\perp$ acts", fontsize=8.5)
     return fig
 
 

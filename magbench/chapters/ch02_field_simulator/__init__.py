@@ -160,7 +160,7 @@ def simulator_checks():
             location="§2.2, eq. (16)", quantity=f"Ampere-turns per coil for {h:g} A/m (a = {a:g} m, d/a = {ratio:g})",
             computed=ni, unit="A",
             explanation=(f"Eq. (16) gives {ni:.1f} A·turns; the printed {ni_slip:.0f} is reproduced exactly by "
-                         "evaluating (d/2a)² as (d/a)²/2 (magbench.chapters.ch02_field_simulator.thesis_printed_ampere_turns)."),
+                         "evaluating (d/2a)² as (d/a)²/2, i.e. without squaring the 2."),
             computation="magbench.fields.helmholtz_ampere_turns"),
         printed_check(
             printed["thesis-sim-coil-resistance"], id="thesis-sim-coil-resistance", chapter="ch02",
@@ -211,21 +211,48 @@ def simulator_field_checks():
     rubens_dev = 100 * fields.coaxial_system_cylinder_nonuniformity(*rubens, 0.25, 0.5)
     design_h = v["sim_design_h"]
     deviation_printed = printed["sim-center-h-deviation"]
-    return [
+    # Thesis §3.2 solves eq. (15) for the moment, with A, at the chosen field: one line, two periods.
+    j, amp, t = v["mockup_inertia"], v["oscillation_amplitude"], v["oscillation_period"]
+    m60 = float(dynamics.oscillation_moment(j, design_h, t, amp))
+    m60_no_a = float(dynamics.oscillation_moment(j, design_h, t))
+    t_for_printed = t * np.sqrt(m60 / printed["thesis-mtq-moment-60s"].value)
+    t5 = 5 * 60.0
+    m5 = float(dynamics.oscillation_moment(j, design_h, t5, amp))
+    m5_no_a = float(dynamics.oscillation_moment(j, design_h, t5))
+    moment_checks = [
+        printed_check(
+            printed["thesis-mtq-moment-60s"], id="thesis-mtq-moment-60s", chapter="ch02",
+            location="§3.2", quantity=f"Coil moment for a {t:g} s swing at {design_h:g} A/m",
+            computed=m60, unit="A m^2",
+            explanation=(f"The printed formula m = 4π²Jψ0/(μ0HT²) (the thesis writes A for the amplitude ψ0) with "
+                         f"ψ0 = π, J = {j:g} kg·m², T = {t:g} s, H = {design_h:g} A/m gives {m60:.3f} A·m² "
+                         f"({m60_no_a:.3f} A·m² without ψ0); "
+                         f"the printed ≈ 0.4 would need T = {t_for_printed:.0f} s. The coils are sized for 0.4."),
+            computation="magbench.dynamics.oscillation_moment"),
+        printed_check(
+            printed["thesis-mtq-moment-5min"], id="thesis-mtq-moment-5min", chapter="ch02",
+            location="§3.2", quantity=f"Coil moment for a 5 min swing at {design_h:g} A/m",
+            computed=m5, unit="A m^2",
+            explanation=(f"The same formula with T = 5 min gives {m5:.4f} A·m², which '≈ 0.02' rounds "
+                         f"({m5_no_a:.4f} A·m² without ψ0)."),
+            computation="magbench.dynamics.oscillation_moment"),
+    ]
+    return moment_checks + [
         printed_check(
             printed["thesis-eq15-field"], id="thesis-eq15-required-field", chapter="ch02",
             location="§2.1, eq. (15)", quantity="Field for a 60 s swing, eq. (15) as printed",
             computed=h_printed_eq, unit="A/m",
             explanation=(f"4π²J/(μ0 m T²) with J = {v['mockup_inertia']:g} kg·m², m = {v['mockup_magnet_moment']:g} "
                          f"A·m², T = {v['oscillation_period']:g} s is {h_printed_eq:.1f} A/m. The printed ≈ 200 A/m "
-                         f"needs the amplitude factor A = π that the thesis defines beside eq. (15) and eq. (15) drops "
+                         f"needs the amplitude factor ψ0 = π (the thesis's A) that the thesis defines beside eq. (15) "
+                         f"and eq. (15) drops "
                          f"({h_with_a:.1f} A/m), a factor with no place in a small-oscillation period."),
             computation="magbench.dynamics.oscillation_field_h"),
         printed_check(
             printed["thesis-eq15-field"], id="thesis-eq15-with-amplitude", chapter="ch02",
-            location="§2.1, eq. (15) with A = π", quantity="Field for a 60 s swing, with the factor A = π",
+            location="§2.1, eq. (15) with ψ0 = π", quantity="Field for a 60 s swing, with the factor ψ0 = π",
             computed=h_with_a, unit="A/m",
-            explanation=f"4π²JA/(μ0 m T²) = {h_with_a:.1f} A/m, which '≈ 200' rounds down (one printed digit).",
+            explanation=f"4π²Jψ0/(μ0 m T²) = {h_with_a:.1f} A/m, which '≈ 200' rounds down (one printed digit).",
             computation="magbench.dynamics.oscillation_field_h"),
         printed_check(
             printed["thesis-sim-coil-voltage"], id="thesis-sim-coil-voltage", chapter="ch02",
@@ -328,4 +355,10 @@ CHAPTER = Chapter(
     cites="thesis §2, eqs. (13)–(16), Figs. 3, 5–8; Kovalenko §3.4",
     finds=("what the coil pair should make, what was built and measured, and which explanations of the gap the data can exclude"),
     source_names=(("thesis", "thesis"), ("kovalenko", "Kovalenko (1975)")),
+    discussed_in=(("sim-center-h", "ch02-measurement"), ("comsol-max-h", "ch02-pair-field"),
+                  ("comsol-uniform-", "ch02-pair-field"), ("sim-coil-resistance", "ch02-electrics"),
+                  ("thesis-eq15-", "ch02-field-needed"), ("thesis-mtq-moment-", "ch02-two-moments"),
+                  ("thesis-sim-ampere-turns", "ch02-eq16"), ("thesis-sim-coil-", "ch02-electrics"),
+                  ("thesis-sim-power-at-limit", "ch02-electrics"), ("thesis-sim-center-deviation", "ch02-measurement"),
+                  ("kovalenko-", "ch02-systems")),
 )

@@ -115,16 +115,18 @@ def plot_fig05(data):
         ax.contour(c["x"], c["z"], dev, levels=[data.extra["tolerance"]], colors="C3", linewidths=1.2)
         d = c["separation"]
         ax.plot([-a, a, -a, a], [-d / 2, -d / 2, d / 2, d / 2], "ko", markersize=5)
-        ax.set_title(f"{s.label.replace(' (', chr(10) + '(')}\nH(center) = {h0:.0f} A/m", fontsize=7.5)
+        ax.set_title(f"{s.label.replace(' (', chr(10) + '(')}\n$H_0$ = {h0:.0f} A/m at the centre", fontsize=7.5)
         ax.set_aspect("equal")
-        ax.set_xlabel("x (across the axis) [m]", fontsize=8)
+        ax.set_xlabel("$x$ (across the axis) [m]", fontsize=8)
         ax.tick_params(labelsize=7)
-    axes[0].set_ylabel("z (coil axis) [m]", fontsize=8)
+    axes[0].set_ylabel("axis $z$ [m]", fontsize=8, labelpad=1)
+    # Equal-aspect panels leave constrained layout no room for the left label: keep a margin.
+    fig.get_layout_engine().set(rect=(0.03, 0.0, 0.97, 1.0))
     bar = fig.colorbar(ScalarMappable(norm=norm, cmap="viridis"), ax=axes, shrink=0.8, pad=0.02)
-    bar.set_label("|H| / H(center)", fontsize=8)
+    bar.set_label("$|H|/H_0$", fontsize=8)
     bar.ax.tick_params(labelsize=7)
     fig.suptitle(f"Field lines of the coil pair (thesis Fig. 5); red: |H| within "
-                 f"{100 * data.extra['tolerance']:.3g} % of the center value", fontsize=8.5)
+                 f"{100 * data.extra['tolerance']:.3g} % of the centre value", fontsize=8.5)
     return fig
 
 
@@ -453,9 +455,10 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
     Returns a list of dicts with keys ``id``, ``hypothesis``; ``predicted_h`` [A/m], the
     centre field the hypothesis predicts (NaN when its free parameter is solved for);
     ``needed`` and ``needed_unit``, the value of that free parameter that reproduces
-    the measurement (NaN when there is none); ``constraint``, ``constraint_unit`` and
-    ``allowed`` (low, high), a second observable the hypothesis predicts and the range
-    the thesis's measurements allow for it (NaN/None when there is none); and
+    the measurement (NaN when there is none); ``constraint``, ``constraint_unit``,
+    ``constraint_what`` (what the second number is, in words) and ``allowed`` (low, high),
+    a second observable the hypothesis predicts and the range the thesis's measurements
+    allow for it (NaN/None when there is none); and
     ``excluded``: True when the prediction misses the measurement by more than
     ``tolerance_h``, the constraint falls outside its allowed range, or no value of the
     free parameter reproduces the measurement (``needed`` NaN: a field above the largest
@@ -469,7 +472,7 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
     def resistance(radius, n_turns):
         return float(hardware.winding_resistance(radius, n_turns, wire_diameter, copper_resistivity))
 
-    def row(id_, text, predicted=np.nan, needed=np.nan, unit="", constraint=np.nan, c_unit="",
+    def row(id_, text, predicted=np.nan, needed=np.nan, unit="", constraint=np.nan, c_unit="", c_what="",
             allowed=None):
         excluded = bool(np.isfinite(predicted) and abs(predicted - measured_center_h) > tolerance_h)
         excluded |= bool(unit) and not np.isfinite(needed)     # solved for, and no value fits
@@ -477,7 +480,7 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
             excluded |= not allowed[0] <= constraint <= allowed[1]
         return {"id": id_, "hypothesis": text, "predicted_h": float(predicted), "needed": float(needed),
                 "needed_unit": unit, "constraint": float(constraint), "constraint_unit": c_unit,
-                "allowed": allowed, "excluded": excluded}
+                "constraint_what": c_what, "allowed": allowed, "excluded": excluded}
 
     r_turn = resistance(a, 1.0)
     n_eff = n * frac
@@ -492,22 +495,23 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
     return [
         row("exact", "exact field of the pair as built", predicted=h_model),
         row("fewer-turns", "fewer effective turns per coil", needed=n_eff, unit="turns",
-            constraint=resistance(a, n_eff), c_unit="ohm", allowed=(r_lo, r_hi)),
+            constraint=resistance(a, n_eff), c_unit="ohm", c_what="resistance", allowed=(r_lo, r_hi)),
         row("resistance-turns", "the fewest turns the measured resistance allows",
             predicted=float(fields.helmholtz_center_h(i, r_lo / r_turn, a, d)), needed=r_lo / r_turn,
             unit="turns"),
         row("lower-current", "a lower current than the stated one", needed=i * frac, unit="A"),
         row("larger-radius", "larger coils", needed=a_eff, unit="m",
-            constraint=resistance(a_eff, n) if np.isfinite(a_eff) else np.nan, c_unit="ohm", allowed=(r_lo, r_hi)),
+            constraint=resistance(a_eff, n) if np.isfinite(a_eff) else np.nan, c_unit="ohm", c_what="resistance",
+            allowed=(r_lo, r_hi)),
         row("one-coil-off", "one coil unpowered", predicted=h_model / 2),
         row("one-coil-reversed", "one coil reversed", predicted=reversed_h),
         row("earth-field", "the Earth's field against the coils' (at most)", predicted=h_model - earth_h),
         row("probe-axial", "probe displaced along the axis",
             needed=fields.pair_distance_to_h(frac, a, d, "axial") if reading_lower else np.nan,
-            unit="m", constraint=d / 2, c_unit="m (coil plane)"),
+            unit="m", constraint=d / 2, c_unit="m", c_what="coil plane at"),
         row("probe-transverse", "probe displaced across the axis",
             needed=fields.pair_distance_to_h(frac, a, d, "transverse") if reading_lower else np.nan, unit="m",
-            constraint=a, c_unit="m (coil radius)"),
+            constraint=a, c_unit="m", c_what="coil radius"),
         row("probe-tilt", "single-axis probe tilted from the coil axis",
             needed=float(np.degrees(np.arccos(frac))) if reading_lower else np.nan, unit="deg"),
     ]
@@ -526,8 +530,9 @@ def compute_hypotheses(turns, current, coil_radius, built_spacing, wire_diameter
     r_lo, r_hi = resistance_range(m["sim-coil-resistance"])
     f = igrf.igrf_field(p["laboratory_latitude"], p["laboratory_longitude"], p["thesis_epoch"])
     earth_h = f.total / MU_0
+    tolerance = ch02_field_simulator.simulator_center_h_tolerance(current, turns, coil_radius)
     rows = hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper_resistivity,
-                      measured, (r_lo, r_hi), earth_h, ch02_field_simulator.simulator_center_h_tolerance(current, turns, coil_radius))
+                      measured, (r_lo, r_hi), earth_h, tolerance)
     a, d = coil_radius, built_spacing
     n_axis = np.linspace(40, 150, 111)
     s = np.linspace(0.0, 0.6, 241)
@@ -546,7 +551,7 @@ def compute_hypotheses(turns, current, coil_radius, built_spacing, wire_diameter
             "predicted_h": ("A/m", [np.nan_to_num(r["predicted_h"], nan=-1.0) for r in rows])}),
     ]
     return FigureData("ch02-hypotheses", "", "", {}, series, extra={
-        "rows": rows, "measured": measured, "turns_band": (r_lo / r_turn, r_hi / r_turn),
+        "rows": rows, "measured": measured, "tolerance": tolerance, "turns_band": (r_lo / r_turn, r_hi / r_turn),
         "separation": d, "radius": a, "turns": turns})
 
 
@@ -564,42 +569,61 @@ def resistance_range(row):
 
 def plot_hypotheses(data):
     """Three panels: turns (with the resistance band), probe offset, and the predictions."""
+    import textwrap
+
     import matplotlib.pyplot as plt
 
     e = data.extra
-    meas = e["measured"]
-    fig = plt.figure(figsize=(7.0, 6.4), layout="constrained")
-    grid = fig.add_gridspec(2, 2, height_ratios=[1.0, 0.9])
+    meas, tol = e["measured"], e["tolerance"]
+    fig = plt.figure(figsize=(7.0, 7.0), layout="constrained")
+    grid = fig.add_gridspec(2, 2, height_ratios=[1.0, 1.0])
     a1, a2, a3 = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1]), fig.add_subplot(grid[1, :])
     c = {k: np.asarray(v) for k, (u, v) in data.series[0].columns.items()}
-    a1.plot(c["turns"], c["H_centre"], "C0")
+    a1.plot(c["turns"], c["H_centre"], "C0", label="centre field")
     lo, hi = e["turns_band"]
-    a1.axvspan(lo, hi, color="C2", alpha=0.2, label="turns allowed by R = 11–14 Ω")
+    a1.axvspan(lo, hi, color="C2", alpha=0.2, label="turns the measured\nresistance allows")
     a1.axvline(e["turns"], color="0.4", linestyle=":", label=f"{e['turns']:.0f} turns (stated)")
     a1.axhline(meas, color="k", linestyle="--", label=f"measured {meas:.0f} A/m")
-    a1.set_xlabel("effective turns per coil", fontsize=8)
-    a1.set_ylabel("H at the center [A/m]", fontsize=8)
-    a1.legend(fontsize=7, loc="upper left")
+    a1.set_xlabel("effective turns per coil", fontsize=9)
+    a1.set_ylabel("$H$ at the centre [A/m]", fontsize=9)
+    a1.legend(fontsize=7.5, loc="upper left", framealpha=0.9)
+    a1.set_ylim(top=1.35 * float(np.max(c["H_centre"])))
     c = {k: np.asarray(v) for k, (u, v) in data.series[1].columns.items()}
     a2.plot(c["offset"] * 100, c["axial"], label="along the axis")
     a2.plot(c["offset"] * 100, c["transverse"], label="across the axis")
     a2.axhline(meas, color="k", linestyle="--")
     a2.axvline(e["separation"] / 2 * 100, color="C0", linestyle=":", label="coil plane")
     a2.axvline(e["radius"] * 100, color="C1", linestyle=":", label="coil radius")
-    a2.set_xlabel("probe offset from the center [cm]", fontsize=8)
-    a2.set_ylabel("|H| [A/m]", fontsize=8)
-    a2.legend(fontsize=7, loc="lower left")
+    a2.set_xlabel("probe offset from the centre [cm]", fontsize=9)
+    a2.set_ylabel("$|H|$ [A/m]", fontsize=9)
+    a2.legend(fontsize=7.5, loc="lower left", framealpha=0.9)
     rows = [r for r in e["rows"] if np.isfinite(r["predicted_h"])]
-    a3.barh(range(len(rows)), [r["predicted_h"] for r in rows], color="C0")
-    a3.set_yticks(range(len(rows)))
-    a3.set_yticklabels([r["hypothesis"] for r in rows], fontsize=7)
-    a3.invert_yaxis()
+    values = [r["predicted_h"] for r in rows]
+    colours = ["0.55" if r["id"] == "exact" else "C0" for r in rows]
+    names = ["none: the exact field of the pair as built" if r["id"] == "exact" else r["hypothesis"]
+             for r in rows]
+    y = np.arange(len(rows))
+    a3.barh(y, values, color=colours, height=0.6)
+    a3.axvspan(meas - tol, meas + tol, color="k", alpha=0.12, lw=0)
     a3.axvline(meas, color="k", linestyle="--")
-    a3.set_xlabel("predicted H at the center [A/m]; dashed: measured", fontsize=8)
+    top = 1.2 * max(max(values), meas)
+    for yi, v, r in zip(y, values, rows):
+        # A bar end marker, so that a zero-length bar stays visible.
+        a3.plot([v], [yi], "D" if v < 0.01 * top else "|", color="k", markersize=7 if v < 0.01 * top else 14,
+                clip_on=False, zorder=3)
+        note = " (the coils cancel at the centre)" if r["id"] == "one-coil-reversed" else ""
+        a3.text(v + 0.015 * top, yi, f" {v:.0f} A/m{note}", va="center", fontsize=8.5)
+    a3.set_xlim(0, top)
+    a3.set_yticks(y)
+    a3.set_yticklabels([textwrap.fill(n, 26) for n in names], fontsize=8.5)
+    a3.invert_yaxis()
+    a3.set_xlabel(f"predicted centre field [A/m]; dashed, grey band: measured {meas:.0f} ± {tol:.0f} A/m",
+                  fontsize=9)
     for ax in (a1, a2, a3):
-        ax.tick_params(labelsize=7)
-    fig.suptitle(f"What could make the center field read {meas:.0f} A/m instead of the model's?",
-                 fontsize=8.5)
+        ax.tick_params(labelsize=8)
+    fig.suptitle(f"No fixed hypothesis (bottom) reaches the measured {meas:.0f} A/m;\n"
+                 "fewer turns would, but their resistance is too low (top left); a displaced probe could (top right)",
+                 fontsize=9)
     return fig
 
 

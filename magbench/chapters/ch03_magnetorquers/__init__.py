@@ -28,12 +28,15 @@ INPUTS = ("copper_resistivity", "copper_density", "mtq_moment", "mtq_voltage", "
 def magnetorquer_rows(params=None):
     """Chapter 3: the built magnetorquers beside the thesis's own formulas.
 
-    One row is a measurement (the coil's resistance, ≈ 55 Ω); the others set a number the
-    thesis printed for the built coil beside what its own equations give for it (square
-    turn of side l, N = 240, 0.2 mm wire, 12 V). The resistance's tolerance is the spread
-    of the model over the wire standard's diameter tolerance (IEC 60317-0-1, ±3 µm at
-    0.2 mm) plus half a unit of the measured value's last digit; the others use half a unit
-    of the printed value's last digit.
+    Two rows: the coil's measured resistance (≈ 55 Ω) beside the model of the built
+    winding (square turn of side l, N = 240, 0.2 mm wire), and the design's power limit
+    (2 W, a design value) beside the built coil's power at 12 V with the measured
+    resistance. The numbers the thesis computed and printed for the built coil (its
+    resistance, moment, current and winding length) are source checks
+    (:func:`magnetorquer_checks`, :func:`magnetorquer_design_checks`), not rows. The resistance's tolerance is the spread of the
+    model over the wire standard's diameter tolerance (IEC 60317-0-1, ±3 µm at 0.2 mm)
+    plus half a unit of the measured value's last digit; the power's is half a unit of
+    the limit's printed digit.
 
     Parameters
     ----------
@@ -44,7 +47,7 @@ def magnetorquer_rows(params=None):
 
     p = params or chapter_parameters("ch03")
     rho, u, side, n = p["copper_resistivity"], p["mtq_voltage"], p["mtq_side"], p["mtq_turns"]
-    built, printed = load_measurements("thesis"), load_printed("thesis")
+    built = load_measurements("thesis")
     d = built["mtq-wire-diameter"].value
     table = load_wire_table("iec60317")
     d_tol = table.tolerance[int(np.argmin(np.abs(np.array(table.nominal_diameter) - d)))]
@@ -55,30 +58,13 @@ def magnetorquer_rows(params=None):
     r_model, r_meas = resistance(d), built["mtq-resistance"].value
     r_spread = max(abs(resistance(d - d_tol) - r_model), abs(resistance(d + d_tol) - r_model))
     src = "thesis"
-    square = hardware.turn_area(side, "square")
-    s_design = hardware.wire_area_for_moment(p["mtq_moment"], u, side, rho)
     return [
         make_row("mtq-resistance", "Resistance of a built magnetorquer (0.2 mm wire, N = 240)",
                  f"{src} §3.3 (measured, ≈ 55 Ω)", r_meas, r_model, r_spread + 0.5,
                  unit="ohm", note=f"model spread over d ± {d_tol * 1e6:.0f} µm: ±{r_spread:.2f} Ω"),
-        make_row("mtq-resistance-computed", "Resistance the thesis computed for the built coil",
-                 f"{src} §3.3 (printed)", printed["mtq-resistance-computed"].value, r_model,
-                 printed["mtq-resistance-computed"].resolution, unit="ohm"),
-        make_row("mtq-moment", "Dipole moment of the built coil at 12 V (eq. 20)",
-                 f"{src} §3.3 (printed)", printed["mtq-moment"].value,
-                 hardware.moment_from_voltage(u, side, hardware.wire_area(d), rho), printed["mtq-moment"].resolution,
-                 unit="A m^2",
-                 note=f"with the measured resistance: {u / r_meas * n * float(square):.3f} A·m²"),
         make_row("mtq-power", "Joule power of the built coil at 12 V (measured resistance)",
                  "thesis §3.2 (the design's 2 W)", p["mtq_max_power"],
                  hardware.joule_power(u, r_meas), 0.5, unit="W"),
-        make_row("mtq-current-for-moment", "Coil current for 0.4 A·m² (square, N = 240)",
-                 "thesis §4.1 (printed)", printed["thesis-mtq-current-024"].value,
-                 hardware.current_for_moment(p["mtq_moment"], n, square),
-                 printed["thesis-mtq-current-024"].resolution, unit="A"),
-        make_row("mtq-winding-length", "Single-layer winding length N·√S_r at N = 240",
-                 "thesis §3.2 (printed, ≈ 0.1 m)", printed["thesis-mtq-winding-length"].value,
-                 hardware.winding_length(n, s_design), printed["thesis-mtq-winding-length"].resolution, unit="m"),
     ]
 
 
@@ -182,19 +168,19 @@ def magnetorquer_design_checks():
     return [
         check("thesis-mtq-rho-rho", "thesis-mtq-rho-rho", "§3.2, eq. (32)", rho * gamma, "ohm kg/m^2",
               f"{rho * 1e6:g}·10⁻⁶ × {gamma / 1e3:g}·10³.", "mass_power_product",
-              quantity="Product ρρ̃ of copper"),
+              quantity="Product ργ of copper (the thesis writes ρρ̃)"),
         check("thesis-mtq-eq32-mass", "thesis-mtq-eq32-mass", "§3.2, eq. (32)", mass_coefficient, "kg V",
               f"{mass_coefficient * 1e3:.3f}·10⁻³ with the {sq}.", "coil_mass_for_moment",
-              quantity="Mass coefficient 16ρρ̃m in M = c·N/U"),
+              quantity="Mass coefficient 16ργm in m_c = c·N/U"),
         check("thesis-mtq-eq32-power", "thesis-mtq-eq32-power", "§3.2, eq. (32)", power_coefficient, "W/V",
               f"m/l² = {power_coefficient:g} with the {sq}.", "joule_power_for_moment",
-              quantity="Power coefficient m/l² in W = c·U/N"),
+              quantity="Power coefficient m/l² in P = c·U/N"),
         check("thesis-mtq-turns-min", "thesis-mtq-turns-min", "§3.2", lo * u, "1",
               f"{u:g} V × the printed N/U ≥ {lo:.0f}; tolerance {u:g} × half a unit of {lo:.0f}.",
-              "turns_per_volt_bounds", quantity=f"Fewest turns for W ≤ {w_max:g} W at {u:g} V"),
+              "turns_per_volt_bounds", quantity=f"Fewest turns for P ≤ {w_max:g} W at {u:g} V"),
         check("thesis-mtq-turns-max", "thesis-mtq-turns-max", "§3.2", hi * u, "1",
-              f"{hi * u:.1f}: the thesis rounded 16ρρ̃m = {mass_coefficient * 1e3:.3f}·10⁻³ to 10⁻³.",
-              "turns_per_volt_bounds", quantity=f"Most turns for M ≤ {m_max:g} kg at {u:g} V"),
+              f"{hi * u:.1f}: the thesis rounded 16ργm = {mass_coefficient * 1e3:.3f}·10⁻³ to 10⁻³.",
+              "turns_per_volt_bounds", quantity=f"Most turns for m_c ≤ {m_max:g} kg at {u:g} V"),
         check("thesis-mtq-design-mass", "thesis-mtq-design-mass", "§3.2",
               hardware.coil_mass_for_moment(m_req, u, n, rho, gamma, "square"), "kg",
               f"Eq. (29), {sq}; a round turn would give {mass_round:.4f} kg.", "coil_mass_for_moment",
@@ -213,8 +199,9 @@ def magnetorquer_design_checks():
               quantity=f"Excess of the measured ≈ {r_meas:g} Ω over the computed resistance"),
         check("thesis-mtq-built-power", "thesis-mtq-design-power", "§3.2–3.3", p_built, "W",
               (f"The {built['mtq-wire-diameter'].value * 1e3:g} mm wire (thicker than the {d_mm(s_design)} mm "
-               f"design) at N = {n:.0f} draws {u:g}²/{r_built:.1f} = {p_built:.2f} W, above the W ≤ {w_max:g} W "
-               f"limit the thesis set itself; N ≥ {n_for_limit} turns would keep it."),
+               f"design) at N = {n:.0f} draws {u:g}²/{r_built:.1f} = {p_built:.2f} W with the computed "
+               f"resistance ({float(hardware.joule_power(u, r_meas)):.2f} W with the measured ≈ {r_meas:g} Ω), "
+               f"above the P ≤ {w_max:g} W limit the thesis set itself; N ≥ {n_for_limit} turns would keep it."),
               "joule_power",
               quantity=f"Joule power of the built coil at {u:g} V, against the design's {w_max:g} W"),
         check("thesis-mtq-current-025", "thesis-mtq-current-025", "§4.1",
@@ -256,7 +243,7 @@ def kovalenko_actuator_checks():
               mass_per_torque, "kg/(N m)", f"μ0 γ/(B_r B) = {mass_per_torque:.1f} kg per N·m.",
               "magnet_mass_for_torque"),
         check("kovalenko-e36-length-coefficient", "kov-pm-length-coefficient",
-              f"Least-mass magnet: l = c·∛L, coefficient c (ЮН13ДК25БА, p₀ = {p0:g})", length1,
+              f"Least-mass magnet: l = c·∛m, coefficient c (YuN13DK25BA AlNiCo, p₀ = {p0:g})", length1,
               "m/(A m^2)^(1/3)",
               f"(4p₀²/(π J_c max))^(1/3) = {length1:.5f} with J_c max = {j_al / 1e5:.1f}·10⁵ A/m.",
               "permanent_magnet_min_mass"),
@@ -264,7 +251,7 @@ def kovalenko_actuator_checks():
               "Least-mass magnet: d/l = 1/p₀", diameter1 / length1, "1", f"1/{p0:g} = {1 / p0:.4f}.",
               "permanent_magnet_min_mass"),
         check("kovalenko-table5-power-law", "kov-table5-calc-p75",
-              f"Table 5, 4πN_ц by (9.25) at p = {table5_p:g} (the row that deviates most)", calc, "1",
+              f"Table 5, central demagnetising factor 4πN_c by (9.25) at p = {table5_p:g} (the row that deviates most)", calc, "1",
               (f"4π·0.93·p^−1.7 = {calc:.5f}. The whole 'computed' column deviates from the formula by "
                "0.2–1.4 % (slide-rule arithmetic, presumably); (9.25) still fits the measured column "
                "within 5 %."), "rod_demagnetizing_factor"),
@@ -308,4 +295,8 @@ CHAPTER = Chapter(
     cites="thesis §3, eqs. (17)–(32), Fig. 9; Kovalenko ch. 8–11",
     finds=("which magnetorquer designs real wire allows, and whether the built coils meet the thesis's own limits"),
     source_names=(("thesis", "thesis"), ("kovalenko", "Kovalenko (1975)")),
+    discussed_in=(("mtq-resistance", "ch03-built"), ("mtq-power", "ch03-built"),
+                  ("thesis-mtq-resistance", "ch03-built"), ("thesis-mtq-resistance-excess", "ch03-built"),
+                  ("thesis-mtq-built-", "ch03-built"), ("thesis-mtq-current-", "ch03-built"),
+                  ("thesis-mtq-", "ch03-derivation"), ("kovalenko-", "ch03-kovalenko")),
 )

@@ -6,7 +6,7 @@ import numpy as np
 
 from ... import hardware
 from ...constants import MU_0
-from ...io import load_wire_table
+from ...io import load_measurements, load_wire_table
 from . import CHAPTER
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
@@ -87,6 +87,7 @@ def plot_fig09(data):
     h, w, n = data.extra["side"] / 2, data.extra["width"], data.extra["coils"]
     fig = plt.figure(figsize=(6.4, 5.6))
     ax = fig.add_subplot(projection="3d")
+    ax.computed_zorder = False          # the moments and their labels stay on top of the bands
     for s in data.series[:2]:
         c = s.columns
         ax.plot(c["x"][1], c["y"][1], c["z"][1], color="0.5", linewidth=0.8)
@@ -108,21 +109,22 @@ def plot_fig09(data):
         ax.add_collection3d(Poly3DCollection(quads, facecolor=colours[axis], alpha=0.35,
                                              edgecolor=colours[axis]))
         tip = [0.0, 0.0, 0.0]
-        tip[axis] = 1.6 * h
-        ax.quiver(0, 0, 0, *tip, color=colours[axis], linewidth=2, arrow_length_ratio=0.15)
-        ax.text(*[1.7 * v for v in tip], f"m{'xyz'[axis]}", color=colours[axis])
-    lim = 1.7 * h
+        tip[axis] = 1.5 * h
+        ax.quiver(0, 0, 0, *tip, color=colours[axis], linewidth=2.5, arrow_length_ratio=0.15, zorder=10)
+        ax.text(*[1.2 * v for v in tip], rf"$\mathbf{{m}}_{'xyz'[axis]}$", color=colours[axis], fontsize=12,
+                ha="center", va="center", zorder=11)
+    lim = 1.9 * h
     ax.set_xlim(-lim, lim)
     ax.set_ylim(-lim, lim)
     ax.set_zlim(-lim, lim)
-    ax.set_box_aspect((1, 1, 1))
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("y [m]")
-    ax.set_zlabel("z [m]")
+    ax.set_box_aspect((1, 1, 1), zoom=1.2)
+    # The drawing is to scale and its size is in the title: axes, ticks and panes would only
+    # compete with the moments' labels.
+    ax.set_axis_off()
     layers = data.extra.get("layers", 1)
     kind = "single-layer" if layers == 1 else f"{layers}-layer"
-    ax.set_title(f"1U mock-up with {n} orthogonal coils ({kind} bands {w * 1e3:.0f} mm wide)",
-                 fontsize=8.5)
+    ax.set_title(f"1U mock-up, a {2 * h * 1e2:.0f} cm cube, with {n} orthogonal coils\n"
+                 f"({kind} bands {w * 1e3:.0f} mm wide) and the moment $\\mathbf{{m}}$ of each", fontsize=9)
     return fig
 
 
@@ -166,7 +168,8 @@ def compute_design_space(mtq_moment, mtq_voltage, mtq_side, mtq_max_power, mtq_m
         Series("eq. (21) wire", {"turns": ("1", n), "power": ("W", power), "mass": ("kg", mass)}),
         Series("IEC 60317 wires", wires)],
         extra={"n_lo": float(lo * u), "n_hi": float(hi * u), "d_design": float(hardware.wire_diameter(s_design)),
-               "built_power": float(u**2 / hardware.coil_resistance(240, l, hardware.wire_area(0.2e-3), rho, "square")),
+               # the built coil at this voltage across its measured resistance (thesis §3.3, ≈ 55 Ω)
+               "built_power": float(u**2 / load_measurements("thesis")["mtq-resistance"].value),
                "best": best, "moment": m, "max_power": mtq_max_power, "max_mass": mtq_max_mass})
 
 
@@ -178,23 +181,24 @@ def plot_design_space(data):
     c = {k: v for k, (unit, v) in data.series[0].columns.items()}
     w = {k: v for k, (unit, v) in data.series[1].columns.items()}
     fig, (a1, a3) = plt.subplots(1, 2, figsize=(7.0, 4.3))
-    a1.plot(c["turns"], c["power"], "C3", label="power W (eq. 28)")
+    a1.plot(c["turns"], c["power"], "C3", label="power $P$ (eq. 28)")
     a1.axhline(e["max_power"], color="C3", linestyle=":", linewidth=0.8)
-    a1.axvspan(e["n_lo"], e["n_hi"], color="C2", alpha=0.12, label="feasible: W and M within limits")
+    a1.axvspan(e["n_lo"], e["n_hi"], color="C2", alpha=0.12, label="feasible ($P$, $m_c$ within limits)")
     a1.plot([240], [2.0], "o", color="C3", mfc="none", label="thesis design, N = 240 (2 W)")
-    a1.plot([240], [e["built_power"]], "x", color="k", label=f"built coil, 0.2 mm ({e['built_power']:.2f} W)")
+    a1.plot([240], [e["built_power"]], "x", color="k", label=f"built coil, 0.2 mm wire\n({e['built_power']:.2f} W with its measured $R$)")
     a1.set_xlabel("turns N")
     a1.set_ylabel("Joule power [W]", color="C3")
     a1.set_ylim(0, 5)
     a2 = a1.twinx()
-    a2.plot(c["turns"], c["mass"] * 1e3, "C0", label="mass M (eq. 29)")
+    a2.plot(c["turns"], c["mass"] * 1e3, "C0", label="mass $m_c$ (eq. 29)")
     a2.axhline(e["max_mass"] * 1e3, color="C0", linestyle=":", linewidth=0.8)
     a2.plot([240], [c["mass"][c["turns"] == 240][0] * 1e3], "o", color="C0", mfc="none")
     a2.set_ylabel("conductor mass [g]", color="C0")
     a2.set_ylim(0, 125)
     h1, l1 = a1.get_legend_handles_labels()
     h2, l2 = a2.get_legend_handles_labels()
-    a1.legend(h1 + h2, l1 + l2, fontsize=7, loc="upper right")
+    # On the twin axes, so that no line is drawn over it; above the mass line, right of the power curve.
+    a2.legend(h1 + h2, l1 + l2, fontsize=7, loc="upper left", bbox_to_anchor=(0.1, 1.0), framealpha=0.95)
     a1.set_title(f"wire of eq. (21), d = {e['d_design'] * 1e3:.3f} mm", fontsize=8.5)
     d = w["wire_diameter"]
     ok = w["moment"] >= e["moment"]
@@ -202,8 +206,8 @@ def plot_design_space(data):
     for k in np.flatnonzero(ok):
         if top[k] >= w["n_min_power"][k]:
             a3.plot([d[k], d[k]], [w["n_min_power"][k], top[k]], color="C2", linewidth=6, alpha=0.6)
-    a3.plot(d, w["n_min_power"], "C3v", markersize=4, label="fewest turns for W ≤ limit")
-    a3.plot(d, w["n_max_mass"], "C0^", markersize=4, label="most turns for M ≤ limit")
+    a3.plot(d, w["n_min_power"], "C3v", markersize=4, label="fewest turns for $P$ ≤ limit")
+    a3.plot(d, w["n_max_mass"], "C0^", markersize=4, label="most turns for $m_c$ ≤ limit")
     a3.plot(d, w["n_max_single_layer"], "k_", markersize=8, label="most turns in one layer")
     a3.plot(d[~ok], w["n_min_power"][~ok], "x", color="0.5", label="moment below the requirement")
     if e["best"]:
@@ -247,13 +251,17 @@ def plot_wm_product(data):
     p = {k: v for k, (u, v) in data.series[0].columns.items()}
     s = {k: v for k, (u, v) in data.series[1].columns.items()}
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.0, 4.6))
-    a1.loglog(p["side"], p["copper"], "C1", label="copper (thesis ρ̃ρ)")
-    a1.loglog(p["side"], p["aluminium"], "C0", label="aluminium (Kovalenko γρ)")
+    a1.loglog(p["side"], p["copper"], "C1", label=r"copper (the thesis's $\gamma\rho$)")
+    a1.loglog(p["side"], p["aluminium"], "C0", label=r"aluminium (Kovalenko's $\gamma\rho$)")
     a1.axvline(data.extra["side0"], color="0.6", linestyle=":", label="mock-up coil, l = 0.1 m")
     a1.set_xlabel("coil size l [m]")
-    a1.set_ylabel("M·W [kg·W]")
+    a1.set_ylabel("$m_c P$ [kg·W]")
+    from matplotlib.ticker import FixedLocator, NullFormatter, ScalarFormatter
+    a1.xaxis.set_major_locator(FixedLocator([0.03, 0.05, 0.1, 0.2, 0.3]))
+    a1.xaxis.set_major_formatter(ScalarFormatter())
+    a1.xaxis.set_minor_formatter(NullFormatter())     # the log axis labelled its minor ticks on top of each other
     a1.legend(fontsize=8)
-    a1.set_title("M·W = 16 m² γρ / l², any N, U and shape", fontsize=8.5)
+    a1.set_title(r"$m_c P = 16 m^2 \gamma\rho / l^2$, any $N$, $U$ and shape", fontsize=8.5)
     for shape, style in (("round", "--"), ("square", "-")):
         a2.plot(s["side"], s[f"power_{shape}"], "C3" + style, label=f"power, {shape}")
     a2.set_xlabel("coil size l [m]")
@@ -310,10 +318,10 @@ def compute_actuators(mtq_moment, mtq_voltage, mtq_side, mtq_max_power, mtq_max_
     em_moment = core_averaging_factor * j_c * math.pi * em["core_diameter"] ** 2 * em["length"] / 4
     j_r = magnet_remanence / MU_0
     pm = [("permanent magnet, B_r = %.2g T" % magnet_remanence, j_r, alnico_elongation, magnet_density),
-          ("permanent magnet, alnico ЮН13ДК25БА", alnico_max_magnetization, alnico_elongation, magnet_density)]
+          ("permanent magnet, AlNiCo YuN13DK25BA", alnico_max_magnetization, alnico_elongation, magnet_density)]
     rows = [("air-core coil (IEC wire, least mass)", coil["mass"] if coil else np.nan,
              coil["power"] if coil else np.nan, mtq_side, m if coil is None else coil["moment"], 1.0),
-            ("rod electromagnet, permalloy 50Н", em["mass"], em["power"], em["length"], em_moment, 1.0)]
+            ("rod electromagnet, permalloy 50N", em["mass"], em["power"], em["length"], em_moment, 1.0)]
     for label, j, p0, gam in pm:
         length, dia, mass = hardware.permanent_magnet_min_mass(m, j, p0, gam)
         rows.append((label, float(mass), 0.0, float(length), m, 0.0))
@@ -357,13 +365,13 @@ def _actuator_parameters():
             ("permalloy_design_field", "A/m", "field in the core at J°, H°"),
             ("permalloy_a", "A/m", "magnetisation-curve constant a (9.21)"),
             ("permalloy_b", "A/m", "magnetisation-curve constant b (9.21)"),
-            ("core_averaging_factor", "1", "k = J_c/J_ц"),
+            ("core_averaging_factor", "1", "k, mean over central magnetisation of the core"),
             ("em_current_density", "A/m^2", "winding current density"),
             ("em_fill_factor", "1", "winding fill factor"),
             ("core_density", "kg/m^3", "core density"),
             ("magnet_remanence", "T", "remanence of the best magnet material (Kovalenko E02)"),
             ("magnet_density", "kg/m^3", "magnet density"),
-            ("alnico_max_magnetization", "A/m", "largest mean magnetisation of ЮН13ДК25БА"),
+            ("alnico_max_magnetization", "A/m", "largest mean magnetisation of YuN13DK25BA (an AlNiCo alloy)"),
             ("alnico_elongation", "1", "elongation at which it is reached")):
         params[name] = FigureParameter(p[name], unit, text)
     return params
