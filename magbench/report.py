@@ -480,3 +480,42 @@ def concordance_entries(source):
                     entries.append({"source": place, "what": title, "book": f"{{numref}}`{figure_id}`"})
                     linked.add(figure_id)
     return entries
+
+
+def parameter_table(chapter, namespace, *, label=None):
+    """The chapter's inputs as a reader-facing table: name, value used, unit, provenance.
+
+    ``namespace`` holds the values the page actually runs with (the page's globals after
+    its ``parameters`` cell, so papermill's ``-p`` and ``$MAGBENCH_PARAMS`` show). Each
+    value is shown in the unit its source prints it in; the provenance column says whose
+    value it is: the source's (with its section), external (a datasheet, IGRF, …) or ours
+    (a modelling choice; the chapter's text gives the reason). A value as the parameter
+    set has it is shown as written there; one that differs is marked "changed".
+    """
+    import pandas as pd
+
+    from .chapters import chapter as chapter_spec, source_name
+    from .io import load_parameter_set
+    from .io.data import to_si
+
+    spec = chapter_spec(chapter)
+    params = load_parameter_set(spec.source)
+    rows = []
+    for name in spec.inputs:
+        p = params[name]
+        used = float(namespace[name]) if name in namespace else p.value_si
+        if math.isclose(used, p.value_si, rel_tol=1e-12, abs_tol=0.0):
+            value = f"{p.value:g}".replace("-", "−").replace("e+", "·10^").replace("e", "·10^")
+            value = re.sub(r"\^(−?\d+)", lambda m: m.group(1).lstrip("0").translate(_SUPERSCRIPTS), value)
+        else:
+            value = format_number(used / to_si(1.0, p.unit)[0], 4) + " (changed)"
+        if p.source in ("ours", "external"):
+            whose = p.source
+        else:
+            whose = source_name(p.source) + (f", §{p.section}" if p.section else "")
+        rows.append({"parameter": f"`{name}`", "value": value, "unit": display_unit(p.unit) or "–",
+                     "whose": whose})
+    frame = pd.DataFrame(rows)
+    return table(frame, "The chapter's inputs: the value each computation on this page uses, and whose "
+                        "value it is. Change one with papermill's -p or a parameter file (see the landing page).",
+                 label=label or f"{chapter}-inputs", widths=(5, 3, 2, 4))
