@@ -7,7 +7,7 @@ reproduce.
 
 from numpy.testing import assert_allclose
 
-from magbench.chapters import errata
+from magbench.chapters import errata, source_checks
 
 
 # ------------------------------------------------------------ printed values (errata)
@@ -22,17 +22,32 @@ EXPECTED_ERRATA = {
     "thesis-pole-field-rounding": "2M/R³ = 0.6265 Oe rounds to 0.63, not 0.62",
     "thesis-eq5-cgs-torque": "M = L × H lacks μ0 in SI",
     "thesis-eq12a-energy-ratio": "ΔT_E/ΔT_c ≈ ω_E/ω_c, not J_c/J_E",
-    "kovalenko-mean-dipole-field": "Table 1's dipole gives 0.4272 Oe, printed 0.4283",
-    "kovalenko-rms-field-R1000": "Table 2 at R+1000 km below the 1965 spectrum",
-    "kovalenko-rms-dipole-R1000": "Table 2 at R+1000 km below the 1965 spectrum",
-    "kovalenko-rms-field-1.5R": "Table 2 at 1.5R below the 1965 spectrum",
-    "kovalenko-rms-dipole-1.5R": "Table 2 at 1.5R below the 1965 spectrum",
 }
+
+#: Kovalenko's hand-computed field tables: off by more than half their last digit, within
+#: the precision of their method (magbench.errata.HAND_TABLE_PRECISION), so not errata.
+HAND_TABLE_ROUNDINGS = ("kovalenko-mean-dipole-field", "kovalenko-rms-field-R1000", "kovalenko-rms-dipole-R1000",
+                        "kovalenko-rms-field-1.5R", "kovalenko-rms-dipole-1.5R")
 
 
 def test_printed_value(printed_check):
-    # Tolerance: half a unit of the source's last printed digit (printed_check.tolerance).
+    # Tolerance: half a unit of the source's last printed digit (printed_check.tolerance),
+    # or the precision of a hand-computed table.
     assert_allclose(printed_check.printed, printed_check.computed, rtol=0, atol=printed_check.tolerance)
+
+
+def test_hand_tables_are_judged_at_their_method_s_precision():
+    """0.286 against 0.2875 Oe: outside half a unit of the last digit (as the table was
+    printed), inside 1.5 % (as the table was computed): a rounding of the method, not an
+    erratum."""
+    from magbench.errata import HAND_TABLE_PRECISION
+
+    checks = {c.id: c for c in source_checks("ch01")}
+    for check_id in HAND_TABLE_ROUNDINGS:
+        c = checks[check_id]
+        # More than half a unit of the third decimal, the coarsest digit these entries print.
+        assert abs(c.printed - c.computed) > 0.5e-3, check_id
+        assert c.agrees and c.tolerance == HAND_TABLE_PRECISION * abs(c.computed), check_id
 
 
 def test_errata_match_expectation():

@@ -320,7 +320,6 @@ EXPECTED_ERRATA = {
     "kovalenko-e02-torque-per-mass": "B_r B/(μ0 γ) = 0.743e-2, printed 0.75e-2",
     "thesis-mtq-built-power": "12²/53.5 = 2.69 W, above the 2 W the design promised",
     "thesis-mtq-current-025": "m = ISN gives 0.167 A, printed 0.25 (line 524)",
-    "kovalenko-table5-power-law": "4π·0.93·75.63^-1.7 = 0.00748, printed 0.00738",
     "kovalenko-table5-nu-p40": "Table 5's own columns give ν = -2.24 %, printed -0.22",
 }
 

@@ -336,7 +336,8 @@ CHAPTER = Chapter(
         ("thesis-sim-coil-voltage", "printed", None),
         ("thesis-sim-power-at-limit", "printed", None),
         ("thesis-sim-center-deviation", "printed", "conclusion"),     # the thesis's verdict on its coils
-        ("thesis-sim-moment-", "printed", "downstream"),
+        ("thesis-mtq-moment-60s", "printed", "downstream"),   # ch03 sizes the coils for it
+        ("thesis-mtq-moment-", "printed", None),
         ("kovalenko-four-coil-sphere", "printed", "conclusion"),      # a design statement, 3x off
         ("kovalenko-", "printed", None),
     ),

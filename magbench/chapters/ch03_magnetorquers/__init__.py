@@ -272,7 +272,7 @@ CHAPTER = Chapter(
     pages=("book/ch03-magnetorquers",), source="thesis", inputs=INPUTS,
     figure_modules=("magbench.chapters.ch03_magnetorquers.figures",),
     comparisons=magnetorquer_rows,
-    row_kinds=(("mtq-resistance", "measurement"), ("mtq-power", "design"), ("mtq-", "design")),
+    row_kinds=(("mtq-resistance", "measurement"), ("mtq-power", "design")),
     check_classes=(
         ("thesis-mtq-built-moment", "printed", "downstream"),
         ("thesis-mtq-current-for-moment", "printed", "contained"),
