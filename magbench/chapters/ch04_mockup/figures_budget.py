@@ -30,7 +30,7 @@ LABELS = {
     "heading_ripple": "field non-uniformity over the swing", "coil_misalignment_1": "coil 1 axis misalignment",
     "coil_misalignment_2": "coil 2 axis misalignment", "coil_field_coupling": "coils' field at magnetometer",
     "thread_stiffness": "thread torsion stiffness", "thread_neutral_angle": "thread neutral angle",
-    "filter_coefficient": "filter coefficient A", "sample_interval": "loop period",
+    "filter_coefficient": "filter coefficient $A_f$", "sample_interval": "loop period $\\Delta t$",
     "pwm_levels": "PWM resolution", "moment_scale_1": "coil 1 moment", "moment_scale_2": "coil 2 moment",
     "release_angle": "release angle", "release_rate": "release rate",
 }
