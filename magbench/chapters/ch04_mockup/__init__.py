@@ -182,7 +182,7 @@ def dynamics_checks():
     return [
         source_check(
             id="thesis-eq14-design-amplitude", chapter="ch04", source="thesis",
-            location="§2.1 and §3.2 (eqs. 14–15 with A = π)",
+            location="§2.1 and §3.2 (eqs. 14–15 with amplitude ψ0 = π)",
             quantity=(f"Amplitude at which the built design (m = {m:g} A·m², H = {p['sim_design_h']:g} A/m) swings "
                       f"with the design period {p['oscillation_period']:g} s"),
             printed=float(np.degrees(p["oscillation_amplitude"])), computed=float(np.degrees(amplitude)),
@@ -223,4 +223,6 @@ CHAPTER = Chapter(
     cites="thesis §4, eqs. (33)–(39), Figs. 10–20",
     finds=("whether the printed PID gains stabilise the mock-up, how the filter behaves on real IMU data, and what the bench's measured orientation error can and cannot come from"),
     source_names=(("thesis", "thesis"),),
+    discussed_in=(("bench-error-", "ch04-bench-mc"), ("bench-budget-gyro-", "ch04-budget-calibration"),
+                  ("thesis-eq14-design-amplitude", "ch04-period"), ("thesis-pid-gains-stable-si", "ch04-gains")),
 )
