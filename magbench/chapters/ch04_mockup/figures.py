@@ -355,8 +355,8 @@ def plot_block_diagram(data):
 
     blocks, edges = data.extra["blocks"], data.extra["edges"]
     names = [b[0] for b in blocks]
-    fig, ax = plt.subplots(figsize=(7.0, 4.0))
-    fig.subplots_adjust(0, 0, 1, 1)
+    fig = plt.figure(figsize=(7.0, 4.0))
+    ax = fig.add_axes((0.0, 0.0, 1.0, 1.0))      # the drawing's own inch grid fills the figure
     ax.set_xlim(0, 7.0)
     ax.set_ylim(0, 4.0)
     ax.set_axis_off()
