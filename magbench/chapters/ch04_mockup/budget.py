@@ -7,8 +7,10 @@ hardware error source the parts allow, each with a range and where the range com
 (``magbench/data/bench/error_sources.toml``), run through the same simulation as
 keyword inputs of :func:`magbench.sim.bench.simulate_bench`, vectorised over members:
 
-- :func:`load_error_sources` the ranges (two computed from chapter 2's code: the
-  uncancelled laboratory field from IGRF, the field's non-uniformity over the mock-up);
+- :func:`load_error_sources` the ranges (three computed by the library: the uncancelled
+  laboratory field from IGRF and the field's non-uniformity over the mock-up, both as
+  chapter 2 computes them, and the coils' field at the magnetometer, a square coil's
+  centre field per unit moment);
 - :func:`simulate_sources` the final error band for any set of per-member values;
 - :func:`one_at_a_time` each source across its range, the others nominal;
 - :func:`sobol_budget` first-order and total Sobol indices (SALib, Saltelli's sample)
