@@ -207,3 +207,42 @@ def test_bad_budget_inputs_are_named(setup, sources):
         budget.from_unit_cube(np.zeros((3, 2)), sources)
     with pytest.raises(ValueError, match=r"\[0, 1\]"):
         budget.from_unit_cube(np.full((1, len(sources)), 1.5), sources)
+
+
+def test_coil_field_range_is_the_square_coils_centre_field(sources, p):
+    """The coils' field at the magnetometer runs from none to a square coil's centre field
+    per unit moment, 2√2·μ0·N·I/(π·l) over m = N·I·l² (closed form; Griffiths eq. 5.37
+    summed over four sides), not the far-field dipole μ0/(2π r³)."""
+    from magbench.constants import MU_0
+
+    s = sources["coil_field_coupling"]
+    side = p["mtq_side"]
+    # rtol 1e-12: Biot–Savart over four straight sides is exact at the centre; only rounding.
+    assert_allclose([s.low, s.high], [0.0, 2 * np.sqrt(2) * MU_0 / (np.pi * side ** 3)], rtol=1e-12, atol=0)
+    assert s.source == "computed" and "magbench" not in s.reference
+    with pytest.raises(ValueError, match="side"):
+        budget.coil_field_per_moment(-0.1)
+
+
+def test_no_reader_facing_reference_names_code(sources):
+    """The table of sources is read on the book page: no parameter keys or dotted paths."""
+    for s in sources.values():
+        assert "magbench" not in s.reference and "_" not in s.reference, (s.name, s.reference)
+
+
+def test_budget_rows_are_the_gyro_offsets_consistency_rows(p):
+    """Only the gyro offset's two rows remain (the 'largest other source' rows were an
+    elimination, not a comparison, and were removed); each equals the filter's fixed
+    point A_f·b·Δt/(1−A_f) at the datasheet bound."""
+    from magbench.chapters import ch04_mockup
+
+    rows = ch04_mockup.budget_rows(p)
+    assert [r.id for r in rows] == ["bench-budget-gyro-pi3", "bench-budget-gyro-2pi3"]
+    expected = np.degrees(ch04_mockup.gyro_offset_error(sensors.MPU6050_GYRO_ZRO_TOLERANCE,
+                                                        p["bench_filter_coefficient"], p["bench_sample_interval"]))
+    # atol 0.03°: the band is a max over the final window with datasheet sensor noise and
+    # the duty's limit cycle on top of the fixed point (seen: ≤ 0.02°).
+    assert_allclose([r.model for r in rows], expected, atol=0.03)
+    assert all("could explain" in r.note for r in rows)
+    with pytest.raises(ValueError, match="filter_coefficient"):
+        ch04_mockup.gyro_offset_error(0.1, 1.0, 0.01)

@@ -7,8 +7,10 @@ hardware error source the parts allow, each with a range and where the range com
 (``magbench/data/bench/error_sources.toml``), run through the same simulation as
 keyword inputs of :func:`magbench.sim.bench.simulate_bench`, vectorised over members:
 
-- :func:`load_error_sources` the ranges (two computed from chapter 2's code: the
-  uncancelled laboratory field from IGRF, the field's non-uniformity over the mock-up);
+- :func:`load_error_sources` the ranges (three computed by the library: the uncancelled
+  laboratory field from IGRF and the field's non-uniformity over the mock-up, both as
+  chapter 2 computes them, and the coils' field at the magnetometer, a square coil's
+  centre field per unit moment);
 - :func:`simulate_sources` the final error band for any set of per-member values;
 - :func:`one_at_a_time` each source across its range, the others nominal;
 - :func:`sobol_budget` first-order and total Sobol indices (SALib, Saltelli's sample)
@@ -28,7 +30,7 @@ from ...io.data import DATA_DIR, DataError, to_si, verify_checksum
 from ..._validate import shown
 
 __all__ = ["ErrorSource", "load_error_sources", "nominal_values", "simulate_sources", "one_at_a_time",
-           "sobol_design", "sobol_analysis", "sobol_budget", "from_unit_cube",
+           "sobol_design", "sobol_analysis", "sobol_budget", "from_unit_cube", "coil_field_per_moment",
            "SAMPLE_INTERVALS"]
 
 #: Controller periods the budget runs [s]: draws of ``sample_interval`` are rounded to the
@@ -68,8 +70,47 @@ class ErrorSource:
         return np.asarray(value, float) / self.factor
 
 
+def coil_field_per_moment(side):
+    r"""Field at the centre of a square coil per unit of its moment [T per A·m²].
+
+    Parameters
+    ----------
+    side : float
+        Side l of the square turn [m], > 0.
+
+    Returns
+    -------
+    float
+        :math:`|B(0)|/m = 2\sqrt2\,\mu_0/(\pi l^3)` for any N and I (m = N I l²), by
+        Biot–Savart over the four sides (:func:`magbench.fields.square_loop_b`).
+
+    Notes
+    -----
+    Not in the thesis. The magnetometer sits inside the mock-up, within the coils (the
+    thesis does not say where); the far-field dipole :math:`\mu_0/(2\pi r^3)` does not
+    apply there.
+    """
+    from ... import fields
+
+    side = _positive(side, "side", "m")
+    b = fields.square_loop_b([0.0, 0.0, 0.0], side, 1.0, turns=1)
+    return float(np.linalg.norm(b) / side ** 2)
+
+
+def _positive(value, name, unit):
+    value = float(value)
+    if not (np.isfinite(value) and value > 0):
+        raise ValueError(f"{name} must be a finite number > 0 {unit}, got {shown(value)}")
+    return value
+
+
 def _computed_ranges(params):
-    """The two ranges computed from chapter 2's code: (background_h high [A/m], ripple [rad])."""
+    """The ranges computed by the library: {name: (low, high)} in SI.
+
+    ``background_h`` (chapter 2's IGRF at the laboratory), ``heading_ripple`` (the pair's
+    non-uniformity over the mock-up) and ``coil_field_coupling`` (a square coil's field
+    at its centre per unit moment).
+    """
     from ...earth import igrf
     from ... import fields
 
@@ -77,8 +118,9 @@ def _computed_ranges(params):
                           params["thesis_epoch"])
     # The mock-up's radius from the thesis's own J = M R²/2 (thesis §2.1, seed line 240).
     radius = float(np.sqrt(2.0 * params["mockup_inertia"] / params["mockup_mass"]))
-    ripple = fields.sphere_nonuniformity(params["sim_built_radius"], params["sim_built_spacing"], radius)
-    return float(lab.horizontal / MU_0), float(ripple)
+    ripple = float(fields.sphere_nonuniformity(params["sim_built_radius"], params["sim_built_spacing"], radius))
+    return {"background_h": (0.0, float(lab.horizontal / MU_0)), "heading_ripple": (-ripple, ripple),
+            "coil_field_coupling": (0.0, coil_field_per_moment(params["mtq_side"]))}
 
 
 def load_error_sources(params=None):
@@ -99,14 +141,16 @@ def load_error_sources(params=None):
     -----
     ``background_h`` runs from 0 to the laboratory's horizontal field (IGRF at the
     thesis's epoch, as chapter 2 computes it); ``heading_ripple`` within ± the
-    relative non-uniformity of the pair as built over a sphere of the mock-up's radius.
+    relative non-uniformity of the pair as built over a sphere of the mock-up's radius;
+    ``coil_field_coupling`` from 0 to the field at a square coil's centre per unit
+    moment (:func:`coil_field_per_moment` of the thesis's side).
     """
     if params is None:
         from ...io import load_parameter_set
         params = {k: p.value_si for k, p in load_parameter_set("thesis").items()}
     content = verify_checksum(_PATH).decode("utf-8")
     tables = tomllib.loads(content)
-    lab_h, ripple = _computed_ranges(params)
+    computed = _computed_ranges(params)
     out = {}
     for name, t in tables.items():
         where = f"{_PATH}: [{name}]"
@@ -117,7 +161,10 @@ def load_error_sources(params=None):
         unit = t["unit"]
         factor = _EXTRA_UNITS.get(unit) or to_si(1.0, unit)[0]
         if t["source"] == "computed":
-            low, high = {"background_h": (0.0, lab_h), "heading_ripple": (-ripple, ripple)}[name]
+            if name not in computed:
+                raise DataError(f"{where}: no computed range is defined for this source "
+                                f"(computed ones: {', '.join(computed)})")
+            low, high = computed[name]
         else:
             low, high = float(t["low"]) * factor, float(t["high"]) * factor
             if not low < high:

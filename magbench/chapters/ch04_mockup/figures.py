@@ -242,20 +242,28 @@ def plot_period_ratio(data):
 
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.0, 4.6))
     c, chk, h = ({k: v for k, (u, v) in s.columns.items()} for s in data.series)
-    a1.semilogy(c["amplitude"], c["ratio"], label="exact, 4K(sin²(A/2))/ω0")
-    a1.semilogy(chk["amplitude"], chk["ratio"], "o", mfc="none", label="solve_ivp")
+    from matplotlib.ticker import FixedLocator, FuncFormatter, NullLocator
+
+    a1.semilogy(c["amplitude"], c["ratio"], label=r"exact, $4K(\sin^2(\psi_0/2))/\omega_0$")
+    a1.semilogy(chk["amplitude"], chk["ratio"], "o", mfc="none", label="direct integration")
     a1.axhline(1.0, color="0.5", linestyle=":", label="eq. (14)")
-    a1.set_xlabel("amplitude A [deg]")
-    a1.set_ylabel("T / T0")
+    a1.set_xlabel(r"amplitude $\psi_0$ [deg]")
+    a1.set_ylabel(r"$T\,/\,T_0$")
+    # Plain numbers on the log axis (its default labelled the minor ticks 2×10⁰, 3×10⁰, …).
+    top = float(np.nanmax(np.asarray(c["ratio"], float)[np.isfinite(c["ratio"])]))
+    ticks = [v for v in (1, 1.5, 2, 3, 5, 10, 20, 50, 100) if v <= 1.05 * top]
+    a1.yaxis.set_major_locator(FixedLocator(ticks))
+    a1.yaxis.set_minor_locator(NullLocator())
+    a1.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
     a1.set_xlim(0, 180)
     a1.legend(fontsize=8)
-    a1.set_title("Period against amplitude (diverges at A = 180°)", fontsize=8.5)
+    a1.set_title(r"Period against amplitude (diverges at $\psi_0$ = 180°)", fontsize=8.5)
     a2.semilogy(h["amplitude"], h["H_exact"], label=f"exact: T = {data.extra['period']:.0f} s")
-    a2.semilogy(h["amplitude"], h["H_eq15_as_used"], "--", label="eq. (15) with A (thesis)")
+    a2.semilogy(h["amplitude"], h["H_eq15_as_used"], "--", label=r"eq. (15) with $\psi_0$ (thesis)")
     a2.axhline(data.extra["h_design"], color="C3", linewidth=0.8, label=f"built design {data.extra['h_design']:.0f} A/m")
     if data.extra["a_design"] > 0:
         a2.axvline(np.degrees(data.extra["a_design"]), color="C3", linestyle=":", linewidth=0.8)
-    a2.set_xlabel("amplitude A [deg]")
+    a2.set_xlabel(r"amplitude $\psi_0$ [deg]")
     a2.set_ylabel("field strength H [A/m]")
     a2.set_xlim(0, 180)
     a2.set_ylim(1, 1e5)
@@ -275,13 +283,18 @@ def _period_parameters():
 # --- thesis Fig. 14: the loop, drawn from its python-control interconnection ---------------
 
 def build_interconnection(inertia, field, kp, ki, kd, moment_limit):
-    """The closed loop as a python-control interconnection of named blocks."""
+    """The closed loop as a python-control interconnection of named blocks.
+
+    The sensors and the complementary filter of thesis eq. (39) are a block of their
+    own (``sensors``: ψ, ω → ψ̂, ω_g); in this continuous model they are ideal (ψ̂ = ψ,
+    ω_g = ω), so the loop is the one :func:`magbench.control.simulate_pid` integrates.
+    """
     import control as ct
 
     loop = control.PidLoop(inertia, field, kp, ki, kd, moment_limit=moment_limit)
-    summing = ct.summing_junction(inputs=["psi_des", "-psi"], output="e", name="sum")
+    summing = ct.summing_junction(inputs=["psi_des", "-psi_hat"], output="e", name="sum")
     pid = ct.nlsys(lambda t, x, u, p: [u[0]], lambda t, x, u, p: [kp * u[0] + ki * x[0] - kd * u[1]],
-                   inputs=["e", "omega"], outputs=["u"], states=["integral"],
+                   inputs=["e", "omega_gyro"], outputs=["u"], states=["integral"],
                    name="pid")
     sat = ct.nlsys(None, lambda t, x, u, p: np.clip(u, -moment_limit, moment_limit), inputs=["u"],
                    outputs=["u_sat"], name="saturation")
@@ -291,17 +304,34 @@ def build_interconnection(inertia, field, kp, ki, kd, moment_limit):
     plant = ct.nlsys(lambda t, x, u, p: [x[1], float(dynamics.two_coil_torque(x[0], u[0], u[1], field)) / inertia],
                      lambda t, x, u, p: x, inputs=["M_x", "M_y"], outputs=["psi", "omega"],
                      states=["psi", "omega"], name="mockup")
-    system = ct.interconnect([summing, pid, sat, alloc, plant], inplist=["psi_des"], outlist=["psi", "omega"],
-                             name="closed loop")
+    sensors = ct.nlsys(None, lambda t, x, u, p: [u[0], u[1]], inputs=["psi", "omega"],
+                       outputs=["psi_hat", "omega_gyro"], name="sensors")
+    system = ct.interconnect([summing, pid, sat, alloc, plant, sensors], inplist=["psi_des"],
+                             outlist=["psi", "omega"], name="closed loop")
     return system, loop
 
 
-#: What each block of the interconnection computes (the drawing's labels).
+#: What each block of the interconnection computes (the drawing's labels, mathtext).
 BLOCK_LABELS = {
-    "sum": "Σ\ne = ψ_des − ψ", "pid": "PID, eq. (37)\nKp e + Ki ∫e\n− Kd ω",
-    "saturation": "saturation\n|u| ≤ m_max", "allocation": "allocation\nM = (0, 0, −u)\n× b",
-    "mockup": "mock-up,\neq. (36):\nJ dω/dt =\n−B0 (Mx sin ψ\n+ My cos ψ)",
+    "sum": r"$\Sigma$",
+    "pid": "PID, eq. (37)\n" + r"$u = K_p e + K_i \int e\,\mathrm{d}t$" + "\n" + r"$-\,K_d\,\omega_g$",
+    "saturation": "saturation\n" + r"$|u| \leq m_\max$",
+    "allocation": "allocation\n" + r"$m_1 = -u\sin\psi$" + "\n" + r"$m_2 = -u\cos\psi$",
+    "mockup": "mock-up, eq. (36)\n" + r"$J\dot\omega = -B_0\,(m_1\sin\psi$" + "\n" + r"$+\ m_2\cos\psi)$",
+    "sensors": "gyro, magnetometer and filter, eq. (39)\n"
+               + r"$\hat\psi_k = A_f(\hat\psi_{k-1} + \omega_g\Delta t) + (1 - A_f)\,\psi_m$",
 }
+
+#: Where each block sits in the drawing [in]: (left, bottom, width, height). The forward
+#: path runs along the top row, the plant and the sensors back along the bottom row.
+_BLOCK_BOXES = {
+    "sum": (0.45, 2.75, 0.55, 0.7), "pid": (1.45, 2.55, 1.65, 1.1), "saturation": (3.5, 2.65, 1.1, 0.9),
+    "allocation": (5.0, 2.55, 1.5, 1.1), "mockup": (4.55, 0.35, 1.95, 1.1), "sensors": (0.45, 0.35, 3.55, 1.1),
+}
+
+_SIGNALS = {"psi_des": r"$\psi_\mathrm{des}$", "e": "$e$", "u": "$u$", "u_sat": r"$u_\mathrm{sat}$",
+            "M_x": "$m_1$", "M_y": "$m_2$", "psi": r"$\psi$", "omega": r"$\omega$",
+            "psi_hat": r"$\hat\psi$", "omega_gyro": r"$\omega_g$"}
 
 
 def compute_block_diagram(inertia, field, moment):
@@ -318,42 +348,64 @@ def compute_block_diagram(inertia, field, moment):
 
 
 def plot_block_diagram(data):
-    """Boxes in signal order; forward signals along the row, feedback below it."""
+    """The loop's blocks on two rows (forward path on top, plant and sensors below) and
+    every signal of the interconnection as an arrow; all text at 9 pt."""
     import matplotlib.pyplot as plt
     from matplotlib.patches import FancyBboxPatch
 
     blocks, edges = data.extra["blocks"], data.extra["edges"]
-    fig, ax = plt.subplots(figsize=(7.0, 3.4))
-    w, h, gap = 1.9, 1.5, 0.75
-    x = [k * (w + gap) for k in range(len(blocks))]
-    for k, (name, _, _) in enumerate(blocks):
-        ax.add_patch(FancyBboxPatch((x[k], 0), w, h, boxstyle="round,pad=0.05", fc="0.95", ec="k"))
-        ax.text(x[k] + w / 2, h / 2, BLOCK_LABELS.get(name, name), ha="center", va="center", fontsize=7)
-    depth = {}
-    for src, dst, sig in edges:
-        label = {"psi": "ψ", "omega": "ω", "psi_des": "ψ_des", "u_sat": "u_sat"}.get(sig, sig)
-        if src < 0:                                   # external input
-            ax.annotate("", (x[dst], 0.5 * h), (x[dst] - 0.7 * gap - 0.3, 0.5 * h),
-                        arrowprops={"arrowstyle": "->"})
-            ax.text(x[dst] - gap - 0.25, 0.62 * h, label, fontsize=9)
-        elif src < dst:                               # forward path
-            y = h * (0.5 if sig not in ("M_y",) else 0.25) + (0.25 * h if sig == "M_x" else 0)
-            ax.annotate("", (x[dst], y), (x[src] + w, y), arrowprops={"arrowstyle": "->"})
-            ax.text(x[src] + w + 0.08, y + 0.06, label, fontsize=8)
-        else:                                         # feedback from the plant
-            level = depth.setdefault(sig, -0.45 - 0.35 * len(depth))
-            xs = x[src] + w + 0.2
-            xd = x[dst] + w * (0.35 if sig == "psi" else 0.65)
-            ax.plot([x[src] + w, xs, xs], [0.5 * h, 0.5 * h, level], "k-", linewidth=0.8)
-            ax.plot([xs, xd], [level, level], "k-", linewidth=0.8)
-            ax.annotate("", (xd, -0.05), (xd, level), arrowprops={"arrowstyle": "->", "linewidth": 0.8})
-            ax.text(xd + 0.05, level + 0.05, label, fontsize=8)
-    ax.annotate("", (x[-1] + w + 0.8, 0.5 * h), (x[-1] + w, 0.5 * h), arrowprops={"arrowstyle": "->"})
-    ax.text(x[-1] + w + 0.3, 0.6 * h, "ψ, ω", fontsize=9)
-    ax.set_xlim(-1.6, x[-1] + w + 1.0)
-    ax.set_ylim(-0.45 - 0.35 * max(len(depth), 1) - 0.1, h + 0.3)
+    names = [b[0] for b in blocks]
+    fig = plt.figure(figsize=(7.0, 4.0))
+    ax = fig.add_axes((0.0, 0.0, 1.0, 1.0))      # the drawing's own inch grid fills the figure
+    ax.set_xlim(0, 7.0)
+    ax.set_ylim(0, 4.0)
     ax.set_axis_off()
-    ax.set_title("The PID loop (thesis Fig. 14), drawn from its python-control interconnection", fontsize=8.5)
+    box = {n: _BLOCK_BOXES[n] for n in names}
+    for n in names:
+        x0, y0, w, h = box[n]
+        ax.add_patch(FancyBboxPatch((x0, y0), w, h, boxstyle="round,pad=0.03",
+                                    fc="#fdf0d5" if n == "sensors" else "0.95", ec="k"))
+        ax.text(x0 + w / 2, y0 + h / 2, BLOCK_LABELS.get(n, n), ha="center", va="center", fontsize=9,
+                linespacing=1.5)
+    arrow = {"arrowstyle": "->", "linewidth": 0.9, "shrinkA": 0, "shrinkB": 0}
+    mid = lambda n: (box[n][0] + box[n][2] / 2, box[n][1] + box[n][3] / 2)   # noqa: E731
+
+    def line(points, label, at, ha="left", va="bottom"):
+        xs, ys = zip(*points)
+        ax.plot(xs[:-1], ys[:-1], "k-", linewidth=0.9)
+        ax.annotate("", points[-1], points[-2], arrowprops=arrow)
+        ax.text(*at, label, fontsize=9, ha=ha, va=va)
+
+    for src, dst, sig in edges:
+        d = names[dst]
+        label = _SIGNALS.get(sig, sig)
+        if src < 0:                                   # the external input, the target
+            y = mid(d)[1]
+            line([(0.02, y), (box[d][0], y)], label, (0.05, y + 0.08))
+            continue
+        s = names[src]
+        if box[s][1] > 2 and box[d][1] > 2:          # along the top row
+            y = mid(d)[1]
+            line([(box[s][0] + box[s][2], y), (box[d][0], y)], label, (box[s][0] + box[s][2] + 0.04, y + 0.06))
+        elif s == "allocation" and d == "mockup":     # down into the plant, one arrow per coil
+            x = mid(d)[0] + (0.35 if sig == "M_x" else 0.75)
+            line([(x, box[s][1]), (x, box[d][1] + box[d][3])], label, (x + 0.05, 2.0))
+        elif s == "mockup" and d == "allocation":     # ψ back up the right-hand side
+            x = 6.8
+            line([(box[s][0] + box[s][2], 0.75), (x, 0.75), (x, 3.1), (box[d][0] + box[d][2], 3.1)],
+                 label, (x + 0.04, 2.0))
+        elif s == "mockup" and d == "sensors":        # ψ, ω back along the bottom row
+            y = mid(s)[1] + (0.2 if sig == "psi" else -0.2)
+            line([(box[s][0], y), (box[d][0] + box[d][2], y)], label, (box[d][0] + box[d][2] + 0.08, y + 0.03))
+        elif s == "sensors" and d == "sum":           # ψ̂ up to the comparison
+            x = mid(d)[0]
+            line([(x, box[s][1] + box[s][3]), (x, box[d][1])], label, (x + 0.06, 2.0))
+        elif s == "sensors" and d == "pid":           # the gyro rate up to the derivative term
+            x = mid(d)[0]
+            line([(x, box[s][1] + box[s][3]), (x, box[d][1])], label, (x + 0.06, 2.0))
+        else:                                          # any other wiring: a straight arrow
+            ax.annotate("", mid(d), mid(s), arrowprops=arrow)
+    ax.text(0.5 + 0.55 / 2 + 0.12, 2.75 - 0.05, "−", fontsize=11, ha="left", va="top")
     return fig
 
 
@@ -390,7 +442,8 @@ def _plot_sweep(data, key, ylabel, title):
     for ax, group, head in ((axes[0], data.series[:half], "literally in SI, |m| ≤ 0.4 A·m²\n(unstable)"),
                             (axes[1], data.series[half:], f"gains × {format_number(data.extra['scale'], 3)}\n(unit hypothesis)")):
         for s, style in zip(group, STYLES):
-            lab = s.label.split(": ", 1)[1] + f"\nmax Re λ = {s.columns['max_real_pole'][1][0]:+.3g} 1/s"
+            gains = s.label.split(": ", 1)[1].replace("Kp", "$K_p$").replace("Ki", "$K_i$").replace("Kd", "$K_d$")
+            lab = gains + f"\nmax Re $\\lambda$ = {s.columns['max_real_pole'][1][0]:+.3g} 1/s"
             ax.plot(s.columns["t"][1], s.columns[key][1], style, label=lab, linewidth=1.1)
         ax.set_title(head, fontsize=8)
         ax.set_xlabel("t [s]", fontsize=8)
@@ -399,7 +452,7 @@ def _plot_sweep(data, key, ylabel, title):
         # Below the axes: inside, the legend covered the oscillations it describes.
         ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.18), frameon=False)
     axes[0].set_ylabel(ylabel, fontsize=8)
-    fig.suptitle(title, fontsize=8.5)
+    fig.suptitle(title.replace("Kp", "$K_p$").replace("Ki", "$K_i$").replace("Kd", "$K_d$"), fontsize=8.5)
     return fig
 
 
@@ -505,6 +558,13 @@ def compute_gain_readings(inertia, field, moment):
     return FigureData("", "", "", {}, series, extra={"marks": marks})
 
 
+#: The readings of the gains' units in words (the figure's key; the chapter's table uses the same).
+READING_WORDS = {
+    "si": "SI, as printed", "per-degree": "error in degrees", "normalised": "output / coils' maximum",
+    "per-degree-normalised": "both of these", "field-in-gauss": "field in gauss",
+    "field-in-A/m": "field as H in A/m", "torque-output": "output a torque"}
+
+
 def plot_gain_readings(data):
     """Two panels: max Re λ and the slowest mode's damping against the gain factor."""
     import matplotlib.pyplot as plt
@@ -514,7 +574,8 @@ def plot_gain_readings(data):
         c = {n: v for n, (u, v) in s.columns.items()}
         style = STYLES[k % 3]
         color = "C0" if k < 3 else "C1"
-        a1.semilogx(c["scale"], c["max_real"], style, color=color, label=s.label)
+        a1.semilogx(c["scale"], c["max_real"], style, color=color,
+                    label=s.label.replace("Kp", "$K_p$").replace("Ki", "$K_i$").replace("Kd", "$K_d$"))
         a2.semilogx(c["scale"], c["zeta"], style, color=color)
     # The readings sit close together on the log axis: number them, name them below.
     low, top = a1.get_ylim()
@@ -524,16 +585,16 @@ def plot_gain_readings(data):
             ax.axvline(scale, color="0.6", linewidth=0.7)
         a1.text(scale, top - (0.04 + 0.07 * (k % 2)) * (top - low), str(k), fontsize=7, ha="center",
                 va="center", bbox={"boxstyle": "circle,pad=0.15", "fc": "white", "ec": "0.6", "lw": 0.6})
-    names = [f"{k} {name}" for k, (name, _) in enumerate(marks, 1)]
+    names = [f"{k} {READING_WORDS.get(name, name)}" for k, (name, _) in enumerate(marks, 1)]
     readings = ";  ".join(names[:4]) + ";\n" + ";  ".join(names[4:])
     a1.axhline(0, color="k", linewidth=0.7)
-    a1.set_ylabel("largest Re λ [1/s] (> 0: unstable)")
+    a1.set_ylabel(r"largest Re $\lambda$ [1/s] (> 0: unstable)")
     a2.set_ylabel("damping ratio of the slowest mode")
     a2.axhline(0, color="k", linewidth=0.7)
     for ax in (a1, a2):
-        ax.set_xlabel("factor k on the printed gains (K_SI = k·K)")
+        ax.set_xlabel(r"factor $k$ on the printed gains ($K_\mathrm{SI} = k\,K$)")
     a1.legend(fontsize=7, loc="lower left")
-    fig.suptitle("The printed gain sets under every reading of their units\n(vertical lines: " + readings + ")",
+    fig.suptitle("The printed gain sets under every reading of their units (vertical lines):\n" + readings,
                  fontsize=8)
     return fig
 
@@ -608,26 +669,38 @@ def compute_root_locus(inertia, field, bandwidth):
 
 
 def plot_root_locus(data):
-    """Loci of the three closed-loop poles; the printed SI gain sets in the right half-plane."""
+    """Loci of the three closed-loop poles; the printed SI gain sets in the right half-plane.
+    Left: everything; right: the design's locus near the origin, enlarged."""
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(7.0, 5.0))
-    for s in data.series[:-2]:
-        ax.plot(s.columns["re"][1], s.columns["im"][1], color="C0", linewidth=1)
+    fig, (ax, zoom) = plt.subplots(1, 2, figsize=(7.0, 4.4), layout="constrained",
+                                   gridspec_kw={"width_ratios": [1.0, 1.0]})
     pr, de = data.series[-2], data.series[-1]
-    ax.plot(pr.columns["re"][1], pr.columns["im"][1], "x", color="C3", label=pr.label)
-    ax.plot(de.columns["re"][1], de.columns["im"][1], "o", mfc="none", color="C2", label="our design (triple pole)")
-    ax.axvline(0, color="k", linewidth=0.6)
-    ax.axhline(0, color="0.7", linewidth=0.6)
+    spread = max(float(np.max(np.abs(de.columns["re"][1]))), 1e-6)
+    for a in (ax, zoom):
+        for s in data.series[:-2]:
+            a.plot(s.columns["re"][1], s.columns["im"][1], color="C0", linewidth=1)
+        a.plot(pr.columns["re"][1], pr.columns["im"][1], "x", color="C3", label="printed gain sets, in SI")
+        a.plot(de.columns["re"][1], de.columns["im"][1], "o", mfc="none", color="C2",
+               label="our design (triple pole)")
+        a.axvline(0, color="k", linewidth=0.6)
+        a.axhline(0, color="0.7", linewidth=0.6)
+        a.set_xlabel("Re $s$ [1/s]")
+        a.tick_params(labelsize=8)
     ax.set_xlim(-0.4, 0.2)
     ax.set_ylim(-0.3, 0.3)
-    ax.set_xlabel("Re s [1/s]")
-    ax.set_ylabel("Im s [1/s]")
+    ax.set_ylabel("Im $s$ [1/s]")
+    # The design's locus spans about its own pole's distance from the origin.
+    zoom.set_xlim(-1.6 * spread, 0.4 * spread)
+    zoom.set_ylim(-spread, spread)
+    ax.indicate_inset_zoom(zoom, edgecolor="0.4")
+    ax.set_title("all poles", fontsize=9)
+    zoom.set_title("the design's locus, enlarged", fontsize=9)
+    ax.legend(fontsize=8, loc="lower left")
     kp, ki, kd = data.extra["gains"]
-    ax.set_title(f"Root locus of k·C(s)·B0/(J s²), Kp = {kp:.3g}, Ki = {ki:.3g}, Kd = {kd:.3g}\n"
+    fig.suptitle(rf"Root locus of $k\,C(s)\,B_0/(J s^2)$: $K_p$ = {kp:.3g}, $K_i$ = {ki:.3g}, $K_d$ = {kd:.3g};\n"
                  f"lower gain margin {data.extra['gm']:.3f} (= 1/9), phase margin {data.extra['pm']:.1f}°",
                  fontsize=9)
-    ax.legend(fontsize=8, loc="lower left")
     return fig
 
 

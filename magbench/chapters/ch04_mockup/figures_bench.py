@@ -149,12 +149,12 @@ def plot_trace(data):
         a1.text(0.99, 0.03, f"on no figure (target neither 60° nor 120°): {names}",
                 transform=a1.transAxes, ha="right", va="bottom", fontsize=7, color="C3", wrap=True)
     elif not e["n_logs"]:
-        a1.text(0.99, 0.03, "no bench log in magbench/data/bench/: the thesis's traces are unpublished",
+        a1.text(0.99, 0.03, "no bench log: the thesis's traces are unpublished",
                 transform=a1.transAxes, ha="right", va="bottom", fontsize=8, color="0.3")
     a1.set_ylabel("ψ, angle from field to coil 1 [°]", fontsize=8)
     # Above the axes: inside, the legend covered the Monte Carlo band.
     a1.legend(fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=2, frameon=False)
-    fig.suptitle(f"Predicted bench run, ψ_des = {target:.0f}° (thesis Fig. "
+    fig.suptitle(rf"The bench as designed, $\psi_\mathrm{{des}}$ = {target:.0f}° (thesis Fig. "
                  f"{19 if abs(target - 60.0) < 1e-6 else 20 if abs(target - 120.0) < 1e-6 else '19-20'})",
                  fontsize=8.5)
     a2.plot(c["time"], c["moment_1"], label="coil 1")
@@ -199,13 +199,14 @@ def plot_montecarlo(data):
     fig, ax = plt.subplots(figsize=(7.0, 4.2))
     for s, v in zip(data.series, values):
         ax.hist(v, bins=edges, histtype="step", linewidth=1.4,
-                label=f"{s.label}: median {np.median(v):.3g}°, 99 % ≤ {np.percentile(v, 99):.3g}°")
+                label=s.label.replace("ψ_des", r"$\psi_\mathrm{des}$")
+                + f": median {np.median(v):.3g}°, 99 % ≤ {np.percentile(v, 99):.3g}°")
     ax.axvline(measured, color="C3", linewidth=2, label=f"thesis: {measured:.0f}° (metric not stated)")
     ax.set_xscale("log")
-    ax.set_xlabel("final error band max |ψ − ψ_des| over the last window [deg]")
+    ax.set_xlabel(r"final error band max $|\psi - \psi_\mathrm{des}|$ over the last window [deg]")
     ax.set_ylabel("members")
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(0.42, 0.98))
-    ax.set_title(f"Monte Carlo of the bench: {len(values[0])} members per target")
+    ax.set_title(f"The bench's noise floor: Monte Carlo, {len(values[0])} members per target")
     return fig
 
 

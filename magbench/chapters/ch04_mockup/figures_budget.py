@@ -30,7 +30,7 @@ LABELS = {
     "heading_ripple": "field non-uniformity over the swing", "coil_misalignment_1": "coil 1 axis misalignment",
     "coil_misalignment_2": "coil 2 axis misalignment", "coil_field_coupling": "coils' field at magnetometer",
     "thread_stiffness": "thread torsion stiffness", "thread_neutral_angle": "thread neutral angle",
-    "filter_coefficient": "filter coefficient A", "sample_interval": "loop period",
+    "filter_coefficient": "filter coefficient $A_f$", "sample_interval": "loop period $\\Delta t$",
     "pwm_levels": "PWM resolution", "moment_scale_1": "coil 1 moment", "moment_scale_2": "coil 2 moment",
     "release_angle": "release angle", "release_rate": "release rate",
 }
@@ -89,7 +89,7 @@ def plot_oat(data):
     y = np.arange(len(names))
     for k, (target, vals) in enumerate(sorted(per_target.items())):
         ax.barh(y + (k - 0.5) * 0.38, [vals[n] for n in names], height=0.38, color=f"C{k}",
-                label=f"ψ_des = {target}°")
+                label=rf"$\psi_\mathrm{{des}}$ = {target}°")
     ax.axvline(measured, color="C3", linewidth=2, label=f"thesis: {measured:.0f}°")
     ax.set_yticks(y, [f"{LABELS.get(n, n)} ({data.extra['sources'][n][0]})" for n in names], fontsize=7.5)
     ax.set_xscale("log")
@@ -147,9 +147,9 @@ def plot_sobol(data):
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.0, 4.0), layout="constrained",
                                  gridspec_kw={"width_ratios": [1.15, 1.0]})
     y = np.arange(len(names))
-    a1.barh(y + 0.2, cols["S1"][order], 0.38, xerr=cols["S1_conf"][order], color="C0", label="first order S1",
+    a1.barh(y + 0.2, cols["S1"][order], 0.38, xerr=cols["S1_conf"][order], color="C0", label="first order $S_1$",
             error_kw={"linewidth": 0.8})
-    a1.barh(y - 0.2, cols["ST"][order], 0.38, xerr=cols["ST_conf"][order], color="C1", label="total ST",
+    a1.barh(y - 0.2, cols["ST"][order], 0.38, xerr=cols["ST_conf"][order], color="C1", label="total $S_T$",
             error_kw={"linewidth": 0.8})
     a1.set_yticks(y, [LABELS.get(n, n) for n in names], fontsize=7.5)
     a1.set_xlabel("Sobol index of the error band (95 % interval)", fontsize=8)
@@ -165,7 +165,7 @@ def plot_sobol(data):
                 label=f"{s.label} ({v.size})")
     a2.axvline(measured, color="C3", linewidth=2, label=f"thesis: {measured:.0f}°")
     a2.set_xscale("log")
-    a2.set_xlabel("final error band, ψ_des = 60° [deg]", fontsize=8)
+    a2.set_xlabel(r"final error band, $\psi_\mathrm{des}$ = 60° [deg]", fontsize=8)
     a2.set_ylabel("runs", fontsize=8)
     a2.tick_params(labelsize=7.5)
     a2.legend(fontsize=7, loc="upper left", frameon=False)

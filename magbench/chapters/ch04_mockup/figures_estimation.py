@@ -112,7 +112,7 @@ def plot_filter_alpha(data):
     ax1.plot(truth["time"][1], np.degrees(truth["angle"][1]), "k", lw=1.2, label="true angle")
     for s, color in zip(data.series[1:3], ("C0", "C3")):
         ax1.plot(s.columns["time"][1], np.degrees(s.columns["estimate"][1]), color=color, lw=1,
-                 label=f"eq. (39), {s.label}")
+                 label="eq. (39), " + s.label.replace("A_f", "$A_f$"))
     ax1.set_xlabel("time [s]")
     ax1.set_ylabel("roll angle [°]")
     ax1.legend(fontsize=7, loc="upper right")
@@ -120,19 +120,20 @@ def plot_filter_alpha(data):
     alpha = c["alpha"][1]
     ax2.semilogy(alpha, np.degrees(c["rms_error"][1]), "k", lw=1.5, label="simulated RMS error")
     ax2.semilogy(alpha, np.degrees(c["closed_form_rms"][1]), "C1--", lw=1.2, label="closed form")
-    ax2.semilogy(alpha, np.degrees(c["bias_term"][1]), "C3:", label="gyro bias × τ")
+    ax2.semilogy(alpha, np.degrees(c["bias_term"][1]), "C3:", label=r"gyro offset × $\tau_f$")
     ax2.semilogy(alpha, np.degrees(c["accel_noise_term"][1]), "C0:", label="accelerometer noise")
     ax2.semilogy(alpha, np.degrees(c["gyro_noise_term"][1]), "C2:", label="gyro noise")
     lo, hi = data.extra["alpha_range"]
     ax2.axvspan(lo, hi, color="0.9", label="thesis's range")
-    ax2.set_xlabel("filter coefficient A_f [-]")
+    ax2.set_xlabel("filter coefficient $A_f$ [-]")
     ax2.set_ylabel("error [°]")
     ax2.legend(fontsize=7, loc="lower left")
     top = ax2.secondary_xaxis("top", functions=(
         lambda a: a * data.parameters["sample_interval"] / np.clip(1 - a, 1e-9, None),
         lambda tau: tau / (tau + data.parameters["sample_interval"])))
-    top.set_xlabel("time constant τ_f = A_f Δt/(1 − A_f) [s]")
-    top.set_xticks([0.05, 0.1, 0.2, 0.5, 1])
+    top.set_xlabel(r"time constant $\tau_f = A_f\,\Delta t/(1 - A_f)$ [s]")
+    # τ_f grows as 1/(1 − A_f): ticks a factor of 2–2.5 apart stay apart on the A_f axis.
+    top.set_xticks([0.05, 0.1, 0.2, 0.5], ["0.05", "0.1", "0.2", "0.5"])
     return fig
 
 
@@ -151,7 +152,7 @@ def _alpha_parameters():
     }
 
 
-register(FigureSpec("ch04-filter-alpha", "Eq. (39): error and time constant against the coefficient A",
+register(FigureSpec("ch04-filter-alpha", "Eq. (39): error and time constant against the coefficient A_f",
                     SOURCE, compute_filter_alpha, plot_filter_alpha, _alpha_parameters))
 
 
@@ -310,8 +311,9 @@ def plot_broad_tilt(data):
     c = data.series[0].columns
     t = c["time"][1]
     colors = {"accelerometer only": "C1", "gyro only": "C3", "complementary_tilt": "C0"}
+    shown = {"complementary_tilt": "3-D complementary filter"}
     for label, color in colors.items():
-        ax1.plot(t, np.degrees(c[label][1]), color=color, lw=0.8, label=label)
+        ax1.plot(t, np.degrees(c[label][1]), color=color, lw=0.8, label=shown.get(label, label))
     moving = c["movement"][1] > 0.5
     ax1.fill_between(t, 0, 1, where=moving, color="0.92", transform=ax1.get_xaxis_transform(),
                      label="movement phase (scored)")
@@ -326,7 +328,7 @@ def plot_broad_tilt(data):
     x = np.arange(len(names))
     for k, (key, label) in enumerate((("accelerometer", "accelerometer only"), ("gyro", "gyro only"),
                                       ("complementary", "complementary_tilt"))):
-        ax2.bar(x + (k - 1) * 0.27, np.degrees(r[key][1]), 0.27, color=colors[label], label=label)
+        ax2.bar(x + (k - 1) * 0.27, np.degrees(r[key][1]), 0.27, color=colors[label], label=shown.get(label, label))
     ax2.set_yscale("log")
     ax2.set_xticks(x, [n[:2] for n in names])
     ax2.set_xlabel("BROAD trial")
@@ -371,17 +373,17 @@ def plot_tau_sensitivity(data):
         ax.loglog(c["tau"][1], np.degrees(c["order_2"][1]), "o-", color=color, ms=2.5, lw=1)
         ax.loglog(c["tau"][1], np.degrees(c["order_1"][1]), "--", color=color, lw=0.8)
     ax.axvline(data.extra["default_tau"], color="0.3", lw=1, ls=":")
-    ax.set_xlabel("accelerometer time constant τ [s]")
+    ax.set_xlabel(r"accelerometer time constant $\tau_f$ [s]")
     ax.set_ylabel("inclination RMSE [°]")
     ax.set_title(f"one colour per BROAD trial ({len(data.series)} trials)", fontsize=8)
     # One legend entry per line style: thirty per-trial entries covered the plot.
     ax.legend([Line2D([], [], color="k", marker="o", ms=2.5, lw=1), Line2D([], [], color="k", ls="--", lw=0.8),
                Line2D([], [], color="0.3", ls=":", lw=1)],
-              ["second-order low-pass", "first-order low-pass", "default τ"], fontsize=7, loc="upper right")
+              ["second-order low-pass", "first-order low-pass", r"default $\tau_f$"], fontsize=7, loc="upper right")
     return fig
 
 
-register(FigureSpec("ch04-broad-tilt", "complementary_tilt on BROAD: inclination error and RMSE",
+register(FigureSpec("ch04-broad-tilt", "The 3-D complementary filter on BROAD: inclination error and RMSE",
                     BROAD_SOURCE, compute_broad_tilt, plot_broad_tilt,
                     {"tau": FigureParameter(3.0, "s", "accelerometer time constant (default)"),
                      "order": FigureParameter(2.0, "1", "low-pass order (1 or 2)")}))
@@ -455,16 +457,15 @@ def plot_offline_tilt(data):
     r = data.series[0].columns
     names = data.extra["trials"]
     x = np.arange(len(names))
-    styles = (("complementary", "complementary_tilt (causal)", "C0", "o", "none"),
+    styles = (("complementary", "3-D complementary filter (causal)", "C0", "o", "none"),
               ("vqf", "VQF (causal)", "C2", "s", "none"),
               ("vqf_offline", "VQF offline", "C1", "D", "none"),
-              ("offline", "offline_tilt", "C3", "o", "C3"))
+              ("offline", "whole-record smoother", "C3", "o", "C3"))
     for k, (key, label, color, marker, face) in enumerate(styles):
         values = np.degrees(r[key][1])
         if np.all(np.isnan(values)):
             continue
         ax1.plot(x + (k - 1.5) * 0.12, values, marker, color=color, mfc=face, ms=4.5, label=label)
-    ax1.axhline(1.0, color="0.4", lw=0.8, ls="--", label="target per trial (1°)")
     ax1.set_xticks(x, [n[:2] for n in names])
     ax1.set_xlabel("BROAD trial")
     ax1.set_ylabel("inclination RMSE, movement phases [°]")
@@ -475,20 +476,19 @@ def plot_offline_tilt(data):
     per_trial = np.degrees(np.array([sweep[f"trial_{i}"][1] for i in range(len(names))]))
     ax2.plot(taus, per_trial.T, color="0.8", lw=0.7)
     ax2.plot(taus, per_trial.mean(axis=0), "o-", color="C3", lw=1.5, ms=4, label="mean over trials")
-    ax2.axhline(0.53, color="0.4", lw=0.8, ls="--", label="target for the mean (0.53°)")
     default = data.parameters.get("tau", 3.0)
-    ax2.axvspan(0.5 * default, 1.5 * default, color="0.93", label="default τ ±50 %")
+    ax2.axvspan(0.5 * default, 1.5 * default, color="0.93", label=r"default $\tau_f$ ±50 %")
     ax2.set_xscale("log")
     ax2.set_xticks(taus, [f"{t:g}" for t in taus])
     ax2.minorticks_off()
-    ax2.set_xlabel("offline_tilt time constant τ [s]")
+    ax2.set_xlabel(r"smoother time constant $\tau_f$ [s]")
     ax2.set_ylabel("inclination RMSE [°]")
     ax2.set_ylim(0, None)
     ax2.legend(fontsize=7, loc="upper right")
     return fig
 
 
-register(FigureSpec("ch04-offline-tilt", "offline_tilt on BROAD beside the causal filters and VQF",
+register(FigureSpec("ch04-offline-tilt", "The whole-record smoother on BROAD beside the causal filters and VQF",
                     BROAD_SOURCE, compute_offline_tilt, plot_offline_tilt,
                     {"tau": FigureParameter(3.0, "s", "offline_tilt's time constant (default)")}))
 
@@ -555,7 +555,7 @@ def plot_offline_timing(data):
     return fig
 
 
-register(FigureSpec("ch04-offline-timing", "What limits offline_tilt on BROAD: the timing of the comparison",
+register(FigureSpec("ch04-offline-timing", "What limits the whole-record smoother on BROAD: the timing of the comparison",
                     BROAD_SOURCE, compute_offline_timing, plot_offline_timing,
                     {"earliest_shift": FigureParameter(-1.0, "1", "first shift [samples]"),
                      "latest_shift": FigureParameter(1.5, "1", "last shift [samples]"),
