@@ -14,7 +14,7 @@ from ._format import format_number
 
 __all__ = ["provenance", "figure", "figure_png", "glue_number", "glue_text", "glue_quantity",
            "format_number", "format_quantity", "format_percent", "display_unit", "printed_text", "printed_quantity",
-           "format_with_uncertainty", "format_range", "linked", "compared_value", "row_verdict", "source_value",
+           "format_with_uncertainty", "format_range", "linked", "written_quantity", "compared_value", "row_verdict", "source_value",
            "table", "compare_table", "checks_table", "benchmark_result", "concordance_entries", "reader_title",
            "FIGURE_DPI", "CSS_PIXELS_PER_INCH"]
 
@@ -129,9 +129,13 @@ def display_unit(unit):
     'Ω·kg/m²'
     >>> display_unit("kg/(N m)")
     'kg/(N·m)'
+    >>> display_unit("uT per A m^2")
+    'µT per A·m²'
     """
     if unit in _UNITS:
         return _UNITS[unit]
+    if " per " in unit:
+        return " per ".join(display_unit(part) for part in unit.split(" per "))
     text = re.sub(r"\^(-?\d+)", lambda m: m.group(1).translate(_SUPERSCRIPTS), unit)
     text = re.sub(r"\bohm\b", "Ω", text).replace("uT", "µT")
     return re.sub(r"(?<=\S) (?=\S)", "·", text)
@@ -306,7 +310,28 @@ def compared_value(row):
         return format_with_uncertainty(row.measured, row.uncertainty, row.unit)
     if kind in ("reference", "consistency"):
         return format_quantity(row.measured, row.unit, 4)
-    return printed_quantity(row.measured, row.tolerance, row.unit)
+    return written_quantity(row.measured, row.tolerance, row.unit)
+
+
+def written_quantity(value, tolerance, unit=""):
+    """A value a person or a source wrote down: with its written digits when the tolerance
+    is half a unit of them (:func:`printed_quantity`), else with at most four significant
+    digits and no trailing zeros (262 A/m, not 262.0 A/m).
+
+    >>> written_quantity(262.0, 12.2, "A/m")
+    '262 A/m'
+    >>> written_quantity(0.13, 0.0005, "Oe")
+    '0.130 Oe'
+    """
+    text = printed_text(value, tolerance)
+    if printed_text(value, 0.0) == text:        # no digit information in the tolerance
+        text = f"{float(value):.4g}".replace("-", "−")
+        if "e" in text:
+            text = format_number(value, 4)
+    unit = display_unit(unit)
+    if not unit:
+        return text
+    return f"{text}{unit}" if unit in ("°", "%") else f"{text} {unit}"
 
 
 def row_verdict(row):
@@ -386,7 +411,7 @@ def source_value(check):
     """The source's side of a check: the printed value with its printed digits, or, for
     a value evaluated from a printed formula, that value marked as ours."""
     if getattr(check, "basis", "") == "evaluated":
-        return f"{format_quantity(check.printed, check.unit, 4)} (evaluated from its formula)"
+        return f"{written_quantity(check.printed, 0.0, check.unit)} (evaluated from its formula)"
     return printed_quantity(check.printed, check.tolerance, check.unit)
 
 
