@@ -511,7 +511,8 @@ def parameter_table(chapter, namespace, *, label=None):
     """The chapter's inputs as a reader-facing table: name, value used, unit, provenance.
 
     ``namespace`` holds the values the page actually runs with (the page's globals after
-    its ``parameters`` cell, so papermill's ``-p`` and ``$MAGBENCH_PARAMS`` show). Each
+    its ``parameters`` cell, so papermill's ``-p`` and ``$MAGBENCH_PARAMS`` show); the
+    chapter's inputs the page does not define are left out. Each
     value is shown in the unit its source prints it in; the provenance column says whose
     value it is: the source's (with its section), external (a datasheet, IGRF, …) or ours
     (a modelling choice; the chapter's text gives the reason). A value as the parameter
@@ -527,8 +528,10 @@ def parameter_table(chapter, namespace, *, label=None):
     params = load_parameter_set(spec.source)
     rows = []
     for name in spec.inputs:
+        if name not in namespace:       # an input of the chapter that this page does not use
+            continue
         p = params[name]
-        used = float(namespace[name]) if name in namespace else p.value_si
+        used = float(namespace[name])
         if math.isclose(used, p.value_si, rel_tol=1e-12, abs_tol=0.0):
             value = f"{p.value:g}".replace("-", "−").replace("e+", "·10^").replace("e", "·10^")
             value = re.sub(r"\^(−?\d+)", lambda m: m.group(1).lstrip("0").translate(_SUPERSCRIPTS), value)
