@@ -134,14 +134,19 @@ def _cmd_compare(args):
     if args.json:
         print(json.dumps([r.as_dict() for r in rows], indent=1))
         return 0
-    header = ("id", "measured", "model", "difference", "tolerance", "unit", "verdict")
-    table = [header] + [(r.id, f"{r.measured:.6g}", f"{r.model:.6g}", f"{r.difference:+.3g}",
-                         f"{r.tolerance:.3g}", r.unit, r.verdict) for r in rows]
+    header = ("id", "kind", "measured", "model", "difference", "tolerance", "unit", "verdict")
+    table = [header] + [(r.id, r.kind, f"{r.measured:.6g}", f"{r.model:.6g}", f"{r.difference:+.3g}",
+                         f"{r.tolerance:.3g}", r.unit, r.verdict if r.counted else "(consistency)")
+                        for r in rows]
     widths = [max(len(row[k]) for row in table) for k in range(len(header))]
     for row in table:
         print("  ".join(cell.ljust(w) for cell, w in zip(row, widths)).rstrip())
-    agree = sum(r.verdict == "agrees" for r in rows)
-    print(f"\n{len(rows)} rows: {agree} agree, {len(rows) - agree} disagree")
+    counted = [r for r in rows if r.counted]
+    agree = sum(r.agrees for r in counted)
+    by_kind = ", ".join(f"{k}: {sum(r.agrees for r in counted if r.kind == k)}/{sum(r.kind == k for r in counted)}"
+                        for k in dict.fromkeys(r.kind for r in counted))
+    print(f"\n{len(rows)} rows, {len(counted)} counted: {agree} agree, {len(counted) - agree} disagree "
+          f"(agree/rows by kind: {by_kind}); {len(rows) - len(counted)} consistency checks, not counted")
     return 0
 
 

@@ -135,8 +135,8 @@ class Comparison:
 
     def as_dict(self):
         """The row as a JSON-ready dict with the public keys of ``magbench compare --json``."""
-        return {key: getattr(self, key) for key in ("id", "quantity", "source", "measured", "uncertainty", "unit",
-                                                     "model", "difference", "tolerance", "verdict")}
+        return {key: getattr(self, key) for key in ("id", "kind", "quantity", "source", "measured", "uncertainty",
+                                                     "unit", "model", "difference", "tolerance", "verdict")}
 
 
 #: The former name of :class:`Comparison` for model-vs-measurement rows.

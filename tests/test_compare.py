@@ -16,7 +16,7 @@ def test_make_row_verdict_and_scaling():
 
 def test_geomagnetic_rows_have_the_public_keys():
     rows = ch01_earth_field.geomagnetic_rows(epochs=(1960.0, 2016.0))
-    keys = {"id", "quantity", "source", "measured", "uncertainty", "unit", "model",
+    keys = {"id", "kind", "quantity", "source", "measured", "uncertainty", "unit", "model",
             "difference", "tolerance", "verdict"}
     for row in rows:
         assert set(row.as_dict()) == keys

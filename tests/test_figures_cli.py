@@ -75,7 +75,12 @@ def test_cli_figures_and_compare(capsys):
     assert "thesis-fig01" in capsys.readouterr().out
     assert main(["compare", "--json"]) == 0
     rows = json.loads(capsys.readouterr().out)
-    assert rows and {"id", "verdict", "tolerance"} <= set(rows[0])
+    assert rows and {"id", "kind", "verdict", "tolerance"} <= set(rows[0])
+    from magbench.compare import ROW_KINDS
+    assert {r["kind"] for r in rows} <= set(ROW_KINDS) and "consistency" in {r["kind"] for r in rows}
+    assert main(["compare"]) == 0
+    summary = capsys.readouterr().out.strip().splitlines()[-1]
+    assert "counted" in summary and "consistency checks, not counted" in summary
 
 
 def test_listing_figures_reads_no_file():
