@@ -301,7 +301,7 @@ def compute_gain_sweep(**params):
 
 
 def plot_gain_sweep(data):
-    fig, (left, right) = _new_figure(3.4, ncols=2, width=8.0)
+    fig, (left, right) = _new_figure(3.4, ncols=2, width=7.0)
     for s, style in zip(data.series[:2], ("C0o-", "C1s--")):
         left.semilogx(s.columns["gain_ratio"][1], 1e3 * s.columns["decay_rate"][1], style,
                       label=s.label.split(":")[0])
@@ -309,10 +309,10 @@ def plot_gain_sweep(data):
         right.semilogx(s.columns["gain_ratio"][1], s.columns["duration"][1], style, label=s.label.split(":")[0])
     for ax in (left, right):
         ax.axvline(1.0, color="k", ls=":", lw=1)
-        ax.set_xlabel(r"$k\,/\,k^*$   ($k^* = 2\omega_0(1 + \sin i)\,J_\mathrm{min}$)")
+        ax.set_xlabel(r"gain $k\,/\,k^*$")
         ax.grid(alpha=0.3, which="both")
         ax.legend()
-    left.set_ylabel(r"decay rate of $|\boldsymbol{\omega}|$, 2 → 0.5 °/s [10$^{-3}$ 1/s]")
+    left.set_ylabel(r"decay rate of $|\boldsymbol{\omega}|$, 2 → 0.5 °/s [10$^{-3}$/s]")
     left.set_title("unsaturated: what $k^*$ optimises")
     right.set_ylabel("median time 10 → 0.5 °/s [s]")
     right.set_title("rods ±0.2 A·m² (gaps: not damped)")
