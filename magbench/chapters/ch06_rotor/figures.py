@@ -238,7 +238,7 @@ def compute_equilibrium_law(inclination, equatorial_b, orbital_rate, gain, axial
     for factor in (1.0, 2.0):
         m = rotor_equilibrium_dipole(u, inclination, equatorial_b, factor * gain, axial_momentum, orbital_rate)
         torque = np.cross(m, field)
-        series.append(Series(f"k × {factor:g}", {"u": ("deg", np.degrees(u)), "dipole": ("A m^2", m),
+        series.append(Series(f"$k$ × {factor:g}", {"u": ("deg", np.degrees(u)), "dipole": ("A m^2", m),
                                                  "torque": ("N m", torque)}))
     h = axial_momentum * np.cos(u) ** 2
     s = rotor_spin_reference(u, axial_momentum, rotor_momentum, axial_inertia)
@@ -266,7 +266,7 @@ def plot_equilibrium_law(data):
     axes[0].legend(ncols=3)
     axes[1].set_ylabel("torque [nN·m]")
     axes[1].legend(ncols=3)
-    axes[1].set_title(f"the torque does not depend on k (largest difference "
+    axes[1].set_title(f"the torque does not depend on $k$ (largest difference "
                       f"{data.extra['torque_gain_difference']:.1e} N·m)")
     r = data.series[2].columns
     axes[2].plot(r["u"][1], r["axial_momentum_ratio"][1], "C0", label=r"$K_1/K_0 = \cos^2 u$")
