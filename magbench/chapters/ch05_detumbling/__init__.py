@@ -93,7 +93,8 @@ def peer_rows(params=None):
             note=(f"model: {held.size} members, continuous B-dot, exact Ḃ, a turning tilted dipole, 0.5 °/s held "
                   f"{env['dwell']:.0f} s; tolerance: twice the spread of a {n}-run {stat} drawn from the model's runs. "
                   "The README describes runs with magnetometer noise and bias, a Ḃ filter, 10 % blanking and "
-                  "IGRF-14, none of which the model has; that they explain the difference is not tested")))
+                  "IGRF-14, none of which the model has; blanking alone explains part of the difference (the "
+                  "chapter runs it), that the others explain the rest is not tested")))
     first = env["first"]
     mean_square = study.mean_square_field(env["orbit"])
     j = max(p["inertia_y"], p["inertia_z"])

@@ -218,17 +218,24 @@ def duty_study(params, estimators=("model",), rates=None, members=None, duration
 
 
 @lru_cache(maxsize=4)
-def envelope_distribution(params, members=None, step=None, dwell=30.0):
+def envelope_distribution(params, members=None, step=None, dwell=30.0, blanking=None):
     """The 3U envelope (Cp557/detumble): members × duration s, continuous B-dot with
     k = 5e4 A·m²·s/T, ±0.2 A·m², gravity gradient, random attitude, rate axis, rate
     magnitude (uniform in the envelope) and orbit phase. Returns the run's drawn rates
-    and detumble times (first crossing, and held for ``dwell``) [s]."""
+    and detumble times (first crossing, and held for ``dwell``) [s].
+
+    ``blanking`` = (on, off) [s] blanks the coils ``off`` s in every ``on + off`` (the
+    duty mode with exact Ḃ while on): one of the effects Cp557's README lists, the only one
+    the library models; the same members as without it."""
     p = dict(params)
     orbit = envelope_orbit(p)
+    duty = {} if blanking is None else dict(mode="duty", estimator="model", on_time=float(blanking[0]),
+                                             off_time=float(blanking[1]))
     run = detumble_monte_carlo(inertia(p), orbit, members=int(p["envelope_members"] if members is None else members),
                                seed=int(p["envelope_seed"]), duration=p["envelope_duration"],
                                rate_range=(p["envelope_rate_low"], p["envelope_rate_high"]), gain=p["envelope_gain"],
-                               max_dipole=p["max_dipole"], step=p["integration_step"] if step is None else step)
+                               max_dipole=p["max_dipole"], step=p["integration_step"] if step is None else step,
+                               **duty)
     threshold = p["detumble_threshold"]
     return {"initial_rate": np.linalg.norm(run.inputs["draws"]["rate"], axis=-1),
             "first": detumble_time(run.time, run.rate, threshold),
