@@ -81,7 +81,7 @@ def compute_fig1(**params):
     ticks = study.rate_grid(p["fig2_rate_min"], p["fig2_rate_max"], p["fig2_rate_step"])
     default = study.fig1_gains(p["max_dipole"], p["initial_rate_x"], p["initial_rate_y"], b_max)
     return FigureData("", "", "", {}, [
-        Series("k (ω₀ = (0.1, w, w) °/s)", {"initial_rate": ("deg/s", w / DEG),
+        Series(r"$k$ ($\boldsymbol{\omega}_\mathrm{i}$ = (0.1, w, w) °/s)", {"initial_rate": ("deg/s", w / DEG),
                                               "gain": ("A m^2 s/T", study.fig1_gains(p["max_dipole"],
                                                                                       p["initial_rate_x"], w, b_max))}),
         Series("Fig. 2's rates", {"initial_rate": ("deg/s", ticks / DEG),
@@ -99,9 +99,9 @@ def plot_fig1(data):
     ax.plot(*(ticks.columns[c][1] for c in ("initial_rate", "gain")), "C0o", ms=4, label=ticks.label)
     ax.plot(*(default.columns[c][1] for c in ("initial_rate", "gain")), "C3s", ms=6, label=default.label)
     ax.set_xlabel("initial rate w about y and z [°/s]")
-    ax.set_ylabel("k [A·m²·s/T]")
-    ax.set_title(f"Reconstruction of SS Fig. 1: k for {data.extra['max_dipole']:g} A·m² at B_max = "
-                 f"{data.extra['b_max'] * 1e6:.1f} µT")
+    ax.set_ylabel(r"$k$ [A·m²·s/T]")
+    ax.set_title(f"Reconstruction of SamSat-218D Fig. 1: $k$ for {data.extra['max_dipole']:g} A·m² at "
+                 f"$B_\\mathrm{{max}}$ = {data.extra['b_max'] * 1e6:.1f} µT")
     ax.legend()
     ax.grid(alpha=0.3)
     return fig
@@ -133,9 +133,9 @@ def plot_fig2(data):
     fig, ax = _new_figure(3.3)
     for s, style in zip(data.series, ("C0o-", "C1s--")):
         ax.plot(s.columns["initial_rate"][1], np.asarray(s.columns["duration"][1]) / 3600.0, style, label=s.label)
-    ax.set_xlabel("initial rate w, ω₀ = (0.1, w, w) [°/s]")
+    ax.set_xlabel(r"initial rate w, $\boldsymbol{\omega}_\mathrm{i}$ = (0.1, w, w) [°/s]")
     ax.set_ylabel("time to 0.5 °/s [h]")
-    ax.set_title(f"Reconstruction of SS Fig. 2: median of {data.extra['members']} attitudes, k = "
+    ax.set_title(f"Reconstruction of SamSat-218D Fig. 2: median of {data.extra['members']} attitudes, $k$ = "
                  f"{data.extra['gain']:.0f} A·m²·s/T, estimator '{data.extra['estimator']}'")
     ax.legend()
     ax.grid(alpha=0.3)
@@ -151,9 +151,10 @@ def compute_rate_decay(**params):
     for name, label in (("continuous", "continuous"), ("model", "discrete (16 s on / 1 s off), 'model'")):
         t = d["time"][name]
         series.append(Series(label, {"time": ("s", t), "rate": ("deg/s", d["rate"][name][index, 0] / DEG)}))
+    low, mean, high = study.field_direction_rate(study.samsat_orbit(p))
     return FigureData("", "", "", {}, series, extra={"threshold": p["detumble_threshold"] / DEG,
                                                       "w": d["rates"][index] / DEG,
-                                                      "two_n": 2 * study.samsat_orbit(p).mean_motion / DEG})
+                                                      "field_rate": (low / DEG, mean / DEG, high / DEG)})
 
 
 def plot_rate_decay(data):
@@ -161,10 +162,13 @@ def plot_rate_decay(data):
     for s, style in zip(data.series, ("C0-", "C1-")):
         ax.semilogy(s.columns["time"][1] / 3600.0, s.columns["rate"][1], style, lw=1, label=s.label)
     ax.axhline(data.extra["threshold"], color="k", ls=":", lw=1, label="0.5 °/s (damped)")
-    ax.axhline(data.extra["two_n"], color="0.5", ls="--", lw=1, label="2n (B-dot's end state)")
+    low, mean, high = data.extra["field_rate"]
+    ax.axhspan(low, high, color="0.5", alpha=0.25, lw=0,
+               label="rate of the field's direction (B-dot's end state)")
+    ax.axhline(mean, color="0.5", ls="--", lw=1, label=r"its mean, $\approx 2\omega_0$")
     ax.set_xlabel("t [h]")
-    ax.set_ylabel("|ω| [°/s]")
-    ax.set_title(f"Rate decay from ω₀ = (0.1, {data.extra['w']:g}, {data.extra['w']:g}) °/s, one attitude")
+    ax.set_ylabel(r"$|\boldsymbol{\omega}|$ [°/s]")
+    ax.set_title(f"Rate decay from $\\boldsymbol{{\\omega}}_\\mathrm{{i}}$ = (0.1, {data.extra['w']:g}, {data.extra['w']:g}) °/s, one attitude")
     ax.legend()
     ax.grid(alpha=0.3, which="both")
     return fig
@@ -187,11 +191,12 @@ def plot_duty_estimators(data):
     for s, style in zip(data.series, ("C1s-", "C2^--", "C4v:")):
         ax.plot(s.columns["initial_rate"][1], s.columns["ratio"][1], style, label=f"discrete, '{s.label}'")
     ax.axvline(data.extra["held_limit_w"], color="k", ls=":", lw=1,
-               label=f"|ω₀| = π/(T_on + T_off) = {data.extra['held_limit']:.1f} °/s")
+               label=f"$|\\boldsymbol{{\\omega}}_\\mathrm{{i}}| = \\pi/(T_\\mathrm{{on}} + T_\\mathrm{{off}})$ = "
+                     f"{data.extra['held_limit']:.1f} °/s")
     ax.axhline(16 / 17, color="0.5", ls="--", lw=1, label="16/17 (the on-time fraction)")
-    ax.set_xlabel("initial rate w, ω₀ = (0.1, w, w) [°/s]")
+    ax.set_xlabel(r"initial rate w, $\boldsymbol{\omega}_\mathrm{i}$ = (0.1, w, w) [°/s]")
     ax.axhline(0.0, color="k", lw=0.8)
-    ax.set_ylabel("drop of |ω|, discrete / continuous")
+    ax.set_ylabel(r"drop of $|\boldsymbol{\omega}|$, discrete / continuous [1]")
     ax.set_title(f"Damping kept by each Ḃ estimator over the first {data.extra['span']:.0f} s (below 0: spin-up)")
     ax.legend(loc="lower left")
     ax.grid(alpha=0.3)
@@ -207,6 +212,7 @@ def compute_distribution(**params):
     key = _key(**params)
     p = dict(key)
     env = study.envelope_distribution(key)
+    blanked = study.envelope_distribution(key, blanking=(9.0, 1.0))["held"]
     estimate = study.kovalenko_650_time(max(p["inertia_y"], p["inertia_z"]), p["envelope_gain"],
                                         study.mean_square_field(env["orbit"]), env["initial_rate"],
                                         p["detumble_threshold"])
@@ -216,28 +222,31 @@ def compute_distribution(**params):
                                                           / DEG)}),
         Series("Kovalenko (6.50)", {"detumble_time": ("s", estimate),
                                     "initial_rate": ("deg/s", env["initial_rate"] / DEG)}),
-        Series("Cp557/detumble holdout", {"median": ("s", [CP557["median"]]), "p95": ("s", [CP557["p95"]])}),
+        Series("Cp557/detumble README", {"median": ("s", [CP557["median"]]), "p95": ("s", [CP557["p95"]])}),
+        Series("simulated, coils blanked 10 %", {"median": ("s", [float(np.nanmedian(blanked))])}),
     ], extra={"members": env["held"].size})
 
 
 def plot_distribution(data):
     fig, (ax, bx) = _new_figure(3.3, 2)
-    sim, kov, cp = data.series
+    sim, kov, cp, blank = data.series
     t = np.sort(sim.columns["detumble_time"][1])
     ax.hist(t, bins=40, color="C0", alpha=0.7, label=sim.label)
     for value, style, label in ((np.median(t), "C0-", "median"), (np.percentile(t, 95), "C0--", "p95"),
-                                (cp.columns["median"][1][0], "C3-", "Cp557 median"),
+                                (blank.columns["median"][1][0], "C1-", "median, coils blanked 10 %"),
+                (cp.columns["median"][1][0], "C3-", "Cp557 median"),
                                 (cp.columns["p95"][1][0], "C3--", "Cp557 p95"),
                                 (np.median(kov.columns["detumble_time"][1]), "C2:", "Kovalenko (6.50) median")):
         ax.axvline(value, color=style[:2], ls=style[2:], lw=1.2, label=label)
     ax.set_xlabel("time to 0.5 °/s [s]")
     ax.set_ylabel("members")
     ax.set_title(f"{data.extra['members']} members, 5–15 °/s")
-    ax.legend(fontsize=7)
+    ax.set_ylim(top=1.9 * ax.get_ylim()[1])        # room for the legend above the bars
+    ax.legend(fontsize=7, loc="upper left")
     bx.plot(sim.columns["initial_rate"][1], sim.columns["detumble_time"][1], "C0.", ms=2, label="simulated")
     order = np.argsort(kov.columns["initial_rate"][1])
     bx.plot(kov.columns["initial_rate"][1][order], kov.columns["detumble_time"][1][order], "C2-", label="(6.50)")
-    bx.set_xlabel("initial |ω| [°/s]")
+    bx.set_xlabel(r"initial $|\boldsymbol{\omega}|$ [°/s]")
     bx.set_ylabel("time [s]")
     bx.set_title("against the initial rate")
     bx.legend()
@@ -266,36 +275,51 @@ def plot_basilisk(data):
     lim = [1000, 5600]
     ax.plot(lim, lim, "k:", lw=1)
     ax.set_xlabel("Basilisk 2.12.1 [s]")
-    ax.set_ylabel("magbench [s]")
+    ax.set_ylabel("this book's simulation [s]")
     ax.set_title("Detumble time, 18 runs")
     ax.legend()
     bx.axhline(0, color="k", lw=0.8)
     bx.set_xlabel("Basilisk 2.12.1 [s]")
-    bx.set_ylabel("magbench − Basilisk [s]")
+    bx.set_ylabel("this book − Basilisk [s]")
     bx.set_title("difference")
     return fig
 
 
 def compute_gain_sweep(**params):
-    """Median time 10 → 0.5 °/s against k/k*, projected law, 3U and cube."""
-    d = study.gain_sweep(_key(**params))
+    """Against k/k*, projected law, 3U and cube: the unsaturated decay rate of |ω| (the
+    quantity k* optimises) and the saturated median time 10 → 0.5 °/s."""
+    key = _key(**params)
+    d = study.gain_sweep(key)
+    r = study.decay_rate_sweep(key)
+    series = []
+    for name in r["median"]:
+        ok = np.isfinite(r["median"][name])
+        series.append(Series(f"{name}: decay rate, coils unlimited (k* = {r['k_star'][name]:.3g} N·m·s)",
+                             {"gain_ratio": ("1", r["ratios"][ok]), "decay_rate": ("1/s", r["median"][name][ok])}))
     # Gains at which a member is not damped within the run have no median: left out.
-    return FigureData("", "", "", {}, [
-        Series(f"{name} (k* = {d['k_star'][name]:.3g} N·m·s)",
-               {"gain_ratio": ("1", d["ratios"][np.isfinite(d["median"][name])]),
-                "duration": ("s", d["median"][name][np.isfinite(d["median"][name])])}) for name in d["median"]])
+    for name in d["median"]:
+        ok = np.isfinite(d["median"][name])
+        series.append(Series(f"{name}: median time, ±0.2 A·m² rods",
+                             {"gain_ratio": ("1", d["ratios"][ok]), "duration": ("s", d["median"][name][ok])}))
+    return FigureData("", "", "", {}, series)
 
 
 def plot_gain_sweep(data):
-    fig, ax = _new_figure(3.2)
-    for s, style in zip(data.series, ("C0o-", "C1s--")):
-        ax.semilogx(s.columns["gain_ratio"][1], s.columns["duration"][1], style, label=s.label)
-    ax.axvline(1.0, color="k", ls=":", lw=1)
-    ax.set_xlabel("k / k*  (k* = 2n(1 + sin i) J_min)")
-    ax.set_ylabel("median time 10 → 0.5 °/s [s]")
-    ax.set_title("Projected B-dot: gain sweep (gaps: not damped in 12 000 s)")
-    ax.legend()
-    ax.grid(alpha=0.3, which="both")
+    fig, (left, right) = _new_figure(3.4, ncols=2, width=7.0)
+    for s, style in zip(data.series[:2], ("C0o-", "C1s--")):
+        left.semilogx(s.columns["gain_ratio"][1], 1e3 * s.columns["decay_rate"][1], style,
+                      label=s.label.split(":")[0])
+    for s, style in zip(data.series[2:], ("C0o-", "C1s--")):
+        right.semilogx(s.columns["gain_ratio"][1], s.columns["duration"][1], style, label=s.label.split(":")[0])
+    for ax in (left, right):
+        ax.axvline(1.0, color="k", ls=":", lw=1)
+        ax.set_xlabel(r"gain $k\,/\,k^*$")
+        ax.grid(alpha=0.3, which="both")
+        ax.legend()
+    left.set_ylabel(r"decay rate of $|\boldsymbol{\omega}|$, 2 → 0.5 °/s [10$^{-3}$/s]")
+    left.set_title("unsaturated: what $k^*$ optimises")
+    right.set_ylabel("median time 10 → 0.5 °/s [s]")
+    right.set_title("rods ±0.2 A·m² (gaps: not damped)")
     return fig
 
 
@@ -366,14 +390,14 @@ register(FigureSpec("ch05-duty-estimators", "Damping kept by each duty-cycle est
                     partial(_parameters, *_DUTY, span=FigureParameter(
                         1020.0, "s", "span over which |ω| drops (60 cycles; ours)"))))
 register(FigureSpec("ch05-detumble-distribution", "3U envelope: 1000 detumble times beside Cp557 and Kovalenko (6.50) "
-                    "(about 12 s to compute)", "Cp557/detumble; Kovalenko (1975) eq. (6.50)", compute_distribution,
+                    "(about 40 s to compute)", "Cp557/detumble; Kovalenko (1975) eq. (6.50)", compute_distribution,
                     plot_distribution, partial(_parameters, *_ENVELOPE)))
 register(FigureSpec("ch05-basilisk-peer", "Detumble times beside Basilisk's 18 runs (about 15 s to compute)",
                     "Basilisk 2.12.1 (shared reference §6.1)", compute_basilisk, plot_basilisk,
                     partial(_parameters, "inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold",
                                 "envelope_altitude", "envelope_inclination", "envelope_dipole_field",
                                 "envelope_dipole_tilt", "envelope_gain")))
-register(FigureSpec("ch05-gain-sweep", "Projected B-dot: median detumble time against k/k* (about 5 s to compute)",
+register(FigureSpec("ch05-gain-sweep", "Projected B-dot: unsaturated decay rate and saturated detumble time against k/k* (about 20 s to compute)",
                     "Avanzini & Giulietti (2012); Kovalenko (1975) eq. (6.7)", compute_gain_sweep, plot_gain_sweep,
                     partial(_parameters, "inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold",
                                 "earth_rotation_rate", "envelope_altitude", "envelope_inclination",

@@ -18,8 +18,8 @@ from ...earth import CircularOrbit
 from ...estimation import magnitude_consistent, triad_attitude, triad_covariance
 from ...sim import detumble_monte_carlo, detumble_time, simulate_detumble
 
-__all__ = ["samsat_orbit", "envelope_orbit", "max_field", "mean_square_field", "fig1_gains", "duty_study",
-           "envelope_distribution", "kovalenko_650_time", "gain_sweep", "basilisk_peer", "BASILISK",
+__all__ = ["samsat_orbit", "envelope_orbit", "max_field", "field_direction_rate", "mean_square_field", "fig1_gains", "duty_study",
+           "envelope_distribution", "kovalenko_650_time", "gain_sweep", "decay_rate_sweep", "basilisk_peer", "BASILISK",
            "printed_kinematics_rates", "printed_dipole_projection", "triad_geometry", "triad_rejection",
            "triad_vs_align_vectors", "geopolar_b2_range", "chained_detumble"]
 
@@ -73,6 +73,20 @@ def envelope_orbit(p, rotating=True):
     return CircularOrbit(radius + p["envelope_altitude"], p["envelope_inclination"], moment,
                          dipole_tilt=p["envelope_dipole_tilt"],
                          earth_rotation_rate=p["earth_rotation_rate"] if rotating else 0.0)
+
+
+def field_direction_rate(orbit, days=1.0, step=5.0):
+    """Smallest, mean and largest angular rate of the field's direction b̂ in inertial
+    space, |b̂ × db̂/dt| along ``orbit`` over ``days`` [rad/s]: the rotation B-dot damps to.
+
+    On a polar orbit of a direct dipole it lies between 1.5 and 3 times the orbital rate
+    (mean 2): b̂ turns once per orbit in the orbital frame, non-uniformly, and the frame
+    turns once more."""
+    t = np.arange(0.0, days * 86400.0, step)
+    b = orbit.field(t)
+    b_hat = b / np.linalg.norm(b, axis=-1, keepdims=True)
+    rate = np.linalg.norm(np.cross(b_hat, np.gradient(b_hat, t, axis=0)), axis=-1)
+    return float(np.min(rate)), float(np.mean(rate)), float(np.max(rate))
 
 
 def inertia(p):
@@ -204,17 +218,24 @@ def duty_study(params, estimators=("model",), rates=None, members=None, duration
 
 
 @lru_cache(maxsize=4)
-def envelope_distribution(params, members=None, step=None, dwell=30.0):
+def envelope_distribution(params, members=None, step=None, dwell=30.0, blanking=None):
     """The 3U envelope (Cp557/detumble): members × duration s, continuous B-dot with
     k = 5e4 A·m²·s/T, ±0.2 A·m², gravity gradient, random attitude, rate axis, rate
     magnitude (uniform in the envelope) and orbit phase. Returns the run's drawn rates
-    and detumble times (first crossing, and held for ``dwell``) [s]."""
+    and detumble times (first crossing, and held for ``dwell``) [s].
+
+    ``blanking`` = (on, off) [s] blanks the coils ``off`` s in every ``on + off`` (the
+    duty mode with exact Ḃ while on): one of the effects Cp557's README lists, the only one
+    the library models; the same members as without it."""
     p = dict(params)
     orbit = envelope_orbit(p)
+    duty = {} if blanking is None else dict(mode="duty", estimator="model", on_time=float(blanking[0]),
+                                             off_time=float(blanking[1]))
     run = detumble_monte_carlo(inertia(p), orbit, members=int(p["envelope_members"] if members is None else members),
                                seed=int(p["envelope_seed"]), duration=p["envelope_duration"],
                                rate_range=(p["envelope_rate_low"], p["envelope_rate_high"]), gain=p["envelope_gain"],
-                               max_dipole=p["max_dipole"], step=p["integration_step"] if step is None else step)
+                               max_dipole=p["max_dipole"], step=p["integration_step"] if step is None else step,
+                               **duty)
     threshold = p["detumble_threshold"]
     return {"initial_rate": np.linalg.norm(run.inputs["draws"]["rate"], axis=-1),
             "first": detumble_time(run.time, run.rate, threshold),
@@ -264,6 +285,44 @@ def gain_sweep(params, ratios=(0.3, 0.5, 1.0, 2.0, 3.0, 5.0, 10.0, 20.0), member
 
 
 @lru_cache(maxsize=4)
+def decay_rate_sweep(params, ratios=(0.3, 0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 5.0, 7.0, 10.0), members=8,
+                     initial_rate=3.0 * DEG, band=(2.0 * DEG, 0.5 * DEG), duration=20000.0, max_dipole=1.0e3):
+    """The question Avanzini & Giulietti's k* answers: the unsaturated decay rate of |ω|
+    against k/k* for the projected law, the 3U and a body with J_max on every axis.
+
+    The coils are not limited (``max_dipole`` far above any commanded dipole), the runs
+    start at ``initial_rate`` [rad/s] about random axes, and the rate of a member is
+    ln(ω_a/ω_b)/(t_b − t_a) between the first crossings of the two levels of ``band``
+    [rad/s] (above the ≈ 2n the law damps to). Returns ``ratios``, ``k_star`` and, per
+    body, ``rate`` (gains × members) [1/s] (NaN: the band not crossed) and its ``median``."""
+    p = dict(params)
+    orbit = envelope_orbit(p)
+    bodies = {"3U": inertia(p), "cube": np.full(3, max(p["inertia_y"], p["inertia_z"]))}
+    ratios = np.asarray(ratios, dtype=float)
+    rng = np.random.default_rng(int(p["envelope_seed"]) + 1)
+    attitude = Rotation.random(members, rng=rng).as_quat(scalar_first=True)
+    axis = rng.normal(size=(members, 3))
+    w = initial_rate * axis / np.linalg.norm(axis, axis=-1, keepdims=True)
+    phase = rng.uniform(0.0, 2.0 * np.pi, members)
+    k_star = {name: float(avanzini_giulietti_gain(orbit.mean_motion, orbit.inclination, np.min(j)))
+              for name, j in bodies.items()}
+    j_all = np.concatenate([np.tile(j, (ratios.size * members, 1)) for j in bodies.values()])
+    gains = np.concatenate([np.repeat(ratios * k_star[name], members) for name in bodies])
+    count = len(bodies) * ratios.size
+    run = simulate_detumble(j_all, replace(orbit, argument_of_latitude0=np.tile(phase, count)),
+                            np.tile(attitude, (count, 1)), np.tile(w, (count, 1)), duration, gain=gains,
+                            max_dipole=max_dipole, law="projected", step=p["integration_step"])
+    t_a = detumble_time(run.time, run.rate, band[0])
+    t_b = detumble_time(run.time, run.rate, band[1])
+    rate = (np.log(band[0] / band[1]) / (t_b - t_a)).reshape(len(bodies), ratios.size, members)
+    out = {"ratios": ratios, "k_star": k_star, "band": band, "rate": {}, "median": {}}
+    for b, name in enumerate(bodies):
+        out["rate"][name] = rate[b]
+        out["median"][name] = np.median(rate[b], axis=-1)          # NaN if a member misses the band
+    return out
+
+
+@lru_cache(maxsize=4)
 def basilisk_peer(params, mode="continuous", step=None):
     """The 18 Basilisk runs of the shared reference §6.1 with the library: the same body,
     orbit, fixed dipole, gain and limits, no gravity gradient. Returns Basilisk's and our
@@ -296,6 +355,21 @@ def printed_kinematics_rates(attack_angle, roll_angle, velocity_roll_angle, atta
                                             velocity_roll_rate * sf * sa + attack_rate * cf,
                                             velocity_roll_rate * cf * sa - attack_rate * sf), axis=-1)
     return relative + np.asarray(orbital_rate)[..., None] * row
+
+
+def kinematics_test_state(p):
+    """The printed kinematic equations beside the corrected ones at the errata table's test
+    state (α = 40°, φ = 25°, γ = 60°, rates 1, −2, 3 °/s) on the orbit of ``p``. Returns the
+    ``state``, the ``printed`` and ``true`` body rates (3,) [rad/s], the length of their
+    difference ``vector_error`` and the ``orbital_rate`` [rad/s]."""
+    from ...dynamics import aerodynamic_body_rates
+
+    n = samsat_orbit(p).mean_motion
+    state = (40 * DEG, 25 * DEG, 60 * DEG, 1 * DEG, -2 * DEG, 3 * DEG, n)
+    printed = printed_kinematics_rates(*state)
+    true = aerodynamic_body_rates(*state)
+    return {"state": state, "printed": printed, "true": true,
+            "vector_error": float(np.linalg.norm(printed - true)), "orbital_rate": n}
 
 
 def printed_dipole_projection(gain_h, field_h, field_h_rate):

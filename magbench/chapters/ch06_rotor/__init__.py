@@ -124,12 +124,15 @@ def claim_rows(params=None):
     return [
         make_row("rotor-spin-rate", spin.quantity, f"{where}; {spin.conditions}", spin.value,
                  abs(mean_spin), spin.uncertainty_si, unit="rpm", scale=RPM, uncertainty=spin.uncertainty_si,
-                 note="model: mean body spin of the simulated asymmetric spacecraft (spin set by the rotor, ours)"),
+                 note=("verbal claim read as a range (our reading); model: mean body spin of the simulated "
+                       "asymmetric spacecraft. The spin is our choice (the rotor sets it), so the row only says "
+                       "that it counts as 'several tens of rpm': not a test")),
         make_row("rotor-spin-accuracy", accuracy.quantity, f"{where}; {accuracy.conditions}", accuracy.value,
                  deviation / w0, accuracy.uncertainty_si, unit="1",
                  uncertainty=accuracy.uncertainty_si,
-                 note="model: largest |s − mean s| / ω0 of the run; the equilibrium itself swings the spin "
-                      "by H0/I11 twice per orbit"),
+                 note=("verbal claim read as a range (our reading); model: largest |s − mean s| / ω0 of the run. "
+                       "The equilibrium law itself swings the spin by K0/J_s twice per orbit, a size set by our "
+                       "c1 and axial ratio")),
         make_row("rotor-pointing-accuracy", pointing.quantity,
                  f"{where} (plot lost); read as the accuracy kept after the transient", pointing.value,
                  float(maxima[-1]), pointing.uncertainty_si, unit="deg", scale=DEG,
@@ -142,14 +145,17 @@ def claim_rows(params=None):
                  f"Kovalenko (1975) §7.3, p. {kovalenko_page(kov_spin.seed_line)}; {kov_spin.method}",
                  kov_spin.value, deviation / abs(mean_spin), kov_spin.uncertainty_si, unit="%", scale=0.01,
                  uncertainty=kov_spin.uncertainty_si,
-                 note="model: largest |s − mean s|/|mean s| of the rotor run. Not the same spacecraft: his satellites "
-                      "carry their momentum in the body's spin, here the rotor carries it and the spin's forced "
-                      "swing of order ω0 is a small fraction of 30 rpm"),
+                 note=("a contrast, not a test: the printed 1–2 % are Tiros IX, ESSA and AEROS, spin-stabilised "
+                       "satellites whose momentum is in the body's spin; the model value is the largest "
+                       "|s − mean s|/|mean s| of our rotor spacecraft, whose rotor carries the momentum and whose "
+                       f"forced swing of order ω0 is a small fraction of its {abs(mean_spin) / RPM:.0f} rpm. "
+                       "Different spacecraft: the verdict says nothing about either source")),
         make_row("kov-spin-axis-precession", kov_turn.quantity,
                  f"Kovalenko (1975) §7.3, eq. (7.30), p. {kovalenko_page(kov_turn.seed_line)}; {kov_turn.conditions}",
                  kov_turn.value, turn, kov_turn.uncertainty_si, unit="deg", scale=DEG,
                  uncertainty=kov_turn.uncertainty_si,
-                 note=(f"model: turn of the angular momentum of a rigid spinning body while the relay law (7.12) "
+                 note=(f"verbal bound ('much less than 1°'); model: turn of the angular momentum of a rigid "
+                       f"spinning body while the relay law (7.12) "
                        f"changes its spin by {achieved:.2%} (his δω = {delta_omega:.0%}), field ratio "
                        f"B∥/B⊥ = {FIELD_RATIO:g} (ours: his condition on the arcs is lost); (7.30) gives "
                        f"δω B∥/B⊥ = {math.degrees(delta_omega * FIELD_RATIO):.2f}°")),
@@ -299,6 +305,10 @@ CHAPTER = Chapter(
     ),
     source_checks=(damping_checks, kovalenko_checks),
     cites="rotor slides (equations, control law, damping projection; the two lost plots); Kovalenko ch. 7",
+    discussed_in=(("rotor-spin-rate", "ch06-claims"), ("rotor-spin-accuracy", "ch06-claims"),
+                  ("rotor-pointing-accuracy", "ch06-claims"), ("kov-spin-accuracy", "ch06-claims"),
+                  ("kov-spin-axis-precession", "ch06-claims"), ("rotor-damping-sign", "ch06-damping"),
+                  ("kov-relay-mean-moment", "ch06-claims")),
     finds=("that the slides' law holds the reference exactly for any gain, that the printed damping sign "
            "anti-damps, where in the gains the lost stability plot is stable, and that their 10–15° pointing "
            "is, in the ideal model, only a transient"),

@@ -55,8 +55,8 @@ def _si_factors(p=None):
 def _map_parameters():
     n = _numbers()
     return {
-        "axial_ratio": FigureParameter(n["axial_ratio"], "1", "a = I11/B (ours)"),
-        "momentum": FigureParameter(n["momentum"], "1", "c1 = H0/(ω0 B) (ours)"),
+        "axial_ratio": FigureParameter(n["axial_ratio"], "1", "a = J_s/J_t (ours)"),
+        "momentum": FigureParameter(n["momentum"], "1", "c1 = K_0/(ω0 J_t) (ours)"),
         "inclination": FigureParameter(n["inclination"], "rad", "orbit inclination i (51.6°, the ISS orbit)"),
         "restoring": FigureParameter(n["restoring"], "1", "chosen restoring gain κ (ours)"),
         "damping": FigureParameter(n["damping"], "1", "chosen damping gain κ_w (ours)"),
@@ -102,19 +102,19 @@ def plot_stability_map(data):
     mesh = ax.pcolormesh(kappa, kappa_w, logr, cmap="RdBu_r", norm=TwoSlopeNorm(0.0, lo, hi), shading="nearest")
     ax.contour(kappa, kappa_w, logr, levels=[0.0], colors="k", linewidths=1.2)
     ax.plot(c["restoring"][1], c["damping"][1], "k*", markersize=11,
-            label=f"chosen κ = {c['restoring'][1][0]:g}, κ_w = {c['damping'][1][0]:g}: "
+            label=f"chosen $\\kappa$ = {c['restoring'][1][0]:g}, $\\kappa_w$ = {c['damping'][1][0]:g}: "
                   f"max|ρ| = {c['max_abs_multiplier'][1][0]:.3f}")
-    fig.colorbar(mesh, ax=ax, label="log10 max|ρ| (< 0: stable)")
-    ax.set_xlabel("restoring gain κ = k B0²/(ω0² B) [-]")
-    ax.set_ylabel("damping gain κ_w = k_w/(ω0 B) [-]")
+    fig.colorbar(mesh, ax=ax, label=r"$\log_{10}\max|\rho|$ (< 0: stable)")
+    ax.set_xlabel(r"restoring gain $\kappa = kB_0^2/(\omega_0^2 J_t)$ [1]")
+    ax.set_ylabel(r"damping gain $\kappa_w = k_w/(\omega_0 J_t)$ [1]")
     kp, kwp = data.extra["k_per_kappa"], data.extra["kw_per_kappa_w"]
     top = ax.secondary_xaxis("top", functions=(lambda x: x * kp, lambda x: x / kp))
-    top.set_xlabel("k [A·m²/T]")
+    top.set_xlabel(r"$k$ [A·m²/T]")
     right = ax.secondary_yaxis("right", functions=(lambda y: y * kwp * 1e3, lambda y: y / (kwp * 1e3)))
-    right.set_ylabel("k_w [mN·m·s]")
+    right.set_ylabel(r"$k_w$ [mN·m·s]")
     ax.legend(loc="upper left")
-    ax.set_title(f"Reconstruction of the lost stability slide: Floquet map\n"
-                 f"{data.extra['stable_fraction']:.0%} of the plane stable (black line: |ρ| = 1)")
+    ax.set_title("Reconstruction of the lost stability slide: Floquet map\n"
+                 "blue: stable (black line: |ρ| = 1)")
     return fig
 
 
@@ -134,7 +134,7 @@ def compute_floquet_slice(axial_ratio, momentum, inclination, damping_max, steps
     kappa_w = np.linspace(damping_max / 160, damping_max, 160)
     rho = rotor_stability_map(np.array(SLICE_RESTORING), kappa_w, axial_ratio=axial_ratio, momentum=momentum,
                               inclination=inclination, steps=int(steps))
-    return FigureData("", "", "", {}, [Series(f"κ = {k:g}", {"damping": ("1", kappa_w),
+    return FigureData("", "", "", {}, [Series(f"$\\kappa$ = {k:g}", {"damping": ("1", kappa_w),
                                                              "max_abs_multiplier": ("1", rho[:, j])})
                                        for j, k in enumerate(SLICE_RESTORING)])
 
@@ -147,8 +147,8 @@ def plot_floquet_slice(data):
     for s in data.series:
         ax.semilogy(s.columns["damping"][1], s.columns["max_abs_multiplier"][1], label=s.label)
     ax.axhline(1.0, color="k", linewidth=0.8, linestyle="--", label="|ρ| = 1")
-    ax.set_xlabel("damping gain κ_w [-]")
-    ax.set_ylabel("max|ρ| per orbit [-]")
+    ax.set_xlabel(r"damping gain $\kappa_w$ [1]")
+    ax.set_ylabel("max|ρ| per orbit [1]")
     ax.legend(ncols=2)
     ax.set_title("Both too little and too much projected damping are unstable")
     return fig
@@ -198,10 +198,12 @@ def plot_simulation(data):
     ax.legend(loc="upper right")
     ax = axes[1]
     ax.plot(t, c["spin_deviation"][1], "C0", linewidth=0.6, label="spin − mean")
-    ax.plot(t, c["spin_reference_deviation"][1], "C3--", linewidth=1.0, label="reference s_ref(u) − mean")
-    ax.set_ylabel("spin deviation [ω0]")
+    ax.plot(t, c["spin_reference_deviation"][1], "C3--", linewidth=1.0,
+            label=r"reference $s_\mathrm{ref}(u)$ − mean")
+    ax.set_ylabel(r"spin deviation [$\omega_0$]")
     ax.legend(loc="upper right", ncols=2)
-    ax.set_title(f"mean spin {data.extra['mean_spin_rpm']:.1f} rpm")
+    sense = "−" if data.extra["mean_spin_rpm"] < 0 else "+"
+    ax.set_title(f"mean spin {abs(data.extra['mean_spin_rpm']):.1f} rpm, about {sense}$x$ (the velocity axis)")
     ax = axes[2]
     ax.plot(t, c["dipole_magnitude"][1], "C2", linewidth=0.6)
     ax.set_ylabel("|m| [A·m²]")
@@ -221,8 +223,8 @@ def _law_parameters():
                                         "B0 at the orbit radius"),
         "orbital_rate": FigureParameter(orbit.mean_motion, "rad/s", "ω0"),
         "gain": FigureParameter(sat.restoring_gain, "A m^2/T", "restoring gain k (ours, κ = 4)"),
-        "axial_momentum": FigureParameter(sat.axial_momentum, "N m s", "H0 (ours, c1 = 1)"),
-        "axial_inertia": FigureParameter(float(sat.inertia_matrix[0, 0]), "kg m^2", "I11 (ours)"),
+        "axial_momentum": FigureParameter(sat.axial_momentum, "N m s", "K_0, axial angular momentum of body and rotor at u = 0 (ours, c1 = 1)"),
+        "axial_inertia": FigureParameter(float(sat.inertia_matrix[0, 0]), "kg m^2", "J_s, about the spin axis (ours)"),
         "rotor_momentum": FigureParameter(sat.rotor_inertia * sat.rotor_rate, "N m s", "J_f ν (ours)"),
     }
 
@@ -236,7 +238,7 @@ def compute_equilibrium_law(inclination, equatorial_b, orbital_rate, gain, axial
     for factor in (1.0, 2.0):
         m = rotor_equilibrium_dipole(u, inclination, equatorial_b, factor * gain, axial_momentum, orbital_rate)
         torque = np.cross(m, field)
-        series.append(Series(f"k × {factor:g}", {"u": ("deg", np.degrees(u)), "dipole": ("A m^2", m),
+        series.append(Series(f"$k$ × {factor:g}", {"u": ("deg", np.degrees(u)), "dipole": ("A m^2", m),
                                                  "torque": ("N m", torque)}))
     h = axial_momentum * np.cos(u) ** 2
     s = rotor_spin_reference(u, axial_momentum, rotor_momentum, axial_inertia)
@@ -258,17 +260,17 @@ def plot_equilibrium_law(data):
     for s, style in zip(data.series[:2], ("-", "--")):
         u, m, tq = s.columns["u"][1], s.columns["dipole"][1], s.columns["torque"][1]
         for j in range(3):
-            axes[0].plot(u, m[:, j], f"C{j}{style}", label=f"M{j + 1}, {s.label}")
-            axes[1].plot(u, tq[:, j] * 1e9, f"C{j}{style}", label=f"T{j + 1}, {s.label}")
+            axes[0].plot(u, m[:, j], f"C{j}{style}", label=f"$m_{j + 1}$, {s.label}")
+            axes[1].plot(u, tq[:, j] * 1e9, f"C{j}{style}", label=f"$L_{j + 1}$, {s.label}")
     axes[0].set_ylabel("dipole [A·m²]")
     axes[0].legend(ncols=3)
     axes[1].set_ylabel("torque [nN·m]")
     axes[1].legend(ncols=3)
-    axes[1].set_title(f"the torque does not depend on k (largest difference "
+    axes[1].set_title(f"the torque does not depend on $k$ (largest difference "
                       f"{data.extra['torque_gain_difference']:.1e} N·m)")
     r = data.series[2].columns
-    axes[2].plot(r["u"][1], r["axial_momentum_ratio"][1], "C0", label="H/H0 = cos²u")
-    axes[2].plot(r["u"][1], r["spin_reference_deviation"][1], "C3--", label="s_ref − mean [ω0]")
+    axes[2].plot(r["u"][1], r["axial_momentum_ratio"][1], "C0", label=r"$K_1/K_0 = \cos^2 u$")
+    axes[2].plot(r["u"][1], r["spin_reference_deviation"][1], "C3--", label=r"$s_\mathrm{ref}$ − mean [$\omega_0$]")
     axes[2].legend()
     axes[2].set_xlabel("argument of latitude u [deg]")
     axes[2].set_xticks(np.arange(0, 361, 60))
@@ -338,8 +340,9 @@ def _energy_run(law, gain, rotor_momentum, initial_rate, field_rate, b0, duratio
 def compute_damping_sign(damping_gain, rotor_momentum, initial_rate, field_rate, equatorial_b, duration):
     """½ωᵀIω of the gyrostat under the corrected projection and under the printed one (slide 'Control implementation')."""
     series = []
-    for law, label in (("corrected", "m = k_w (w × B)/|B|² (damps)"),
-                       ("printed", "printed −k_w (w × B) × B/|B|² as a torque")):
+    for law, label in (("corrected", r"$\mathbf{m} = k_w (\mathbf{w} \times \mathbf{B})/|\mathbf{B}|^2$ (damps)"),
+                       ("printed", r"printed $-k_w (\mathbf{w} \times \mathbf{B}) \times \mathbf{B}/|\mathbf{B}|^2$ "
+                                   "as a torque")):
         t, energy = _energy_run(law, damping_gain, rotor_momentum, initial_rate, field_rate, equatorial_b, duration)
         series.append(Series(label, {"time": ("s", t), "energy": ("J", energy)}))
     return FigureData("", "", "", {}, series)
@@ -353,7 +356,7 @@ def plot_damping_sign(data):
     for s, style in zip(data.series, ("C0-", "C3--")):
         ax.semilogy(s.columns["time"][1], s.columns["energy"][1], style, label=s.label)
     ax.set_xlabel("time [s]")
-    ax.set_ylabel("½ ωᵀIω [J]")
+    ax.set_ylabel(r"$\frac{1}{2}\,\boldsymbol{\omega}^\mathsf{T}\mathbf{J}\,\boldsymbol{\omega}$ [J]")
     ax.legend()
     ax.set_title("Erratum: the damping projection as printed pumps energy")
     return fig
@@ -576,11 +579,11 @@ def plot_spin_relay(data):
     ax.axhline(data.extra["mean"], color="C3", linestyle="--", label=f"mean over a turn {data.extra['mean']:.4f}")
     ax.axhline(4 / math.pi, color="k", linewidth=0.6, linestyle=":", label="4/π")
     ax.set_xlabel("angle α of the transverse field [deg]")
-    ax.set_ylabel("spin torque / (L0 B⊥) [-]")
+    ax.set_ylabel(r"spin torque / $(m_0 B_\perp)$ [1]")
     ax.set_xticks(np.arange(0, 361, 90))
     ax.set_ylim(0.6, 1.5)
     ax.legend(loc="lower center", ncols=2)
-    ax.set_title("Kovalenko (7.26): the relay law's mean moment is 4/π L0")
+    ax.set_title(r"Kovalenko (7.26): the relay law's mean moment is $(4/\pi)\,m_0$")
     return fig
 
 
@@ -710,7 +713,7 @@ def plot_asymmetry(data):
         ax.plot(s.columns["asymmetry"][1], s.columns["pointing_error"][1], f"C{k % 10}o-",
                 label=f"largest error in {s.label}")
     ax.axvline(data.extra["default_asymmetry"], color="k", linewidth=0.8, linestyle=":", label="our spacecraft")
-    ax.set_xlabel("transverse asymmetry (I33 − I22)/(I33 + I22) [-]")
+    ax.set_xlabel(r"transverse asymmetry $(J_z - J_y)/(J_z + J_y)$ [1]")
     ax.set_ylabel("pointing error [deg]")
     ax.set_ylim(bottom=0.0)
     ax.legend(loc="upper left")

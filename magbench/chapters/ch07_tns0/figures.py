@@ -143,12 +143,13 @@ def plot_fig14(data):
     fig, ax = plt.subplots(figsize=(6.0, 3.4))
     pts, line, dashed = data.series
     ax.plot(line.columns["t"][1], line.columns["L"][1], "C0-",
-            label=f"linear: dL/dt = {lin.parameters['slope'] * 1e4:.3f}·10⁻⁴ kg·m²/s per h, AICc {lin.aicc:.1f}")
+            label=f"linear: $dK/dt$ = {lin.parameters['slope'] * 1e4:.3f}·10⁻⁴ kg·m²/s per h, AICc {lin.aicc:.1f}"
+                  .replace("-", "−"))
     ax.plot(dashed.columns["t"][1], dashed.columns["L"][1], "C1--",
             label=f"exponential: τ = {exp_.parameters['time_constant']:.0f} h, AICc {exp_.aicc:.1f}")
     ax.plot(pts.columns["t"][1], pts.columns["L"][1], "ko", label="Table 1 (sessions 1–7)")
     ax.set_xlabel("hours since session 1 [h]")
-    ax.set_ylabel("L [kg·m²/s]")
+    ax.set_ylabel("$K$ [kg·m²/s]")
     ax.set_ylim(0, None)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7.5)
@@ -186,7 +187,7 @@ def plot_spin_decay(data):
     axes[1].semilogy(pts.columns["t"][1], pts.columns["L"][1], "ko", label="Table 1")
     axes[1].semilogy(t, np.clip(lin.predict(t), 1e-3, None), "C0-", label="linear fit")
     axes[1].semilogy(t, exp_.predict(t), "C1--", label="exponential fit")
-    axes[1].set_ylabel("L [kg·m²/s] (log)")
+    axes[1].set_ylabel("$K$ [kg·m²/s] (log)")
     axes[1].set_title("On a log scale the data bend down")
     axes[1].legend(fontsize=7.5)
     for ax in axes:
@@ -236,25 +237,25 @@ def plot_rod_loops(data):
     fig, axes = plt.subplots(1, 2, figsize=(6.8, 3.1))
     for s in data.series[:len(AMPLITUDES)]:
         axes[0].plot(s.columns["H"][1], s.columns["B"][1] * 1e3, label=s.label)
-    axes[0].set_xlabel("H [A/m]")
-    axes[0].set_ylabel("B [mT]")
+    axes[0].set_xlabel("$H$ [A/m]")
+    axes[0].set_ylabel("$B$ [mT]")
     axes[0].set_title("Settled Flatley–Henretty loops")
     axes[0].legend(fontsize=7)
     e = data.series[len(AMPLITUDES)].columns
     ha, w = e["Ha"][1], e["W"][1]
-    axes[1].loglog(ha, w, "C0-", label="settled loop ∮H dB")
+    axes[1].loglog(ha, w, "C0-", label=r"settled loop $\oint H\,dB$")
     axes[1].loglog(ha, e["W_limiting"][1], "C2:", label="area between the limbs")
     axes[1].axhline(data.extra["saturation_limit"], color="0.5", linestyle="--", linewidth=0.8,
-                    label="4 Bs Hc")
+                    label="$4B_sH_c$")
     small = ha < 4.0
     axes[1].loglog(ha[small], w[small][0] * (ha[small] / ha[small][0]) ** 3, "k-", linewidth=0.8,
-                   label="∝ Ha³")
+                   label=r"$\propto H_a^3$")
     k = data.series[-1].columns
     axes[1].loglog(k["Ha"][1], k["W"][1], "C3*", markersize=9, label="Kovalenko: Transit rods")
     lo, hi = data.extra["orbit_h"]
     axes[1].axvspan(lo, hi, color="C1", alpha=0.2, label="|H| along the orbit")
-    axes[1].set_xlabel("amplitude Ha [A/m]")
-    axes[1].set_ylabel("W [J/m³]")
+    axes[1].set_xlabel("amplitude $H_a$ [A/m]")
+    axes[1].set_ylabel("$W$ [J/m³]")
     axes[1].set_title("Energy lost per cycle")
     axes[1].legend(fontsize=7, loc="lower right")
     for ax in axes:
@@ -318,7 +319,7 @@ def plot_session_model(data):
 
     c = data.series[0].columns
     fig, ax = plt.subplots(figsize=(6.4, 2.9))
-    for j, name in enumerate(("ДС1 (+x)", "ДС2 (+z)", "ДС3 (−x)")):
+    for j, name in enumerate(("DS1 (+x)", "DS2 (+z)", "DS3 (−x)")):
         ax.plot(c["t"][1], c[f"s{j + 1}"][1], label=name)
     ax.set_xlabel("time since t0 [s]")
     ax.set_ylabel("signal / its maximum")
@@ -379,8 +380,8 @@ def plot_session_fit(data):
             ax.plot(t[show], s.columns[f"s{j}"][1][show] + offset, color=f"C{k}", linewidth=0.9,
                     label=s.label if j == 1 else None)
     ax.set_yticks([0.0, 1.0, 1.3, 2.3], ["0", "1", "0", "1"])
-    ax.text(0.2, 1.05, "ДС1 (+x)", fontsize=7.5)
-    ax.text(0.2, 2.35, "ДС2 (+z)", fontsize=7.5)
+    ax.text(0.2, 1.05, "DS1 (+x)", fontsize=7.5)
+    ax.text(0.2, 2.35, "DS2 (+z)", fontsize=7.5)
     ax.set_xlabel("time [s]")
     ax.set_ylabel("signal (offset)")
     ax.set_title("Synthetic session from Table 1 row 1 (model only)", fontsize=8.5)
@@ -451,7 +452,7 @@ def plot_capture(data):
     axes[1].plot(lim, lim, "k-", linewidth=0.8, label="equal")
     axes[1].set_xlim(*lim)
     axes[1].set_ylim(*lim)
-    axes[1].set_xlabel("Ω²(A − C) cos θ′ = mB [°]")
+    axes[1].set_xlabel(r"$\theta'$ from $\Omega^2(J_t - J_s)\cos\theta' = mB$ [°]")
     axes[1].set_ylabel("simulated, last orbit [°]")
     axes[1].set_title(f"Final angle ({len(cone['angle'][1])} of {len(final['angle'][1])} have a solution)")
     axes[1].legend(fontsize=7.5)
@@ -488,14 +489,16 @@ def compute_full_run(**params):
     line_t = np.linspace(0.0, min(hours[-1], -balance["start"] / balance["mean"] / 3600.0), 50)
     line = balance["start"] + balance["mean"] * line_t * 3600.0
     band = balance["std"] * line_t * 3600.0
+    # L cannot be negative: the band of the line's spread over directions stops at zero.
+    low, high = np.clip(line - band, 0.0, None), np.clip(line + band, 0.0, None)
     return FigureData("", "", "", {}, [
         Series("simulation", {"t": ("h", hours), "L": ("kg m^2/s", run.angular_momentum),
                               "theta": ("deg", np.degrees(run.nutation)),
                               "axis_field_angle": ("deg", np.degrees(run.axis_field_angle))}),
         Series("Table 1", {"t": ("h", full["session_hours"]), "L": ("kg m^2/s", t1.angular_momentum),
                            "theta": ("deg", np.degrees(t1.nutation))}),
-        Series("energy balance", {"t": ("h", line_t), "L": ("kg m^2/s", line), "L_low": ("kg m^2/s", line - band),
-                                  "L_high": ("kg m^2/s", line + band)}),
+        Series("energy balance", {"t": ("h", line_t), "L": ("kg m^2/s", line), "L_low": ("kg m^2/s", low),
+                                  "L_high": ("kg m^2/s", high)}),
         Series("Table 2", {"angle": ("deg", [np.degrees(printed["tns0-table2-nutation"].value)]),
                            "L": ("kg m^2/s", [printed["tns0-table2-angular-momentum"].value])}),
     ], extra={"orbit_samples": max(2, int(np.ceil(orbit_from(p).period / 300.0))),
@@ -513,22 +516,22 @@ def plot_full_run(data):
     t = sim["t"][1]
     ax = axes[0]
     ax.fill_between(line["t"][1], line["L_low"][1], line["L_high"][1], color="C1", alpha=0.2)
-    ax.plot(line["t"][1], line["L"][1], "C1--", label="energy balance (mean ± sd over directions)")
-    ax.plot(t, sim["L"][1], "C0-", label="full dynamics (one direction of L)")
+    ax.plot(line["t"][1], line["L"][1], "C1--", label="energy balance (mean ± sd over directions, ≥ 0)")
+    ax.plot(t, sim["L"][1], "C0-", label=r"full dynamics (one direction of $\mathbf{K}$)")
     ax.plot(tab["t"][1], tab["L"][1], "ko", label="Table 1")
-    ax.set_ylabel("L [kg·m²/s]")
+    ax.set_ylabel("$K$ [kg·m²/s]")
     ax.legend(fontsize=7.5)
     ax = axes[1]
     ax.plot(t, sim["theta"][1], "C0-", label="full dynamics")
     ax.plot(tab["t"][1], tab["theta"][1], "ko", label="Table 1")
-    ax.set_ylabel("nutation θ [°]")
+    ax.set_ylabel(r"nutation $\theta$ [°]")
     ax.legend(fontsize=7.5)
     ax = axes[2]
     ax.plot(t, uniform_filter1d(sim["axis_field_angle"][1], data.extra["orbit_samples"], mode="nearest"), "C0-",
             label="full dynamics (one-orbit running mean)")
     ax.axhline(tab2["angle"][1][0], color="k", linestyle="--", linewidth=1.0, label="Table 2: 0.85 rad")
     ax.axhline(data.extra["conclusion"], color="0.5", linestyle=":", linewidth=1.0, label="conclusion: ≈ 45°")
-    ax.axvline(data.extra["capture_hours"], color="C3", linewidth=0.8, label="capture (L at twice its final value)")
+    ax.axvline(data.extra["capture_hours"], color="C3", linewidth=0.8, label="capture ($K$ at twice its final value)")
     ax.set_ylabel("angle(B, axis) [°]")
     ax.set_xlabel("hours since session 1 [h]")
     ax.set_ylim(0.0, 200.0)
