@@ -249,7 +249,7 @@ CHAPTER = Chapter(
     figure_modules=("magbench.chapters.ch05_detumbling.figures",),
     comparisons=peer_rows,
     row_kinds=(("ch05-basilisk-", "simulation"), ("ch05-cp557-", "claim"), ("ch05-kovalenko-", "reference"),
-               ("ch05-kstar-", "claim")),
+               ("ch05-kstar-", "reference")),      # Avanzini and Giulietti's closed form
     check_classes=(
         ("samsat-fig2-gain-small", "printed", "conclusion"),
         ("samsat-fig2-", "printed", None),
