@@ -31,7 +31,8 @@ COMPONENTS = {"x", "y", "z"}
 
 _CODE = re.compile(r"```\{code-cell\}.*?```", re.S)
 _MATH = re.compile(r"\$\$(.+?)\$\$|\$(.+?)\$|```\{math\}(.*?)```", re.S)
-_STRIP = re.compile(r"\\(?:mathrm|text|operatorname|mathit|label|tag)(?:\{[^{}]*\}|\s*[A-Za-z])")
+_STRIP = re.compile(r"\\(?:mathrm|text|operatorname|mathit|mathsf|label|tag|begin|end)(?:\{[^{}]*\}|\s*[A-Za-z])"
+                    r"|\{\\rm[^{}]*\}")
 _WRAP = re.compile(r"\\(?:mathbf|boldsymbol|vec|bm|hat|dot|ddot|tilde|bar|overline|mathcal)\s*"
                    r"(?:\{([^{}]*)\}|(\\[a-zA-Z]+|[A-Za-z]))")
 _TOKEN = re.compile(r"(\\[a-zA-Z]+|[A-Za-z])(?:_(\{[^{}]*\}|\\[a-zA-Z]+|[A-Za-z0-9]))?")

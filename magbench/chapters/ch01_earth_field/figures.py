@@ -89,7 +89,7 @@ def plot_fig01(data):
         for vec in ((x, 0, 0), (0, y, 0), (0, 0, z)):
             ax.quiver(0, 0, 0, *vec, color="0.35", linewidth=1.2, arrow_length_ratio=0.12)
         ax.plot([x, x], [y, y], [0, z], "k:", linewidth=0.8)
-        labels = ((x, y, z, r"$T$", "C3"), (x, y, 0, r"$H$", "C0"), (x, 0, 0, r"$X$", "0.35"),
+        labels = ((x, y, z, r"$B$", "C3"), (x, y, 0, r"$B_h$", "C0"), (x, 0, 0, r"$X$", "0.35"),
                   (0, y, 0, r"$Y$", "0.35"), (0, 0, z, r"$Z$", "0.35"))
         for px, py, pz, text, color in labels:
             ax.text(px, py, pz, " " + text, color=color, fontsize=10)
@@ -212,7 +212,7 @@ def plot_elements(data):
 
     c = {k: v for k, (u, v) in data.series[0].columns.items()}
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(7.0, 4.2))
-    for key, style, label in (("T", "-", "total $T$"), ("Z", "--", "vertical $Z$"), ("H", ":", "horizontal $H$")):
+    for key, style, label in (("T", "-", "total $B$"), ("Z", "--", "vertical $Z$"), ("H", ":", "horizontal $B_h$")):
         a1.plot(c["geomagnetic_latitude"], c[key], style, label=label)
     a1.set_xlabel("geomagnetic latitude Φ [deg]")
     a1.set_ylabel("field [µT]")

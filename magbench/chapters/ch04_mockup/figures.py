@@ -244,7 +244,7 @@ def plot_period_ratio(data):
     c, chk, h = ({k: v for k, (u, v) in s.columns.items()} for s in data.series)
     from matplotlib.ticker import FixedLocator, FuncFormatter, NullLocator
 
-    a1.semilogy(c["amplitude"], c["ratio"], label=r"exact, $4K(\sin^2(\psi_0/2))/\omega_0$")
+    a1.semilogy(c["amplitude"], c["ratio"], label=r"exact, $4\mathrm{K}(\sin^2(\psi_0/2))/\omega_\mathrm{p}$")
     a1.semilogy(chk["amplitude"], chk["ratio"], "o", mfc="none", label="direct integration")
     a1.axhline(1.0, color="0.5", linestyle=":", label="eq. (14)")
     a1.set_xlabel(r"amplitude $\psi_0$ [deg]")
