@@ -33,7 +33,7 @@ _CODE = re.compile(r"```\{code-cell\}.*?```", re.S)
 _MATH = re.compile(r"\$\$(.+?)\$\$|\$(.+?)\$|```\{math\}(.*?)```", re.S)
 _STRIP = re.compile(r"\\(?:mathrm|text|operatorname|mathit|mathsf|label|tag|begin|end)(?:\{[^{}]*\}|\s*[A-Za-z])"
                     r"|\{\\rm[^{}]*\}")
-_WRAP = re.compile(r"\\(?:mathbf|boldsymbol|vec|bm|hat|dot|ddot|tilde|bar|overline|mathcal)\s*"
+_WRAP = re.compile(r"\\(?:mathbf|boldsymbol|vec|bm|hat|dot|ddot|tilde|bar|overline)\s*"
                    r"(?:\{([^{}]*)\}|(\\[a-zA-Z]+|[A-Za-z]))")
 _TOKEN = re.compile(r"(\\[a-zA-Z]+|[A-Za-z])(?:_(\{[^{}]*\}|\\[a-zA-Z]+|[A-Za-z0-9]))?")
 _CYRILLIC = re.compile(r"[А-Яа-яЁё]")
@@ -52,6 +52,8 @@ def symbols(math):
     math = re.sub(r"_\{?\\(?:mathrm|text|rm)\s*\{([^{}]*)\}\}?", r"_{\1}", math)
     math = re.sub(r"_\{\\(?:mathrm|text|rm)\s+([A-Za-z]+)\}", r"_{\1}", math)
     math = _STRIP.sub(" ", math)
+    # A calligraphic letter (the Lagrangian) is a symbol of its own, not the letter.
+    math = re.sub(r"\\mathcal\s*\{?([A-Za-z])\}?", r"\\mathcal\1", math)
     math = _WRAP.sub(lambda m: m.group(1) or m.group(2), math)
     found = []
     for token in _TOKEN.finditer(math):
