@@ -227,7 +227,8 @@ def simulator_field_checks():
             explanation=(f"The printed formula m = 4π²Jψ0/(μ0HT²) (the thesis writes A for the amplitude ψ0) with "
                          f"ψ0 = π, J = {j:g} kg·m², T = {t:g} s, H = {design_h:g} A/m gives {m60:.3f} A·m² "
                          f"({m60_no_a:.3f} A·m² without ψ0); "
-                         f"the printed ≈ 0.4 would need T = {t_for_printed:.0f} s. The coils are sized for 0.4."),
+                         f"the printed ≈ {printed['thesis-mtq-moment-60s'].value_as_printed:g} would need "
+                         f"T = {t_for_printed:.0f} s. The coils are sized for the printed value."),
             computation="magbench.dynamics.oscillation_moment"),
         printed_check(
             printed["thesis-mtq-moment-5min"], id="thesis-mtq-moment-5min", chapter="ch02",

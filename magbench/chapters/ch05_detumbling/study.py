@@ -250,6 +250,29 @@ def kovalenko_650_time(inertia_, gain, mean_square, initial_rate, final_rate):
     return inertia_ / damping * np.log(np.asarray(initial_rate) / final_rate)
 
 
+def _gain_runs(p, ratios, members, initial_rate, duration, max_dipole):
+    """The projected law at gains ``ratios`` × k* for the 3U and a cube with J_max on every
+    axis, the same ``members`` attitudes, rate directions and orbit phases for every gain
+    (seeded from the envelope's seed): the bodies, k* per body and one run over body ×
+    gain × member."""
+    orbit = envelope_orbit(p)
+    bodies = {"3U": inertia(p), "cube": np.full(3, max(p["inertia_y"], p["inertia_z"]))}
+    rng = np.random.default_rng(int(p["envelope_seed"]) + 1)
+    attitude = Rotation.random(members, rng=rng).as_quat(scalar_first=True)
+    axis = rng.normal(size=(members, 3))
+    w = initial_rate * axis / np.linalg.norm(axis, axis=-1, keepdims=True)
+    phase = rng.uniform(0.0, 2.0 * np.pi, members)
+    k_star = {name: float(avanzini_giulietti_gain(orbit.mean_motion, orbit.inclination, np.min(j)))
+              for name, j in bodies.items()}
+    j_all = np.concatenate([np.tile(j, (ratios.size * members, 1)) for j in bodies.values()])
+    gains = np.concatenate([np.repeat(ratios * k_star[name], members) for name in bodies])
+    count = len(bodies) * ratios.size
+    run = simulate_detumble(j_all, replace(orbit, argument_of_latitude0=np.tile(phase, count)),
+                            np.tile(attitude, (count, 1)), np.tile(w, (count, 1)), duration, gain=gains,
+                            max_dipole=max_dipole, law="projected", step=p["integration_step"])
+    return bodies, k_star, run
+
+
 @lru_cache(maxsize=4)
 def gain_sweep(params, ratios=(0.3, 0.5, 1.0, 2.0, 3.0, 5.0, 10.0, 20.0), members=8, initial_rate=10.0 * DEG,
                duration=12000.0):
@@ -259,23 +282,8 @@ def gain_sweep(params, ratios=(0.3, 0.5, 1.0, 2.0, 3.0, 5.0, 10.0, 20.0), member
     k* = 2n(1 + sin i)J_min (Avanzini & Giulietti 2012, the orbit's inclination as the
     proxy of ξm). Returns ``ratios``, ``k_star`` and ``median``/``times`` per body."""
     p = dict(params)
-    orbit = envelope_orbit(p)
-    bodies = {"3U": inertia(p), "cube": np.full(3, max(p["inertia_y"], p["inertia_z"]))}
     ratios = np.asarray(ratios, dtype=float)
-    rng = np.random.default_rng(int(p["envelope_seed"]) + 1)
-    attitude = Rotation.random(members, rng=rng).as_quat(scalar_first=True)
-    axis = rng.normal(size=(members, 3))
-    w = initial_rate * axis / np.linalg.norm(axis, axis=-1, keepdims=True)
-    phase = rng.uniform(0.0, 2.0 * np.pi, members)
-    k_star = {name: float(avanzini_giulietti_gain(orbit.mean_motion, orbit.inclination, np.min(j)))
-              for name, j in bodies.items()}
-    # one array: body × gain × member
-    j_all = np.concatenate([np.tile(j, (ratios.size * members, 1)) for j in bodies.values()])
-    gains = np.concatenate([np.repeat(ratios * k_star[name], members) for name in bodies])
-    count = len(bodies) * ratios.size
-    run = simulate_detumble(j_all, replace(orbit, argument_of_latitude0=np.tile(phase, count)),
-                            np.tile(attitude, (count, 1)), np.tile(w, (count, 1)), duration, gain=gains,
-                            max_dipole=p["max_dipole"], law="projected", step=p["integration_step"])
+    bodies, k_star, run = _gain_runs(p, ratios, members, initial_rate, duration, p["max_dipole"])
     times = detumble_time(run.time, run.rate, p["detumble_threshold"]).reshape(len(bodies), ratios.size, members)
     out = {"ratios": ratios, "k_star": k_star, "times": {}, "median": {}}
     for b, name in enumerate(bodies):
@@ -296,22 +304,8 @@ def decay_rate_sweep(params, ratios=(0.3, 0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 5.0, 7.0
     [rad/s] (above the ≈ 2n the law damps to). Returns ``ratios``, ``k_star`` and, per
     body, ``rate`` (gains × members) [1/s] (NaN: the band not crossed) and its ``median``."""
     p = dict(params)
-    orbit = envelope_orbit(p)
-    bodies = {"3U": inertia(p), "cube": np.full(3, max(p["inertia_y"], p["inertia_z"]))}
     ratios = np.asarray(ratios, dtype=float)
-    rng = np.random.default_rng(int(p["envelope_seed"]) + 1)
-    attitude = Rotation.random(members, rng=rng).as_quat(scalar_first=True)
-    axis = rng.normal(size=(members, 3))
-    w = initial_rate * axis / np.linalg.norm(axis, axis=-1, keepdims=True)
-    phase = rng.uniform(0.0, 2.0 * np.pi, members)
-    k_star = {name: float(avanzini_giulietti_gain(orbit.mean_motion, orbit.inclination, np.min(j)))
-              for name, j in bodies.items()}
-    j_all = np.concatenate([np.tile(j, (ratios.size * members, 1)) for j in bodies.values()])
-    gains = np.concatenate([np.repeat(ratios * k_star[name], members) for name in bodies])
-    count = len(bodies) * ratios.size
-    run = simulate_detumble(j_all, replace(orbit, argument_of_latitude0=np.tile(phase, count)),
-                            np.tile(attitude, (count, 1)), np.tile(w, (count, 1)), duration, gain=gains,
-                            max_dipole=max_dipole, law="projected", step=p["integration_step"])
+    bodies, k_star, run = _gain_runs(p, ratios, members, initial_rate, duration, max_dipole)
     t_a = detumble_time(run.time, run.rate, band[0])
     t_b = detumble_time(run.time, run.rate, band[1])
     rate = (np.log(band[0] / band[1]) / (t_b - t_a)).reshape(len(bodies), ratios.size, members)
