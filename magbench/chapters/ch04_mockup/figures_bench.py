@@ -19,7 +19,7 @@ from ...rotations import wrap_angle
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
 
-SOURCE = "Bui (2016), thesis §4.4, Figs. 19–20; model: magbench.sim.bench"
+SOURCE = "Bui (2016), thesis §4.4, Figs. 19–20; the bench model is ours (chapter 4)"
 DEG = np.pi / 180.0
 
 #: Chapter-4 inputs the bench figures take as parameters (all of the bench's).

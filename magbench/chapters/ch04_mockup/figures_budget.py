@@ -15,8 +15,8 @@ from . import budget
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 from .figures_bench import _input_parameters
 
-SOURCE = ("Bui (2016), thesis §4.4 (measured 10°); ranges: magbench/data/bench/error_sources.toml; "
-          "model: magbench.sim.bench, magbench.chapters.ch04_mockup.budget")
+SOURCE = ("Bui (2016), thesis §4.4 (measured 10°); the error sources' ranges from datasheets, the thesis "
+          "and ours; the bench model is ours (chapter 4)")
 TARGETS = (np.pi / 3.0, 2.0 * np.pi / 3.0)
 
 #: Short labels of the sources on the figures.

@@ -393,7 +393,7 @@ register(FigureSpec("ch05-detumble-distribution", "3U envelope: 1000 detumble ti
                     "(about 40 s to compute)", "Cp557/detumble; Kovalenko (1975) eq. (6.50)", compute_distribution,
                     plot_distribution, partial(_parameters, *_ENVELOPE)))
 register(FigureSpec("ch05-basilisk-peer", "Detumble times beside Basilisk's 18 runs (about 15 s to compute)",
-                    "Basilisk 2.12.1 (shared reference §6.1)", compute_basilisk, plot_basilisk,
+                    "Basilisk 2.12.1, 18 runs of the same case", compute_basilisk, plot_basilisk,
                     partial(_parameters, "inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold",
                                 "envelope_altitude", "envelope_inclination", "envelope_dipole_field",
                                 "envelope_dipole_tilt", "envelope_gain")))

@@ -318,7 +318,7 @@ def decay_rate_sweep(params, ratios=(0.3, 0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 5.0, 7.0
 
 @lru_cache(maxsize=4)
 def basilisk_peer(params, mode="continuous", step=None):
-    """The 18 Basilisk runs of the shared reference §6.1 with the library: the same body,
+    """The 18 Basilisk runs (the project's reference runs of Basilisk 2.12.1) with the library: the same body,
     orbit, fixed dipole, gain and limits, no gravity gradient. Returns Basilisk's and our
     detumble times [s]."""
     p = dict(params)
