@@ -271,3 +271,23 @@ def test_book_check_fails_on_the_developers_voice(tmp_path):
                  "<p>The magnetometer's offset and the thesis's inclination sign.</p>"):
         page, html = _page(tmp_path / str(abs(hash(body))), body, None)
         assert not any("developer's voice" in p for p in check_page("p", page, html)[0]), body
+
+
+_PHONE_TABLE = """<!DOCTYPE html><html><head><meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1"></head><body><main>
+<article class="bd-article" style="max-width: 700px">
+<div style="overflow-x: auto"><table style="width: 600px"><caption>scrolls</caption><tr><td>x</td></tr></table></div>
+</article></main></body></html>"""
+
+
+def test_browser_check_lets_a_phone_scroll_a_wide_table_in_its_box(tmp_path):
+    """On a phone a 600 px table inside a scrolling box is fine (the page stays 414 px
+    wide); on a laptop it must fit its column (700 px here, so it does)."""
+    browser_check = _load("browser_check")
+    if not browser_check.chromium_installed():
+        pytest.skip("Chromium not installed (apt-get install -y chromium)")
+    (tmp_path / "phone.html").write_text(_PHONE_TABLE)
+    assert browser_check.check_site(tmp_path, ["phone"], search=None) == []
+    (tmp_path / "bare.html").write_text(_PHONE_TABLE.replace('<div style="overflow-x: auto">', "<div>"))
+    problems = "\n".join(browser_check.check_site(tmp_path, ["bare"], search=None))
+    assert "table wider than the column" in problems and "(at 414 px)" in problems

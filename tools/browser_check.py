@@ -9,8 +9,9 @@ on: a failed request (no answer, or an HTTP error status) or any request that le
 the local server (the book must work offline), a JavaScript error (an uncaught
 exception; the theme's console messages are not errors of the book), an image that did not load (``naturalWidth == 0``), an
 equation left untypeset (raw ``\\(``, ``\\[`` or ``$$`` in the text), a table wider than
-the content column, a display equation wider than its own box (clipped: a reader
-sees part of it; on the phone a display equation may instead scroll inside its box), and,
+the content column (on the phone a table may instead scroll inside its own box), a
+display equation wider than its own box (clipped: a reader sees part of it; on the phone
+a display equation may instead scroll inside its box), and,
 on the phone, a page wider than the screen (the phone would zoom the whole page out),
 naming the widest elements that stick out. The search page must find "Helmholtz".
 
@@ -51,8 +52,11 @@ async () => {
   const text = article.innerText;
   const images = [...article.querySelectorAll("img")].map(i => ({src: i.getAttribute("src"),
     ok: i.complete && i.naturalWidth > 0}));
+  const scrolls = el => { for (let a = el.parentElement; a && a !== article; a = a.parentElement) {
+    if (["auto", "scroll"].includes(getComputedStyle(a).overflowX)) { return true; } } return false; };
   const tables = [...article.querySelectorAll("table")].map(t => ({
-    width: t.getBoundingClientRect().width, caption: (t.caption ? t.caption.innerText : "").slice(0, 60)}));
+    width: t.getBoundingClientRect().width, caption: (t.caption ? t.caption.innerText : "").slice(0, 60),
+    scrolls: scrolls(t)}));
   // A labelled equation's box is as wide as the column and clips what does not fit, so the
   // measure is the content's width against the box's, not the box's against the column.
   const equations = [...article.querySelectorAll("mjx-container[display='true']")].map(e => ({
@@ -117,8 +121,10 @@ def check_page(page, url, origin, *, phone=False):
     problems += [f"image did not load: {i['src']}" for i in result["images"] if not i["ok"]]
     problems += [f"equation not typeset: …{r}…" for r in result["raw"]]
     column = result["column"]
+    # On a phone a table with many columns may scroll inside its own box (the page does
+    # not); on a laptop every table must fit the column.
     problems += [f"table wider than the column ({t['width']:.0f} > {column:.0f} px): {t['caption']!r}"
-                 for t in result["tables"] if t["width"] > column + SLACK]
+                 for t in result["tables"] if t["width"] > column + SLACK and not (phone and t["scrolls"])]
     problems += [f"equation clipped ({e['content']:.0f} px of content in a {e['box']:.0f} px box): "
                  f"#{e['where']}" for e in result["equations"]
                  if e["content"] > e["box"] + SLACK and not (phone and e["scrolls"])]
