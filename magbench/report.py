@@ -206,6 +206,7 @@ def printed_text(value, tolerance):
 def _cell(value):
     """One list-table cell: single-line MyST text that cannot start a list by accident."""
     text = " ".join(str(value).split()) or "–"
+    text = re.sub(r"^%", r"\\%", text)             # a leading % starts a MyST comment
     return re.sub(r"^(\d+)([.)]) ", r"\1\\\2 ", re.sub(r"^([-+*]) ", r"\\\1 ", text))
 
 
@@ -533,8 +534,10 @@ def parameter_table(chapter, namespace, *, label=None):
         p = params[name]
         used = float(namespace[name])
         if math.isclose(used, p.value_si, rel_tol=1e-12, abs_tol=0.0):
-            value = f"{p.value:g}".replace("-", "−").replace("e+", "·10^").replace("e", "·10^")
-            value = re.sub(r"\^(−?\d+)", lambda m: m.group(1).lstrip("0").translate(_SUPERSCRIPTS), value)
+            mantissa, _, exponent = f"{p.value:g}".partition("e")
+            value = mantissa.replace("-", "−")
+            if exponent:
+                value += "·10" + str(int(exponent)).translate(_SUPERSCRIPTS)
         else:
             value = format_number(used / to_si(1.0, p.unit)[0], 4) + " (changed)"
         if p.source in ("ours", "external"):
