@@ -348,7 +348,10 @@ def linked(text, section):
     """``text`` as a link to the book section labelled ``section`` (plain text if none)."""
     if not section:
         return text
-    text = re.sub(r"[<>`]", "", text)
+    if re.search(r"[_<>`*\\]", text):
+        # A role's title is not Markdown: an underscore or a bracket would be lost or
+        # misread there, so the text stays plain and an arrow links the section.
+        return f"{text} ({{ref}}`→ <{section}>`)"
     return f"{{ref}}`{text} <{section}>`"
 
 

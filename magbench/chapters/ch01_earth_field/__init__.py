@@ -197,7 +197,7 @@ def geomagnetic_checks():
         source_check(
             id="thesis-eq12a-energy-ratio", chapter="ch01", source="thesis",
             location="§1.3",
-            quantity="Energy handed to the Earth per unit lost by a despinning mock-up, ΔT_E/ΔT_c",
+            quantity="Energy handed to the Earth per unit lost by a despinning mock-up, ΔE_E/ΔE_c",
             printed=thesis_ratio, computed=exact, tolerance=0.0, unit="1",
             explanation=("The thesis sets ΔT_E/ΔT_c = |Δω_E/Δω_c| = J_c/J_E by treating Δ(ω²) as "
                          "(Δω)². Because the Earth already rotates, ΔT_E ≈ ω_E ΔK_E, and the exact "

@@ -70,7 +70,7 @@ def bench_rows(params=None):
                                    rng=np.random.default_rng(int(p["bench_seed"])),
                                    window=p["bench_error_window"])
         rows.append(make_row(
-            f"bench-error-{tag}", f"Orientation error on the bench, ψ_des = {label}",
+            f"bench-error-{tag}", f"Orientation error on the bench, target angle {label}",
             "thesis §4.4 (measured; metric not stated)", measured.value,
             float(run.error_band[0]), 0.5 * deg, unit="deg", scale=deg,
             note=("model: noise floor of the bench as designed (datasheet white sensor noise, thread, "
@@ -146,7 +146,7 @@ def budget_rows(params=None):
         gyro = float(np.max(oat["gyro_offset"][1][k]))
         rows.append(make_row(
             f"bench-budget-gyro-{tag}",
-            f"Orientation error an uncalibrated gyro offset at the datasheet bound could give, ψ_des = {label}",
+            f"Orientation error an uncalibrated gyro offset at the datasheet bound could give, target angle {label}",
             "thesis §4.4 (measured) beside the MPU-6050's ±20 °/s (PS-MPU-6000A-00, Table 6.1)",
             measured.value, gyro, 0.5 * deg, unit="deg", scale=deg,
             note=(f"could explain the 10° if the offset was not calibrated and A_f = "
