@@ -27,7 +27,7 @@ import numpy as np
 
 from ...constants import MU_0
 from ...io.data import DATA_DIR, DataError, to_si, verify_checksum
-from ..._validate import shown
+from ..._validate import as_positive_scalar, shown
 
 __all__ = ["ErrorSource", "load_error_sources", "nominal_values", "simulate_sources", "one_at_a_time",
            "sobol_design", "sobol_analysis", "sobol_budget", "from_unit_cube", "coil_field_per_moment",
@@ -92,16 +92,9 @@ def coil_field_per_moment(side):
     """
     from ... import fields
 
-    side = _positive(side, "side", "m")
+    side = as_positive_scalar("side", side, unit="m")
     b = fields.square_loop_b([0.0, 0.0, 0.0], side, 1.0, turns=1)
     return float(np.linalg.norm(b) / side ** 2)
-
-
-def _positive(value, name, unit):
-    value = float(value)
-    if not (np.isfinite(value) and value > 0):
-        raise ValueError(f"{name} must be a finite number > 0 {unit}, got {shown(value)}")
-    return value
 
 
 def _computed_ranges(params):
