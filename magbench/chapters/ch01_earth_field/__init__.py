@@ -150,7 +150,7 @@ def geomagnetic_checks():
         source_check(
             id="thesis-eq3-inclination-sign", chapter="ch01", source="thesis",
             location="§1.1, eqs. (1), (3) (from Kovalenko eq. 2.3)",
-            quantity="Inclination J at the laboratory (St Petersburg) from eq. (3)",
+            quantity="Inclination I at the laboratory (St Petersburg) from eq. (3) (the thesis's J)",
             printed=float(np.degrees(printed_j)),
             computed=float(np.degrees(earth.dipole_inclination(phi))),
             tolerance=0.05, unit="deg",
@@ -184,7 +184,7 @@ def geomagnetic_checks():
         source_check(
             id="thesis-eq5-cgs-torque", chapter="ch01", source="thesis",
             location="§1.2, eq. (5)",
-            quantity=f"Torque on L = {moment_l:g} A·m² across H = {field_h:g} A/m from M = L × H",
+            quantity=f"Torque on a {moment_l:g} A·m² dipole across H = {field_h:g} A/m from eq. (5) as printed (M = L × H)",
             printed=moment_l * field_h,
             computed=float(np.linalg.norm(dynamics.magnetic_torque_from_h(
                 [moment_l, 0.0, 0.0], [0.0, field_h, 0.0]))),
