@@ -64,8 +64,10 @@ book-unlocked:
 # the HTML (tools/check_book.py) and in headless Chromium (tools/browser_check.py).
 test: pytest book-check
 
+# On both cores; a test module stays on one worker (--dist loadfile), so its module-scoped
+# fixtures (the chapters' source checks, the long simulations) are computed once.
 pytest: $(STAMP)
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -n 2 --dist loadfile
 
 book-check: $(STAMP)
 	$(check_params)
