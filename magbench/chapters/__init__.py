@@ -128,10 +128,8 @@ def row_kind(row):
     """
     if row.kind:
         return row.kind
-    for spec in CHAPTERS:
-        if _match(spec.row_kinds, row.id):
-            return _row_kind(spec, row)
-    return _row_kind(CHAPTERS[0], row)      # raises, naming the kinds
+    spec = next((spec for spec in CHAPTERS if _match(spec.row_kinds, row.id)), CHAPTERS[0])
+    return _row_kind(spec, row)            # an unclassified row raises, naming the kinds
 
 
 def figure_modules():

@@ -51,11 +51,7 @@ def oscillation_field_h(inertia, moment, period, amplitude=1.0):
     >>> round(float(oscillation_field_h(0.005, 0.6, 60.0, amplitude=np.pi)), 1)
     228.5
     """
-    j = as_positive("inertia", inertia, unit="kg m^2")
-    m = as_positive("moment", moment, unit="A m^2")
-    t = as_positive("period", period, unit="s")
-    amp = as_positive("amplitude", amplitude, unit="rad")
-    return 4.0 * np.pi**2 * j * amp / (MU_0 * m * t**2)
+    return _swing_quotient(inertia, as_positive("moment", moment, unit="A m^2"), period, amplitude)
 
 
 def oscillation_moment(inertia, field_h, period, amplitude=1.0):
@@ -98,8 +94,13 @@ def oscillation_moment(inertia, field_h, period, amplitude=1.0):
     >>> round(float(oscillation_moment(0.005, 250.0, 300.0, amplitude=np.pi)), 4)
     0.0219
     """
+    return _swing_quotient(inertia, as_positive("field_h", field_h, unit="A/m"), period, amplitude)
+
+
+def _swing_quotient(inertia, known, period, amplitude):
+    """4π²JA/(μ0 x T²): the field for a known moment, or the moment for a known field
+    (m and H enter eq. (14) only as their product)."""
     j = as_positive("inertia", inertia, unit="kg m^2")
-    h = as_positive("field_h", field_h, unit="A/m")
     t = as_positive("period", period, unit="s")
     amp = as_positive("amplitude", amplitude, unit="rad")
-    return 4.0 * np.pi**2 * j * amp / (MU_0 * h * t**2)
+    return 4.0 * np.pi**2 * j * amp / (MU_0 * known * t**2)
