@@ -48,36 +48,58 @@ define check_params
 	@if [ -n "$(PARAMS)" ]; then $(BIN)/python tools/check_params.py "$(PARAMS)"; fi
 endef
 
+# Each stage of `make book` and `make test` is timed; the times are printed at the end.
+define stage
+	@$(BIN)/python tools/stages.py run $(STAGES) $(1) -- $(2)
+endef
+
 # The book, with the execution cache invalidated whenever the library, data, lock file
-# or parameter overrides change (jupyter-cache itself only looks at cell sources).
+# or parameter overrides change (jupyter-cache itself only looks at cell sources). The
+# pages are executed on both cores first (tools/execute_pages.py), then built; the
+# expensive results (studies, figures' numbers) are computed once into the result cache
+# (magbench.result_cache), where the summary pages and the command line find them.
 book: $(STAMP)
 	$(check_params)
 	$(call locked,book-unlocked)
 
+book-unlocked: export MAGBENCH_RESULT_CACHE = $(CURDIR)/_build/results
+book-unlocked: STAGES = _build/stages.log
 book-unlocked:
-	rm -rf _build/html/reports   # a failed build's logs would otherwise outlive it
-	$(BIN)/python tools/fingerprint.py --cache _build/.jupyter_cache --doctrees _build/.doctrees --stamp _build/.fingerprint
-	$(JB) build . -W -n --keep-going
-	$(BIN)/python tools/check_book.py _build/html
+	@rm -rf _build/html/reports $(STAGES)   # a failed build's logs would otherwise outlive it
+	$(call stage,fingerprint,$(BIN)/python tools/fingerprint.py --cache _build/.jupyter_cache --doctrees _build/.doctrees --results _build/results --stamp _build/.fingerprint)
+	$(call stage,execute,$(BIN)/python tools/execute_pages.py --cache _build/.jupyter_cache)
+	$(call stage,build,$(JB) build . -W -n --keep-going)
+	$(call stage,check-html,$(BIN)/python tools/check_book.py _build/html)
+	@$(BIN)/python tools/stages.py report $(STAGES)
 
-# Tests: the pytest suite, then the whole book built from scratch as a test, checked in
-# the HTML (tools/check_book.py) and in headless Chromium (tools/browser_check.py).
-test: pytest book-check
+# Tests: the whole book built from scratch as a test (an empty execution cache and an
+# empty result cache), checked in the HTML (tools/check_book.py) and in headless Chromium
+# (tools/browser_check.py); then the pytest suite, which reads the results the book
+# computed from the same result cache instead of computing them a second time.
+TEST_RESULTS := $(CURDIR)/_build/test/results
+TEST_STAGES  := _build/test/stages.log
+test: book-check pytest
+	@$(BIN)/python tools/stages.py report $(TEST_STAGES)
 
 # On both cores; a test module stays on one worker (--dist loadfile), so its module-scoped
 # fixtures (the chapters' source checks, the long simulations) are computed once.
+pytest: export MAGBENCH_RESULT_CACHE = $(TEST_RESULTS)
+pytest: STAGES = $(TEST_STAGES)
 pytest: $(STAMP)
-	$(BIN)/python -m pytest -n 2 --dist loadfile
+	$(call stage,pytest,$(BIN)/python -m pytest -n 2 --dist loadfile)
 
 book-check: $(STAMP)
 	$(check_params)
 	$(call locked,book-check-unlocked)
 
+book-check-unlocked: export MAGBENCH_RESULT_CACHE = $(TEST_RESULTS)
+book-check-unlocked: STAGES = $(TEST_STAGES)
 book-check-unlocked:
 	rm -rf _build/test
-	$(JB) build . --path-output _build/test -W -n --keep-going
-	$(BIN)/python tools/check_book.py _build/test/_build/html
-	@$(BIN)/python tools/browser_check.py _build/test/_build/html; status=$$?; \
+	$(call stage,execute,$(BIN)/python tools/execute_pages.py --cache _build/test/_build/.jupyter_cache)
+	$(call stage,build,$(JB) build . --path-output _build/test -W -n --keep-going)
+	$(call stage,check-html,$(BIN)/python tools/check_book.py _build/test/_build/html)
+	@$(BIN)/python tools/stages.py run $(STAGES) check-browser -- $(BIN)/python tools/browser_check.py _build/test/_build/html; status=$$?; \
 	if [ $$status -eq 3 ]; then \
 	  echo "browser check SKIPPED: Chromium is not installed; install it with: apt-get install -y chromium"; \
 	elif [ $$status -ne 0 ]; then exit $$status; fi

@@ -1,6 +1,7 @@
 """The build helpers: the cache fingerprint must move with library, data and overrides."""
 
 import importlib.util
+import sys
 
 import pytest
 from pathlib import Path
@@ -291,3 +292,23 @@ def test_browser_check_lets_a_phone_scroll_a_wide_table_in_its_box(tmp_path):
     (tmp_path / "bare.html").write_text(_PHONE_TABLE.replace('<div style="overflow-x: auto">', "<div>"))
     problems = "\n".join(browser_check.check_site(tmp_path, ["bare"], search=None))
     assert "table wider than the column" in problems and "(at 414 px)" in problems
+
+
+def test_execute_pages_schedules_every_page_and_the_summaries_last():
+    ex = _load("execute_pages")
+    pages = ex.toc_pages(ROOT / "_toc.yml")
+    names = [p.relative_to(ROOT).as_posix() for p, _ in pages]
+    assert sorted(names) == sorted(p.relative_to(ROOT).as_posix() for p in (ROOT / "book").glob("*.md"))
+    summaries = {p.stem for p, caption in pages if caption in ex.SUMMARY_PARTS}
+    # The pages that gather every chapter's rows and checks run after the chapters.
+    assert summaries == {"intro", "model-vs-measurement", "errata"}
+
+
+def test_stages_logs_each_stage_and_passes_on_a_failure(tmp_path, capsys):
+    stages = _load("stages")
+    log = tmp_path / "stages.log"
+    assert stages.main(["run", str(log), "fine", "--", sys.executable, "-c", "pass"]) == 0
+    assert stages.main(["run", str(log), "broken", "--", sys.executable, "-c", "raise SystemExit(4)"]) == 4
+    assert stages.main(["report", str(log)]) == 0
+    out = capsys.readouterr().out
+    assert "fine" in out and "broken" in out and "failed (4)" in out and "total" in out

@@ -10,7 +10,6 @@ second step an unchanged chapter would keep its old outputs.
 
 import argparse
 import hashlib
-import os
 import shutil
 from pathlib import Path
 
@@ -25,22 +24,11 @@ def fingerprint():
     for path in files:
         digest.update(path.relative_to(ROOT).as_posix().encode())
         digest.update(path.read_bytes())
-    overrides = os.environ.get("MAGBENCH_PARAMS")
-    if overrides:
-        digest.update(b"MAGBENCH_PARAMS")
-        digest.update(Path(overrides).read_bytes())
-    # The BROAD recordings live outside the repository: the folder the kernels will read
-    # and its listing (name, size, modification time), so that adding or replacing a
-    # recording re-executes the pages that show them instead of serving "not found".
-    from magbench.io.broad import broad_directory
+    # The parameter overrides and the BROAD recordings (outside the repository: adding or
+    # replacing one re-executes the pages that show them instead of serving "not found").
+    from magbench.result_cache import external_inputs
 
-    folder = broad_directory()
-    digest.update(b"BROAD " + str(folder).encode())
-    if folder.is_dir():
-        for path in sorted(folder.iterdir()):
-            if path.is_file():
-                stat = path.stat()
-                digest.update(f"{path.name} {stat.st_size} {stat.st_mtime_ns}\n".encode())
+    digest.update(external_inputs())
     return digest.hexdigest()
 
 
@@ -49,12 +37,14 @@ def main():
     parser.add_argument("--cache", required=True, help="execution cache directory")
     parser.add_argument("--stamp", required=True, help="file recording the last fingerprint")
     parser.add_argument("--doctrees", required=True, help="Sphinx environment directory")
+    parser.add_argument("--results", help="result cache folder ($MAGBENCH_RESULT_CACHE): its results "
+                        "are keyed on the library already; cleared so that stale ones do not pile up")
     args = parser.parse_args()
     stamp, cache = Path(args.stamp), Path(args.cache)
     new = fingerprint()
     old = stamp.read_text().strip() if stamp.is_file() else None
     if new != old:
-        for stale in (cache, Path(args.doctrees)):
+        for stale in (cache, Path(args.doctrees), *([Path(args.results)] if args.results else [])):
             if stale.exists():
                 shutil.rmtree(stale)
         print(f"fingerprint {new[:12]} (was {old[:12] if old else 'none'}): execution cache "

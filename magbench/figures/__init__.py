@@ -21,6 +21,7 @@ __all__ = [
 from ..chapters._figures import (REGISTRY, WHOLE_NUMBER_INPUTS, WORK_LIMITS, FigureData, FigureParameter, FigureSpec,
                                  Series, register)
 from .._validate import shown
+from ..result_cache import disk_cached
 
 _loaded = False
 
@@ -91,9 +92,14 @@ def compute(figure_id, **overrides):
     """The numbers behind a figure, with the given parameter overrides."""
     spec = get_spec(figure_id)
     params = resolve_parameters(figure_id, overrides)
-    data = spec.compute(**params)
+    data = disk_cached(_numbers, figure_id, tuple(sorted(params.items())))
     data.id, data.title, data.source, data.parameters = spec.id, spec.title, spec.source, params
     return data
+
+
+def _numbers(figure_id, items):
+    # A module-level function of hashable arguments: the result cache's key.
+    return get_spec(figure_id).compute(**dict(items))
 
 
 def caption_provenance(figure_id, parameters=None):

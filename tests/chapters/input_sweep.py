@@ -20,7 +20,7 @@ import inspect
 import matplotlib.pyplot as plt
 
 import magbench.io as _io
-from magbench import chapters, figures
+from magbench import chapters, figures, result_cache
 from magbench.chapters import _base, _figures
 
 __all__ = ["chapter_figures", "figure_dependencies", "row_dependencies", "run_scaled"]
@@ -63,7 +63,9 @@ class _Tracking(dict):
 
 
 class _Scaled:
-    """Context: the chapter's source parameter set with one value multiplied."""
+    """Context: the chapter's source parameter set with one value multiplied (and the
+    disk result cache off: a figure that reads the parameter set itself is keyed on its
+    arguments only, which the scaling does not change)."""
 
     def __init__(self, key, name=None, factor=1.0):
         self.source = chapters.chapter(key).source
@@ -82,9 +84,12 @@ class _Scaled:
 
         _base.load_parameter_set = scaled
         _figures._PARAMETERS.clear()    # figure defaults are read from the parameter set once
+        self.no_disk = result_cache.disabled()
+        self.no_disk.__enter__()
         return self
 
     def __exit__(self, *exc):
+        self.no_disk.__exit__(*exc)
         _base.load_parameter_set = self.original
         _figures._PARAMETERS.clear()
 

@@ -6,8 +6,6 @@ tests share one run of each simulation. SI throughout.
 """
 
 from dataclasses import replace
-from functools import lru_cache
-
 import numpy as np
 from scipy.spatial.transform import Rotation
 
@@ -16,6 +14,7 @@ from ...control import avanzini_giulietti_gain, held_bdot_rate_limit, samsat_gai
 from ...dynamics import aerodynamic_attitude_matrix
 from ...earth import CircularOrbit
 from ...estimation import magnitude_consistent, triad_attitude, triad_covariance
+from ...result_cache import cached_result
 from ...sim import detumble_monte_carlo, detumble_time, simulate_detumble
 
 __all__ = ["samsat_orbit", "envelope_orbit", "max_field", "field_direction_rate", "mean_square_field", "fig1_gains", "duty_study",
@@ -174,7 +173,7 @@ def _members(members, seed, orbit):
     return attitude, phase
 
 
-@lru_cache(maxsize=8)
+@cached_result(maxsize=8)
 def duty_study(params, estimators=("model",), rates=None, members=None, duration=30000.0, rotation_per_step=0.5):
     """Continuous against duty-cycled detumbling over Fig. 2's initial rates.
 
@@ -217,7 +216,7 @@ def duty_study(params, estimators=("model",), rates=None, members=None, duration
     return out
 
 
-@lru_cache(maxsize=4)
+@cached_result(maxsize=4)
 def envelope_distribution(params, members=None, step=None, dwell=30.0, blanking=None):
     """The 3U envelope (Cp557/detumble): members × duration s, continuous B-dot with
     k = 5e4 A·m²·s/T, ±0.2 A·m², gravity gradient, random attitude, rate axis, rate
@@ -273,7 +272,7 @@ def _gain_runs(p, ratios, members, initial_rate, duration, max_dipole):
     return bodies, k_star, run
 
 
-@lru_cache(maxsize=4)
+@cached_result(maxsize=4)
 def gain_sweep(params, ratios=(0.3, 0.5, 1.0, 2.0, 3.0, 5.0, 10.0, 20.0), members=8, initial_rate=10.0 * DEG,
                duration=12000.0):
     """Median detumble time (|ω₀| → threshold) against k/k* for the projected law, the 3U
@@ -292,7 +291,7 @@ def gain_sweep(params, ratios=(0.3, 0.5, 1.0, 2.0, 3.0, 5.0, 10.0, 20.0), member
     return out
 
 
-@lru_cache(maxsize=4)
+@cached_result(maxsize=4)
 def decay_rate_sweep(params, ratios=(0.3, 0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 5.0, 7.0, 10.0), members=8,
                      initial_rate=3.0 * DEG, band=(2.0 * DEG, 0.5 * DEG), duration=20000.0, max_dipole=1.0e3):
     """The question Avanzini & Giulietti's k* answers: the unsaturated decay rate of |ω|
@@ -316,7 +315,7 @@ def decay_rate_sweep(params, ratios=(0.3, 0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 5.0, 7.0
     return out
 
 
-@lru_cache(maxsize=4)
+@cached_result(maxsize=4)
 def basilisk_peer(params, mode="continuous", step=None):
     """The 18 Basilisk runs (the project's reference runs of Basilisk 2.12.1) with the library: the same body,
     orbit, fixed dipole, gain and limits, no gravity gradient. Returns Basilisk's and our
@@ -396,7 +395,7 @@ def _attitude_error(estimate, truth):
     return np.arccos(np.clip((np.trace(rel, axis1=-2, axis2=-1) - 1.0) / 2.0, -1.0, 1.0))
 
 
-@lru_cache(maxsize=4)
+@cached_result(maxsize=4)
 def triad_geometry(field_sigma, sun_sigma, angles=tuple(np.arange(2.0, 180.0, 4.0) * DEG), samples=2000, seed=5):
     """TRIAD's rms attitude error (Monte Carlo) against the angle between field and Sun,
     beside the Shuster–Oh covariance (rms = √trace P) [rad]."""
@@ -442,7 +441,7 @@ def triad_vs_align_vectors(samples=2000, seed=11):
             "seconds_ours": t_ours, "seconds_peer": t_peer}
 
 
-@lru_cache(maxsize=4)
+@cached_result(maxsize=4)
 def triad_rejection(params, samples=20000, seed=21, gross_fraction=0.05, albedo_fraction=0.10, albedo=0.35,
                     panel_noise=0.02):
     """TRIAD errors on a synthetic mix of clean and spoiled measurements, without and with
@@ -492,7 +491,7 @@ def held_limit(p):
     return float(held_bdot_rate_limit(p["on_time"], p["off_time"]))
 
 
-@lru_cache(maxsize=4)
+@cached_result(maxsize=4)
 def duty_damping(params, span=1020.0):
     """How much of the continuous mode's damping each duty-cycle estimator keeps: the drop
     of |ω| over the first ``span`` (a whole number of cycles) with the discrete mode over

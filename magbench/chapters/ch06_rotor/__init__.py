@@ -8,7 +8,6 @@ parameter set (``data/rotor/params.toml``) is ours except the Earth's dipole, GM
 inclination, and says so row by row.
 """
 
-import functools
 import math
 
 import numpy as np
@@ -17,6 +16,7 @@ from ...compare import make_row
 from ...control.spin import rotor_program_field, slides_printed_damping_torque
 from ...errata import kovalenko_page, printed_check
 from ...io import load_printed
+from ...result_cache import cached_result
 from ...sim.spinning import simulate_rotor
 from ..._format import format_number
 from .._base import Chapter, chapter_parameters
@@ -44,7 +44,7 @@ INPUTS = (
 )
 
 
-@functools.lru_cache(maxsize=4)
+@cached_result(maxsize=4)
 def _run(items):
     p = dict(items)
     orbit = default_rotor_orbit(p)

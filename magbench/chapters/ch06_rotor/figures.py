@@ -5,7 +5,6 @@ The ids are those of ``shared/reference/rotor_spin.md`` §14–§15. The two los
 numeric default except the field and the inclination is ours (``data/rotor/params.toml``).
 """
 
-import functools
 import math
 
 import numpy as np
@@ -14,6 +13,7 @@ from ...control.spin import (projected_damping_dipole, rotor_equilibrium_dipole,
                              rotor_spin_reference, slides_printed_damping_torque)
 from ...earth.dipole import dipole_equatorial_b
 from ...io import load_printed
+from ...result_cache import cached_result
 from ...sim.spinning import rotor_dimensionless, rotor_stability_map
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
@@ -409,7 +409,7 @@ def _whole_orbits(orbits):
     return n
 
 
-@functools.lru_cache(maxsize=8)
+@cached_result(maxsize=8)
 def tilted_si_run(items, tilt, orbits):
     """The default spacecraft made symmetric (I22 = I33 = B, so that the reference is an exact solution)
     from the reference under a real dipole tilted by ``tilt``: the SI model (DOP853 at the chapter's
@@ -423,7 +423,7 @@ def tilted_si_run(items, tilt, orbits):
                           atol=1e-2 * p["relative_tolerance"])
 
 
-@functools.lru_cache(maxsize=8)
+@cached_result(maxsize=8)
 def tilted_normalised_run(items, tilt, orbits, steps_per_orbit=1000):
     """As :func:`tilted_si_run` by the five-state normalised model (``rotor_spin.md`` §4; RK4): exact for
     the symmetric body, whose spin drops out. Returns τ/2π [orbits] and the pointing error
@@ -502,7 +502,7 @@ def inertia_with_products(params, product):
     return j
 
 
-@functools.lru_cache(maxsize=8)
+@cached_result(maxsize=8)
 def _inertia_run(items, product, orbits, damping):
     """The default spacecraft with products of inertia from (α0, β0) with the momentum the reference
     needs (cached like :func:`tilted_normalised_run`); returns the run and the start's rate offset [rad/s]."""
@@ -623,7 +623,7 @@ def _with_asymmetry(params, asymmetry):
     return p
 
 
-@functools.lru_cache(maxsize=8)
+@cached_result(maxsize=8)
 def asymmetric_si_maxima(items, asymmetry, orbits):
     """Largest pointing error per orbit [deg] of the SI model (DOP853 at the chapter's tolerance) from
     the chapter's start (α0, β0, γ0), transverse asymmetry ε; ``items`` = sorted chapter parameters.
@@ -648,7 +648,7 @@ def asymmetric_si_maxima(items, asymmetry, orbits):
     return np.degrees(orbit_maxima(run, w0))
 
 
-@functools.lru_cache(maxsize=8)
+@cached_result(maxsize=8)
 def symmetric_normalised_maxima(items, orbits, steps_per_orbit=1000):
     """Largest pointing error per orbit [deg] of the symmetric body (ε = 0) from the chapter's start,
     by the five-state normalised model (``rotor_spin.md`` §4; RK4, no fast spin in it: 500 and 4000

@@ -6,14 +6,13 @@ Fig. 3), Table 1's spin decay (Fig. 14), the one-orbit data of Table 2 and the c
 capture Monte Carlo shared by its figure and its comparison rows, and its source checks.
 """
 
-from functools import lru_cache
-
 import numpy as np
 
 from ...compare import make_row
 from ...constants import EARTH_RADIUS
 from ...errata import printed_check
 from ...io import load_parameter_set, load_printed
+from ...result_cache import cached_result
 from .._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "capture_run", "decay_fits", "decay_balance", "full_run", "orbit_from",
@@ -98,7 +97,7 @@ def decay_fits():
     return hours, momentum, fit_linear_decay(hours, momentum), fit_exponential_decay(hours, momentum)
 
 
-@lru_cache(maxsize=4)
+@cached_result(maxsize=4)
 def _capture(key):
     from ...sim import simulate_passive
 
@@ -188,7 +187,7 @@ def decay_balance(params=None):
             "calibrated_volume": volume, "start": float(momentum[0])}
 
 
-@lru_cache(maxsize=2)
+@cached_result(maxsize=2)
 def _full(key):
     from ...io.tns0 import load_table1
     from ...sim import simulate_passive
@@ -306,7 +305,7 @@ def full_run_rows(params=None):
 SESSION_DURATION, SESSION_RATE, SESSION_NOISE, SESSION_SEED, SESSION_LOST_PHASE = 60.0, 10.0, 0.01, 1, 1.0
 
 
-@lru_cache(maxsize=2)
+@cached_result(maxsize=2)
 def _session_fits(a, c):
     from ...io.tns0 import load_table1
     from . import sessions

@@ -1,0 +1,129 @@
+"""The result cache: each expensive result (a chapter's study, a figure's numbers)
+computed once per build and shared by the pages, the command line and the tests.
+
+Within one process a result is kept in memory (:func:`functools.lru_cache`). When
+``$MAGBENCH_RESULT_CACHE`` names a folder, results also go to disk there, through
+:class:`joblib.Memory`, so that the next process (the next page of the book, the tests
+after the book, ``magbench compare``) loads them instead of computing them again. The
+key of a result on disk is content, never a time stamp:
+
+* the *inputs fingerprint* (:func:`inputs_fingerprint`): every module of the library,
+  every data file, the parameter overrides (``$MAGBENCH_PARAMS``) and the listing of the
+  BROAD recordings, hashed; it names the subfolder, so a changed line of the library or
+  of a data file starts a new, empty one;
+* the function's own source and its arguments (joblib's key).
+
+Without the variable nothing is written anywhere: a script that imports the library
+computes what it asks for, as it always did. ``make book`` sets it to
+``_build/results``; ``make test`` to ``_build/test/results``, emptied first, so that
+a test run still computes everything from scratch, once.
+"""
+
+import contextlib
+import functools
+import hashlib
+import os
+from pathlib import Path
+
+__all__ = ["RESULT_CACHE_ENV", "cached_result", "disabled", "disk_cached", "external_inputs", "inputs_fingerprint", "result_cache_folder"]
+
+#: The environment variable naming the folder of the on-disk result cache.
+RESULT_CACHE_ENV = "MAGBENCH_RESULT_CACHE"
+
+_PACKAGE = Path(__file__).resolve().parent
+_disabled = 0
+
+
+def _library_files():
+    return sorted(p for pattern in ("**/*.py", "data/**/*") for p in _PACKAGE.glob(pattern)
+                  if p.is_file() and "__pycache__" not in p.parts)
+
+
+@functools.lru_cache(maxsize=1)
+def _library_digest():
+    digest = hashlib.sha256()
+    for path in _library_files():
+        digest.update(path.relative_to(_PACKAGE).as_posix().encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
+def external_inputs():
+    """The inputs a result may depend on that live outside the package, as bytes to hash:
+    the overrides file named by ``$MAGBENCH_PARAMS`` and the folder of the BROAD recordings
+    with each recording's name, size and modification time."""
+    from .io.broad import broad_directory
+
+    parts = []
+    overrides = os.environ.get("MAGBENCH_PARAMS")
+    if overrides:
+        path = Path(overrides)
+        parts.append(b"MAGBENCH_PARAMS" + (path.read_bytes() if path.is_file() else overrides.encode()))
+    folder = broad_directory()
+    parts.append(b"BROAD " + str(folder).encode())
+    if folder.is_dir():
+        for path in sorted(folder.iterdir()):
+            if path.is_file():
+                stat = path.stat()
+                parts.append(f"{path.name} {stat.st_size} {stat.st_mtime_ns}\n".encode())
+    return b"".join(parts)
+
+
+def inputs_fingerprint():
+    """SHA-256 (hex) of everything a result may depend on besides its arguments: the
+    library's modules and data files and :func:`external_inputs`."""
+    return hashlib.sha256(_library_digest().encode() + external_inputs()).hexdigest()
+
+
+def result_cache_folder():
+    """The folder results go to in this process (``$MAGBENCH_RESULT_CACHE`` / the first 16
+    digits of :func:`inputs_fingerprint`), or None when the disk cache is off."""
+    base = os.environ.get(RESULT_CACHE_ENV)
+    if not base or _disabled:
+        return None
+    return Path(base).resolve() / inputs_fingerprint()[:16]
+
+
+@functools.lru_cache(maxsize=4)
+def _memory(folder):
+    import joblib
+
+    return joblib.Memory(location=folder, verbose=0)
+
+
+@contextlib.contextmanager
+def disabled():
+    """Within the block, results are neither read from nor written to disk (for code that
+    changes the library's inputs behind its arguments' back, as the input sweep does).
+    The in-memory layer stays: it is keyed on the arguments alone, as it always was."""
+    global _disabled
+    _disabled += 1
+    try:
+        yield
+    finally:
+        _disabled -= 1
+
+
+def cached_result(func=None, *, maxsize=4):
+    """Decorator: keep ``func``'s results in memory (``maxsize`` per process) and, when the
+    disk cache is on, on disk (see the module's description).
+
+    ``func`` must be a pure function of its arguments (hashable: tuples, numbers,
+    strings) and of the library's inputs; its result must pickle.
+    """
+    if func is None:
+        return functools.partial(cached_result, maxsize=maxsize)
+
+    def _from_disk_or_computed(*args, **kwargs):
+        return disk_cached(func, *args, **kwargs)
+
+    return functools.wraps(func)(functools.lru_cache(maxsize=maxsize)(_from_disk_or_computed))
+
+
+def disk_cached(func, *args, **kwargs):
+    """``func(*args, **kwargs)``, from the disk cache when it is on (nothing kept in memory:
+    for results the caller mutates, such as a figure's numbers)."""
+    folder = result_cache_folder()
+    if folder is None:
+        return func(*args, **kwargs)
+    return _memory(str(folder)).cache(func)(*args, **kwargs)
