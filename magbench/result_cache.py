@@ -91,6 +91,30 @@ def _memory(folder):
     return joblib.Memory(location=folder, verbose=0)
 
 
+@functools.lru_cache(maxsize=256)
+def _memorized(folder, func):
+    """joblib's wrapper of ``func`` in ``folder``, one per process and function: its check
+    of the function's stored source then happens once, at the first call."""
+    return _memory(folder).cache(func)
+
+
+def _call(folder, func, args, kwargs):
+    memorized = _memorized(folder, func)
+    if not getattr(memorized, "_magbench_checked", False):
+        # joblib compares the function's source with the copy it stored, and writes the
+        # copy if there is none; two processes starting at once (two pages, two test
+        # workers) would read each other's half-written copy, take it for another
+        # function and clear its results. One process at a time, here.
+        import fcntl
+
+        Path(folder).mkdir(parents=True, exist_ok=True)
+        with open(Path(folder) / ".lock", "a") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)
+            memorized.check_call_in_cache(*args, **kwargs)
+        memorized._magbench_checked = True
+    return memorized(*args, **kwargs)
+
+
 @contextlib.contextmanager
 def disabled():
     """Within the block, results are neither read from nor written to disk (for code that
@@ -126,4 +150,4 @@ def disk_cached(func, *args, **kwargs):
     folder = result_cache_folder()
     if folder is None:
         return func(*args, **kwargs)
-    return _memory(str(folder)).cache(func)(*args, **kwargs)
+    return _call(str(folder), func, args, kwargs)

@@ -1,18 +1,25 @@
 """Execute the book's pages on every core, into the execution cache the build reads.
 
 Jupyter Book executes the pages one after the other while Sphinx reads them. This step
-runs before it: each page whose code is not already in the execution cache is executed
-in a pool of worker processes (one per core) and stored in that cache (jupyter-cache,
-keyed on the page's code cells, as myst-nb keys it), so that ``jupyter-book build``
-then finds every page executed. Pages are scheduled longest first (the times of the
-last run, kept in _build/page-seconds.json), and the summary pages (the landing page and the
-Findings part) after every chapter: they gather the chapters' rows and checks, which
-the chapters have by then left in the result cache (``$MAGBENCH_RESULT_CACHE``).
+runs before it, in a pool of worker processes (one per core), in three phases:
 
-A page that fails is reported here and left out of the cache: the build then executes
-it once more and fails with its traceback, as it would have without this step.
+1. *results*: when the result cache is on (``$MAGBENCH_RESULT_CACHE``), every figure's
+   numbers and every chapter's rows and checks are computed into it, each as its own
+   task. These are the expensive results; the figure is a finer unit of work than the
+   page (a chapter of nine long figures would otherwise hold one core alone).
+2. *pages*: each page whose code is not already in the execution cache is executed
+   (reading those results) and stored in that cache (jupyter-cache, keyed on the page's
+   code cells, as myst-nb keys it), so that ``jupyter-book build`` finds it executed.
+3. *summary pages*: the landing page and the Findings part, which gather every
+   chapter's rows and checks, after all the others.
 
-Prints one line per executed page with its time, and the total.
+Within a phase the longest task goes first (the last run's times, kept in
+``_build/page-seconds.json``). A page that fails is reported here and left out of the
+cache: the build then executes it once more and fails with its traceback, as it would
+have without this step.
+
+Prints one line per executed page with its time, the time of the results phase, and
+the total.
 """
 
 import argparse
@@ -81,6 +88,33 @@ def _execute(path, timeout):
     return result.nb, result.time, result.exc_string, stderr
 
 
+def _result(kind, key):
+    """Run in a worker: compute one expensive result into the result cache (a figure's
+    numbers, or a chapter's rows and checks with the studies behind them); returns
+    (seconds, error text or None)."""
+    start = time.perf_counter()
+    try:
+        if kind == "figure":
+            from magbench import figures
+
+            figures.compute(key)
+        else:
+            from magbench import chapters
+
+            chapters.comparisons(key)
+            chapters.source_checks(key)
+    except Exception as exc:             # the page that needs it fails with the traceback
+        return time.perf_counter() - start, f"{type(exc).__name__}: {exc}"
+    return time.perf_counter() - start, None
+
+
+def _result_tasks():
+    from magbench import chapters, figures
+
+    return ([(_result, ("figure", fid), f"figure {fid}") for fid in figures.figure_ids()]
+            + [(_result, ("chapter", spec.key), f"rows and checks {spec.key}") for spec in chapters.CHAPTERS])
+
+
 def _read_times(path):
     try:
         return json.loads(Path(path).read_text(encoding="utf-8"))
@@ -112,29 +146,45 @@ def main():
     if not todo:
         print("execute: every page is in the execution cache")
         return 0
-    # Longest first within each phase; a page never executed here counts as long.
     name = {path: path.relative_to(ROOT).as_posix() for path, _ in todo}
-    todo.sort(key=lambda item: (item[1], -last.get(name[item[0]], float("inf"))))
+    phases = [("pages", [(_execute, (path, args.timeout), name[path]) for path, late in todo if not late]),
+              ("summary pages", [(_execute, (path, args.timeout), name[path]) for path, late in todo if late])]
+    if os.environ.get("MAGBENCH_RESULT_CACHE") and phases[0][1]:
+        phases.insert(0, ("results", _result_tasks()))
     print(f"execute: {len(todo)} page(s) on {args.jobs} worker(s)", flush=True)
     start, failed = time.perf_counter(), []
     context = multiprocessing.get_context("spawn")
     with concurrent.futures.ProcessPoolExecutor(args.jobs, mp_context=context) as pool:
-        for summaries in (False, True):
-            futures = {pool.submit(_execute, path, args.timeout): path for path, late in todo if late == summaries}
+        for phase, tasks in phases:
+            # Longest first (the last run's times); a task never timed counts as long.
+            tasks.sort(key=lambda task: -last.get(task[2], float("inf")))
+            phase_start = time.perf_counter()
+            futures = {pool.submit(function, *arguments): label for function, arguments, label in tasks}
             for future in concurrent.futures.as_completed(futures):
-                path = futures[future]
+                label = futures[future]
+                if phase == "results":
+                    seconds, error = future.result()
+                    last[label] = round(seconds, 1)
+                    if error:
+                        print(f"  {label}: {error} (its page re-runs it and shows why)", flush=True)
+                    continue
                 notebook, seconds, error, stderr = future.result()
-                last[name[path]] = round(seconds, 1)
+                last[label] = round(seconds, 1)
                 if stderr:
                     print(stderr, file=sys.stderr, flush=True)
                 if error:
-                    failed.append(name[path])
-                    print(f"  FAILED   {name[path]} after {seconds:.1f} s (the build re-runs it and shows why)",
-                          flush=True)
+                    failed.append(label)
+                    print(f"  FAILED   {label} after {seconds:.1f} s (the build re-runs it and shows why)", flush=True)
                     continue
+                path = ROOT / label
                 cache.cache_notebook_bundle(CacheBundleIn(notebook, str(path), data={"execution_seconds": seconds}),
                                             check_validity=False, overwrite=True)
-                print(f"  executed {name[path]:38s} {seconds:6.1f} s", flush=True)
+                print(f"  executed {label:38s} {seconds:6.1f} s", flush=True)
+            if phase == "results":
+                slowest = sorted(tasks, key=lambda task: -last[task[2]])[:3]
+                print(f"  results: {len(tasks)} computed into the result cache in "
+                      f"{time.perf_counter() - phase_start:.1f} s wall time (longest: "
+                      + ", ".join(f"{t[2]} {last[t[2]]:.1f} s" for t in slowest) + ")", flush=True)
     Path(args.times).parent.mkdir(parents=True, exist_ok=True)
     Path(args.times).write_text(json.dumps(last, indent=1, sort_keys=True) + "\n", encoding="utf-8")
     print(f"execute: {len(todo) - len(failed)} page(s) in {time.perf_counter() - start:.1f} s wall time"

@@ -75,9 +75,17 @@ def comparisons(key=None):
     with its kind (:data:`magbench.compare.ROW_KINDS`) and the section discussing it."""
     import dataclasses
 
+    from ..result_cache import disk_cached
+
     return [dataclasses.replace(row, kind=_row_kind(spec, row), chapter=row.chapter or spec.key,
                                 section=_section(spec, row.id))
-            for spec in _selected(key) if spec.comparisons for row in spec.comparisons()]
+            for spec in _selected(key) if spec.comparisons for row in disk_cached(_rows, spec.key)]
+
+
+def _rows(key):
+    # A module-level function of the chapter's key: the result cache's key. The rows'
+    # inputs (the chapter's parameters, $MAGBENCH_PARAMS) are in the cache's fingerprint.
+    return chapter(key).comparisons()
 
 
 def source_checks(key=None):
