@@ -104,10 +104,13 @@ book-check-unlocked:
 	  echo "browser check SKIPPED: Chromium is not installed; install it with: apt-get install -y chromium"; \
 	elif [ $$status -ne 0 ]; then exit $$status; fi
 
-# Chapters 4-7 re-run with each input halved and doubled (about an hour on one core;
-# chapters 1-3 are swept by `make pytest`).
+# Every chapter (1-7) re-run with each of its inputs halved and doubled, on both cores
+# (chapters 1-3 are also in `make pytest`; 4-7 carry the `sweep` marker it deselects).
+sweep: STAGES = _build/sweep-stages.log
 sweep: $(STAMP)
-	$(BIN)/python -m pytest -m sweep tests/chapters/test_input_sweep.py
+	@mkdir -p _build && rm -f $(STAGES)
+	$(call stage,sweep,$(BIN)/python -m pytest -n 2 --dist worksteal -m "sweep or not sweep" tests/chapters/test_input_sweep.py)
+	@$(BIN)/python tools/stages.py report $(STAGES)
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run.py

@@ -1,6 +1,7 @@
 """The build helpers: the cache fingerprint must move with library, data and overrides."""
 
 import importlib.util
+import json
 import sys
 
 import pytest
@@ -312,3 +313,23 @@ def test_stages_logs_each_stage_and_passes_on_a_failure(tmp_path, capsys):
     assert stages.main(["report", str(log)]) == 0
     out = capsys.readouterr().out
     assert "fine" in out and "broken" in out and "failed (4)" in out and "total" in out
+
+
+def test_diff_builds_names_a_changed_glued_value_and_a_changed_image(tmp_path, capsys):
+    diff = _load("diff_builds")
+
+    def build(name, value, pixel, stamp):
+        root = tmp_path / name
+        (root / "jupyter_execute" / "book").mkdir(parents=True)
+        (root / "html" / "_images").mkdir(parents=True)
+        glue = {key: {"output_type": "display_data", "data": {"text/plain": repr(text)}}
+                for key, text in (("rate", value), ("provenance", stamp))}
+        (root / "jupyter_execute" / "book" / "ch01.glue.json").write_text(json.dumps(glue))
+        (root / "html" / "_images" / "fig.png").write_bytes(pixel)
+        return str(root)
+
+    old = build("old", "1.25 s", b"\x00", "library sha256 aaaa")
+    assert diff.main([old, build("same", "1.25 s", b"\x00", "library sha256 bbbb")]) == 0   # stamps differ only
+    assert diff.main([old, build("new", "1.26 s", b"\x01", "library sha256 aaaa")]) == 1
+    out = capsys.readouterr().out
+    assert "glued value differs: ('book/ch01', 'rate')" in out and "image differs: fig.png" in out
