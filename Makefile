@@ -106,6 +106,7 @@ book-check-unlocked:
 
 # Every chapter (1-7) re-run with each of its inputs halved and doubled, on both cores
 # (chapters 1-3 are also in `make pytest`; 4-7 carry the `sweep` marker it deselects).
+# Long: a case of chapter 5 or 6 re-runs its simulations for 2-2.5 min on one core.
 sweep: STAGES = _build/sweep-stages.log
 sweep: $(STAMP)
 	@mkdir -p _build && rm -f $(STAGES)
