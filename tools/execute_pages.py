@@ -14,7 +14,9 @@ runs before it, in a pool of worker processes (one per core), in three phases:
    chapter's rows and checks, after all the others.
 
 Within a phase the longest task goes first (the last run's times, kept in
-``_build/page-seconds.json``). A page that fails is reported here and left out of the
+``_build/page-seconds.json``; in a fresh clone, the times committed in
+``tools/task-seconds.json``, measured on the project's 2-core machine: a hint for the
+order only, never a result). A page that fails is reported here and left out of the
 cache: the build then executes it once more and fails with its traceback, as it would
 have without this step.
 
@@ -51,6 +53,9 @@ def toc_pages(toc_path):
         walk(part.get("chapters"), part.get("caption"))
     return [(ROOT / f"{name}.md", caption) for name, caption in pages]
 
+
+#: Task times [s] to order the first run in a fresh clone by (a later run uses its own).
+HINTS = ROOT / "tools" / "task-seconds.json"
 
 #: Pages that gather what the chapters computed: executed after every other page.
 SUMMARY_PARTS = (None, "Findings")
@@ -136,7 +141,7 @@ def main():
     from jupyter_cache.base import CacheBundleIn
 
     cache = get_cache(args.cache)
-    last = _read_times(args.times)
+    last = _read_times(args.times) or _read_times(HINTS)
     todo = []
     for path, caption in toc_pages(args.toc):
         try:
