@@ -1,8 +1,9 @@
 """Chapter 5's computations: the SamSat-218D set-up, the detumbling studies and TRIAD.
 
 Everything the figures, the comparison rows and the source checks of chapter 5 compute
-lives here once, cached per argument tuple (in memory, and in the result cache when it is on), so that the book, the command line and the
-tests share one run of each simulation. SI throughout.
+lives here once, cached per argument tuple (in memory, and in the result cache when it
+is on), so that the book, the command line and the tests share one run of each
+simulation. SI throughout.
 """
 
 from dataclasses import replace
