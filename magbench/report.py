@@ -31,20 +31,12 @@ def provenance():
     Hashes of content, not a commit id: a cached page stays correct when only
     unrelated files change, and changes whenever the library or the data do.
     """
-    import hashlib
-
     from . import __version__
-    from .io import DATA_DIR
+    from .result_cache import library_digests
 
-    library = hashlib.sha256()
-    for path in sorted(Path(__file__).resolve().parent.rglob("*.py")):
-        library.update(path.read_bytes())
-    manifest = hashlib.sha256()
-    for path in sorted(DATA_DIR.glob("*/SHA256SUMS")):
-        manifest.update(path.parent.name.encode() + b"\n" + path.read_bytes())
-    manifest = manifest.hexdigest()[:12]
-    return (f"magbench {__version__} (library sha256 {library.hexdigest()[:12]}, "
-            f"data manifest sha256 {manifest})")
+    library, manifest = library_digests()
+    return (f"magbench {__version__} (library sha256 {library[:12]}, "
+            f"data manifest sha256 {manifest[:12]})")
 
 
 def figure_png(fig):

@@ -8,7 +8,7 @@ after the book, ``magbench compare``) loads them instead of computing them again
 key of a result on disk is content, never a time stamp:
 
 * the *inputs fingerprint* (:func:`inputs_fingerprint`): every module of the library,
-  every data file, the parameter overrides (``$MAGBENCH_PARAMS``) and the listing of the
+  the data checksums, the parameter overrides (``$MAGBENCH_PARAMS``) and the listing of the
   BROAD recordings, hashed; it names the subfolder, so a changed line of the library or
   of a data file starts a new, empty one;
 * the function's own source and its arguments (joblib's key).
@@ -25,7 +25,8 @@ import hashlib
 import os
 from pathlib import Path
 
-__all__ = ["RESULT_CACHE_ENV", "cached_result", "disabled", "disk_cached", "external_inputs", "inputs_fingerprint", "result_cache_folder"]
+__all__ = ["RESULT_CACHE_ENV", "cached_result", "disabled", "disk_cached", "external_inputs", "inputs_fingerprint",
+           "library_digests", "result_cache_folder"]
 
 #: The environment variable naming the folder of the on-disk result cache.
 RESULT_CACHE_ENV = "MAGBENCH_RESULT_CACHE"
@@ -34,18 +35,25 @@ _PACKAGE = Path(__file__).resolve().parent
 _disabled = 0
 
 
-def _library_files():
-    return sorted(p for pattern in ("**/*.py", "data/**/*") for p in _PACKAGE.glob(pattern)
-                  if p.is_file() and "__pycache__" not in p.parts)
-
-
 @functools.lru_cache(maxsize=1)
+def library_digests():
+    """SHA-256 (hex) of the library's modules and of its data checksums: the manifests
+    (``data/<source>/SHA256SUMS``) every data file is checked against when it is read,
+    so that a data file that changes without its manifest is an error, not a new key.
+    :func:`magbench.report.provenance` prints them on every page."""
+    from .io import DATA_DIR
+
+    library = hashlib.sha256()
+    for path in sorted(_PACKAGE.rglob("*.py")):
+        library.update(path.read_bytes())
+    manifest = hashlib.sha256()
+    for path in sorted(DATA_DIR.glob("*/SHA256SUMS")):
+        manifest.update(path.parent.name.encode() + b"\n" + path.read_bytes())
+    return library.hexdigest(), manifest.hexdigest()
+
+
 def _library_digest():
-    digest = hashlib.sha256()
-    for path in _library_files():
-        digest.update(path.relative_to(_PACKAGE).as_posix().encode())
-        digest.update(path.read_bytes())
-    return digest.hexdigest()
+    return "".join(library_digests())
 
 
 def external_inputs():
@@ -71,7 +79,8 @@ def external_inputs():
 
 def inputs_fingerprint():
     """SHA-256 (hex) of everything a result may depend on besides its arguments: the
-    library's modules and data files and :func:`external_inputs`."""
+    library's modules and data checksums (:func:`library_digests`) and
+    :func:`external_inputs`."""
     return hashlib.sha256(_library_digest().encode() + external_inputs()).hexdigest()
 
 
@@ -98,9 +107,12 @@ def _memorized(folder, func):
     return _memory(folder).cache(func)
 
 
+_checked = set()
+
+
 def _call(folder, func, args, kwargs):
     memorized = _memorized(folder, func)
-    if not getattr(memorized, "_magbench_checked", False):
+    if (folder, func) not in _checked:
         # joblib compares the function's source with the copy it stored, and writes the
         # copy if there is none; two processes starting at once (two pages, two test
         # workers) would read each other's half-written copy, take it for another
@@ -111,7 +123,7 @@ def _call(folder, func, args, kwargs):
         with open(Path(folder) / ".lock", "a") as lock:
             fcntl.flock(lock, fcntl.LOCK_EX)
             memorized.check_call_in_cache(*args, **kwargs)
-        memorized._magbench_checked = True
+        _checked.add((folder, func))
     return memorized(*args, **kwargs)
 
 
