@@ -333,3 +333,19 @@ def test_diff_builds_names_a_changed_glued_value_and_a_changed_image(tmp_path, c
     assert diff.main([old, build("new", "1.26 s", b"\x01", "library sha256 aaaa")]) == 1
     out = capsys.readouterr().out
     assert "glued value differs: ('book/ch01', 'rate')" in out and "image differs: fig.png" in out
+
+
+def test_results_phase_computes_figures_with_the_pages_parameters(tmp_path, monkeypatch):
+    # Under a parameter file the pages pass the overridden values; the results phase must
+    # compute those (it computed the source defaults, which no page then read).
+    from magbench import figures
+
+    ex = _load("execute_pages")
+    monkeypatch.delenv("MAGBENCH_PARAMS", raising=False)
+    for fid in figures.figure_ids():        # without overrides: the defaults, the same cache key
+        assert figures.resolve_parameters(fid, ex.page_parameters(fid)) == figures.resolve_parameters(fid), fid
+    overrides = tmp_path / "p.toml"
+    overrides.write_text("[ch05]\nmax_dipole = 0.1\n")
+    monkeypatch.setenv("MAGBENCH_PARAMS", str(overrides))
+    assert ex.page_parameters("ch05-rate-decay")["max_dipole"] == 0.1
+    assert figures.resolve_parameters("ch05-rate-decay")["max_dipole"] == 0.2     # the source default

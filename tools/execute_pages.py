@@ -93,6 +93,18 @@ def _execute(path, timeout):
     return result.nb, result.time, result.exc_string, stderr
 
 
+def page_parameters(figure_id):
+    """The parameters a chapter's page gives a figure: its chapter's (with the overrides of
+    ``$MAGBENCH_PARAMS``) that the figure takes, over the figure's source defaults. The
+    results phase computes each figure so, and the page then finds exactly that result;
+    a page that passes other values computes its own (nothing is wrong, only done twice)."""
+    from magbench import chapters, figures
+
+    spec = figures.get_spec(figure_id)
+    owner = next(c.key for c in chapters.CHAPTERS if spec.compute.__module__ in c.figure_modules)
+    return {name: value for name, value in chapters.chapter_parameters(owner).items() if name in spec.parameters}
+
+
 def _result(kind, key):
     """Run in a worker: compute one expensive result into the result cache (a figure's
     numbers, or a chapter's rows and checks with the studies behind them); returns
@@ -102,7 +114,7 @@ def _result(kind, key):
         if kind == "figure":
             from magbench import figures
 
-            figures.compute(key)
+            figures.compute(key, **page_parameters(key))
         else:
             from magbench import chapters
 
