@@ -23,6 +23,7 @@ import contextlib
 import functools
 import hashlib
 import os
+from collections.abc import Mapping
 from pathlib import Path
 
 __all__ = ["RESULT_CACHE_ENV", "cached_result", "disabled", "disk_cached", "external_inputs", "inputs_fingerprint",
@@ -140,20 +141,42 @@ def disabled():
         _disabled -= 1
 
 
-def cached_result(func=None, *, maxsize=4):
+def cached_result(func=None, *, maxsize=4, reads=None):
     """Decorator: keep ``func``'s results in memory (``maxsize`` per process) and, when the
     disk cache is on, on disk (see the module's description).
 
     ``func`` must be a pure function of its arguments (hashable: tuples, numbers,
     strings) and of the library's inputs; its result must pickle.
+
+    ``reads``, the names of the parameters ``func`` reads, makes it a *study*: its first
+    argument is then a chapter's parameters (a mapping or (name, value) pairs, any
+    superset of ``reads``), and ``func`` is called with, and keyed on, the sorted
+    (name, float) pairs of ``reads`` alone. A study reading a name it does not declare
+    fails with a ``KeyError``; one whose names are all unchanged is not computed again,
+    whatever else of the chapter changed (the input sweep relies on it).
     """
     if func is None:
-        return functools.partial(cached_result, maxsize=maxsize)
+        return functools.partial(cached_result, maxsize=maxsize, reads=reads)
 
     def _from_disk_or_computed(*args, **kwargs):
         return disk_cached(func, *args, **kwargs)
 
-    return functools.wraps(func)(functools.lru_cache(maxsize=maxsize)(_from_disk_or_computed))
+    cached = functools.lru_cache(maxsize=maxsize)(_from_disk_or_computed)
+    if reads is None:
+        return functools.wraps(func)(cached)
+    names = tuple(sorted(set(reads)))
+
+    @functools.wraps(func)
+    def study(params, *args, **kwargs):
+        given = params if isinstance(params, Mapping) else dict(params)
+        missing = [name for name in names if name not in given]
+        if missing:
+            raise KeyError(f"{func.__qualname__} reads {', '.join(missing)}, not among the parameters it was given")
+        return cached(tuple((name, float(given[name])) for name in names), *args, **kwargs)
+
+    study.reads = names
+    study.cache_clear = cached.cache_clear
+    return study
 
 
 def disk_cached(func, *args, **kwargs):

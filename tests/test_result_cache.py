@@ -40,6 +40,40 @@ def test_a_result_is_computed_once_and_then_read_from_disk(cache_dir):
     assert any(cache_dir.rglob("output.pkl"))
 
 
+STUDY_CALLS = []
+
+
+@result_cache.cached_result(reads=("b", "a"))
+def _study(params, scale=1.0):
+    STUDY_CALLS.append(params)
+    p = dict(params)
+    return scale * (p["a"] + p["b"])
+
+
+@result_cache.cached_result(reads=("a",))
+def _undeclared(params):
+    return dict(params)["b"]
+
+
+def test_a_study_is_keyed_on_the_inputs_it_reads(monkeypatch):
+    monkeypatch.delenv(result_cache.RESULT_CACHE_ENV, raising=False)
+    STUDY_CALLS.clear()
+    _study.cache_clear()
+    assert _study({"a": 1.0, "b": 2.0, "c": 3.0}) == 3.0
+    # Another value of an input it does not read, as a mapping or as pairs: the same result.
+    assert _study([("c", 9.0), ("b", 2.0), ("a", 1.0)]) == 3.0
+    assert STUDY_CALLS == [(("a", 1.0), ("b", 2.0))]        # sorted pairs of its own inputs
+    assert _study({"a": 1.0, "b": 5.0}) == 6.0 and _study({"a": 1.0, "b": 2.0}, scale=2.0) == 6.0
+    assert len(STUDY_CALLS) == 3 and _study.reads == ("a", "b")
+
+
+def test_a_study_missing_an_input_or_reading_an_undeclared_one_fails():
+    with pytest.raises(KeyError, match="_study reads b, not among the parameters"):
+        _study({"a": 1.0})
+    with pytest.raises(KeyError, match="'b'"):
+        _undeclared({"a": 1.0, "b": 2.0})
+
+
 def test_another_argument_is_another_result(cache_dir):
     _square(2.0)
     _square(3.0)

@@ -72,16 +72,15 @@ def peer_rows(params=None):
     from . import study
 
     p = params or chapter_parameters("ch05")
-    key = parameter_key(p)
     rows = []
-    bsk = study.basilisk_peer(key, mode="sampled")
+    bsk = study.basilisk_peer(p, mode="sampled")
     rows.append(make_row(
         "ch05-basilisk-mean-time", "Mean detumble time of Basilisk's 18 runs (3U, fixed dipole, 10 Hz B-dot)",
         "Basilisk 2.12.1, 18 runs made for this book", float(np.mean(bsk["basilisk"])), float(np.mean(bsk["ours"])),
         1.0, unit="s",
         note=("model: simulate_detumble, mode 'sampled' at 10 Hz with Basilisk's body, orbit, dipole, gain and "
               "limits; tolerance: both times are first crossings on 1 s records")))
-    env = study.envelope_distribution(key)
+    env = study.envelope_distribution(p)
     held = env["held"]
     n = CP557["runs"]
     for stat, fn, label in (("median", np.median, "Median of"),
@@ -109,7 +108,7 @@ def peer_rows(params=None):
     # Avanzini & Giulietti's k* maximises the asymptotic decay rate of the unsaturated law, and
     # their analysis holds exactly for equal principal moments: compared with the simulated
     # optimum of that rate for the body with J_max on every axis (the 3U is discussed).
-    decay = study.decay_rate_sweep(key)
+    decay = study.decay_rate_sweep(p)
     ratios = decay["ratios"]
     best_index = int(np.nanargmax(np.where(np.isnan(decay["median"]["cube"]), -np.inf, decay["median"]["cube"])))
     best = ratios[best_index]

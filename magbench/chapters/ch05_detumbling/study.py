@@ -51,6 +51,18 @@ BASILISK = (
 )
 
 
+#: The parameters each set-up reads (the studies declare theirs from these, so that a study
+#: is computed again only when one of its own inputs changes).
+SAMSAT_ORBIT = ("dipole_g10", "dipole_g11", "dipole_h11", "earth_radius", "orbit_altitude", "orbit_inclination",
+                "earth_rotation_rate")
+ENVELOPE_ORBIT = ("envelope_dipole_field", "envelope_altitude", "envelope_inclination", "envelope_dipole_tilt",
+                  "earth_rotation_rate")
+INERTIA = ("inertia_x", "inertia_y", "inertia_z")
+FIG2_RUNS = SAMSAT_ORBIT + INERTIA + ("fig2_rate_min", "fig2_rate_max", "fig2_rate_step", "fig2_members",
+                                      "fig2_seed", "max_dipole", "initial_rate_x", "initial_rate_y", "on_time",
+                                      "off_time")
+
+
 # -- the set-ups --------------------------------------------------------------------------
 
 def samsat_orbit(p):
@@ -175,11 +187,11 @@ def _members(members, seed, orbit):
     return attitude, phase
 
 
-@cached_result(maxsize=8)
+@cached_result(maxsize=8, reads=FIG2_RUNS + ("detumble_threshold",))
 def duty_study(params, estimators=("model",), rates=None, members=None, duration=30000.0, rotation_per_step=0.5):
     """Continuous against duty-cycled detumbling over Fig. 2's initial rates.
 
-    ``params`` is a tuple of (name, value) of the chapter's parameters. Every rate w of
+    ``params``: the chapter's parameters (a mapping or (name, value) pairs). Every rate w of
     the grid (or of ``rates`` [rad/s]) gets the same ``members`` random attitudes and orbit
     phases; the gain is the paper's default (set for the default rates, SS L247), as
     the paper keeps it unless the actual rates are known. Returns a dict: ``rates`` (W,),
@@ -218,7 +230,9 @@ def duty_study(params, estimators=("model",), rates=None, members=None, duration
     return out
 
 
-@cached_result(maxsize=4)
+@cached_result(maxsize=4, reads=ENVELOPE_ORBIT + INERTIA + (
+    "envelope_members", "envelope_seed", "envelope_duration", "envelope_rate_low", "envelope_rate_high",
+    "envelope_gain", "max_dipole", "integration_step", "detumble_threshold"))
 def envelope_distribution(params, members=None, step=None, dwell=30.0, blanking=None):
     """The 3U envelope (Cp557/detumble): members × duration s, continuous B-dot with
     k = 5e4 A·m²·s/T, ±0.2 A·m², gravity gradient, random attitude, rate axis, rate
@@ -274,7 +288,8 @@ def _gain_runs(p, ratios, members, initial_rate, duration, max_dipole):
     return bodies, k_star, run
 
 
-@cached_result(maxsize=4)
+@cached_result(maxsize=4, reads=ENVELOPE_ORBIT + INERTIA + ("envelope_seed", "integration_step", "max_dipole",
+                                                             "detumble_threshold"))
 def gain_sweep(params, ratios=(0.3, 0.5, 1.0, 2.0, 3.0, 5.0, 10.0, 20.0), members=8, initial_rate=10.0 * DEG,
                duration=12000.0):
     """Median detumble time (|ω₀| → threshold) against k/k* for the projected law, the 3U
@@ -293,7 +308,7 @@ def gain_sweep(params, ratios=(0.3, 0.5, 1.0, 2.0, 3.0, 5.0, 10.0, 20.0), member
     return out
 
 
-@cached_result(maxsize=4)
+@cached_result(maxsize=4, reads=ENVELOPE_ORBIT + INERTIA + ("envelope_seed", "integration_step"))
 def decay_rate_sweep(params, ratios=(0.3, 0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 5.0, 7.0, 10.0), members=8,
                      initial_rate=3.0 * DEG, band=(2.0 * DEG, 0.5 * DEG), duration=20000.0, max_dipole=1.0e3):
     """The question Avanzini & Giulietti's k* answers: the unsaturated decay rate of |ω|
@@ -317,7 +332,8 @@ def decay_rate_sweep(params, ratios=(0.3, 0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 5.0, 7.0
     return out
 
 
-@cached_result(maxsize=4)
+@cached_result(maxsize=4, reads=("envelope_dipole_field", "envelope_altitude", "envelope_inclination",
+                                  "envelope_dipole_tilt", "envelope_gain", "max_dipole", "detumble_threshold") + INERTIA)
 def basilisk_peer(params, mode="continuous", step=None):
     """The 18 Basilisk runs (the project's reference runs of Basilisk 2.12.1) with the library: the same body,
     orbit, fixed dipole, gain and limits, no gravity gradient. Returns Basilisk's and our
@@ -443,7 +459,7 @@ def triad_vs_align_vectors(samples=2000, seed=11):
             "seconds_ours": t_ours, "seconds_peer": t_peer}
 
 
-@cached_result(maxsize=4)
+@cached_result(maxsize=4, reads=SAMSAT_ORBIT + ("field_model_error", "magnetometer_noise", "rejection_margin"))
 def triad_rejection(params, samples=20000, seed=21, gross_fraction=0.05, albedo_fraction=0.10, albedo=0.35,
                     panel_noise=0.02):
     """TRIAD errors on a synthetic mix of clean and spoiled measurements, without and with
@@ -493,7 +509,7 @@ def held_limit(p):
     return float(held_bdot_rate_limit(p["on_time"], p["off_time"]))
 
 
-@cached_result(maxsize=4)
+@cached_result(maxsize=4, reads=FIG2_RUNS)
 def duty_damping(params, span=1020.0):
     """How much of the continuous mode's damping each duty-cycle estimator keeps: the drop
     of |ω| over the first ``span`` (a whole number of cycles) with the discrete mode over

@@ -36,6 +36,12 @@ INPUTS = (
     "full_run_duration",
 )
 
+#: The parameters the orbit and the satellite read (:func:`orbit_from`, :func:`satellite_from`):
+#: the simulations declare theirs from these, so that one reruns only when its own inputs change.
+ORBIT_INPUTS = ("orbit_altitude", "orbit_inclination", "earth_dipole_moment")
+SATELLITE_INPUTS = ("transverse_inertia", "axial_inertia", "magnet_moment", "rod_volume", "rod_coercivity",
+                    "rod_remanence", "rod_saturation")
+
 #: Samples per capture run are one a minute; the final regime is averaged over the last orbit.
 SAMPLE_INTERVAL = 60.0
 #: Samples of the full run from session 1: every 5 minutes (≈ 18 per orbit).
@@ -97,7 +103,8 @@ def decay_fits():
     return hours, momentum, fit_linear_decay(hours, momentum), fit_exponential_decay(hours, momentum)
 
 
-@cached_result(maxsize=4)
+@cached_result(maxsize=4, reads=ORBIT_INPUTS + SATELLITE_INPUTS + (
+    "capture_seed", "capture_members", "capture_initial_momentum", "capture_initial_nutation", "capture_duration"))
 def _capture(key):
     from ...sim import simulate_passive
 
@@ -139,8 +146,7 @@ def capture_run(params=None):
     from ...dynamics import conical_rotation_angle
 
     p = _params(params)
-    key = tuple(sorted((k, float(v)) for k, v in p.items()))
-    run, last, mean_field = _capture(key)
+    run, last, mean_field = _capture(p)
     final_angle = run.axis_field_angle[:, -last:].mean(axis=1)
     final_rate = run.rate[:, -last:].mean(axis=1)
     # the trend at the stop: a line through the orbit means of the last three orbits, per member
@@ -187,7 +193,7 @@ def decay_balance(params=None):
             "calibrated_volume": volume, "start": float(momentum[0])}
 
 
-@cached_result(maxsize=2)
+@cached_result(maxsize=2, reads=ORBIT_INPUTS + SATELLITE_INPUTS + ("capture_seed", "full_run_duration"))
 def _full(key):
     from ...io.tns0 import load_table1
     from ...sim import simulate_passive
@@ -228,7 +234,7 @@ def full_run(params=None):
     from ...io.tns0 import table1_hours
 
     p = _params(params)
-    run, direction = _full(tuple(sorted((k, float(v)) for k, v in p.items())))
+    run, direction = _full(p)
     orbit = orbit_from(p)
     hours = run.time / 3600.0
     last = max(2, int(np.ceil(orbit.period / FULL_RUN_SAMPLE_INTERVAL)))
