@@ -322,9 +322,83 @@ class _Schedule:
         return _Propagated(b_end, w_perp, time, self.dipole)
 
 
+@dataclass(frozen=True)
+class _Loop:
+    """What the inner loop needs: body, orbit, law, schedule and step counts."""
+
+    inertia: np.ndarray
+    orbit: CircularOrbit
+    mean_motion: object          # None: no gravity gradient
+    law: str
+    gain: object                 # float or (M,)
+    limit: np.ndarray            # (3,)
+    mode: str
+    estimator: str
+    timing: tuple                # (control_interval, off_time, per_sample, n_off, n_on)
+    step: float
+    n_steps: int
+    stride: int
+
+
+def _numpy_loop(loop, q0, w0):
+    """The vectorised reference: all members in each RK4 step. Returns state (7, M) and |ω| records (M, K)."""
+    members = q0.shape[0]
+    body = _Body(loop.inertia, loop.mean_motion)
+    law_fn = _law_bdot if loop.law == "bdot" else _law_projected
+
+    def dipole(b, b_rate):
+        return law_fn(b, b_rate, loop.gain, loop.limit)
+
+    h = loop.step
+    state = np.empty((7, members))
+    state[:4], state[4:] = q0.T, w0.T
+    rates = np.empty((members, loop.n_steps // loop.stride + 1))
+    rates[:, 0] = np.linalg.norm(w0, axis=-1)
+    fields = _FieldTable(loop.orbit, h, loop.n_steps)
+    schedule = _Schedule(loop.mode, loop.estimator, body, fields, dipole, *loop.timing)
+    for i in range(loop.n_steps):
+        command = schedule.command(i, i * h, state)
+        state = body.rk4(fields, i, state, h, command, dipole)
+        state[:4] /= np.sqrt(state[0] ** 2 + state[1] ** 2 + state[2] ** 2 + state[3] ** 2)
+        if (i + 1) % loop.stride == 0:
+            rates[:, (i + 1) // loop.stride] = np.sqrt(state[4] ** 2 + state[5] ** 2 + state[6] ** 2)
+    return state, rates
+
+
+def _compiled_loop(loop, q0, w0):
+    """The same loop compiled (:func:`magbench.sim._detumble_kernel.advance_block`), block by
+    block of the field table. Returns state (7, M) and |ω| records (M, K)."""
+    from ._detumble_kernel import LAW, advance_block
+
+    members = q0.shape[0]
+    state = np.ascontiguousarray(np.concatenate([q0, w0], axis=-1))
+    rates = np.empty((members, loop.n_steps // loop.stride + 1))
+    rates[:, 0] = np.linalg.norm(w0, axis=-1)
+    diag = loop.inertia.shape != (3, 3)
+    jd = np.ascontiguousarray(np.broadcast_to(loop.inertia, (members, 3)) if diag else np.ones((members, 3)))
+    jt = np.eye(3) if diag else np.ascontiguousarray(loop.inertia)
+    jinv = np.eye(3) if diag else np.linalg.inv(jt)
+    gain = np.ascontiguousarray(np.broadcast_to(np.asarray(loop.gain, dtype=float), (members,)))
+    delta, t_off, per_sample, n_off, n_on = loop.timing
+    schedule = np.array([MODES.index(loop.mode), per_sample, n_off, n_on, loop.estimator == "hold", delta, t_off],
+                        dtype=float)
+    how = np.full(members, LAW, dtype=np.int64)
+    held, window, previous = np.zeros((members, 3)), np.zeros((members, 3)), np.zeros((members, 4))
+    gg = 0.0 if loop.mean_motion is None else 3.0 * loop.mean_motion ** 2
+    fields = _FieldTable(loop.orbit, loop.step, loop.n_steps)
+    for start in range(0, loop.n_steps, fields.block):
+        fields._index(start, 0)                     # fill the table for this block
+        table = [a if a.ndim == 3 else a[:, :, None] for a in (fields.b, fields.b_rate, fields.radial)]
+        count = min(fields.block, loop.n_steps - start)
+        advance_block(state, start, count, loop.step, *table, schedule, how, held, window, previous, gain,
+                      np.ascontiguousarray(loop.limit, dtype=float), loop.law == "projected", gg, diag, jd, jt, jinv,
+                      loop.stride, rates)
+    return state.T, rates
+
+
 def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dipole, law="bdot",
                       mode="continuous", control_interval=0.1, on_time=16.0, off_time=1.0, estimator="model",
-                      step=None, gravity_gradient=True, record_interval=None):
+                      step=None, gravity_gradient=True, record_interval=None, engine="compiled"):
     r"""Simulate B-dot detumbling of M members at once (RK4, fixed step).
 
     Parameters
@@ -372,6 +446,11 @@ def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dip
         Interval between records of |ω|; a whole number of steps [s]. Default 1 s, or,
         with a given ``step``, the whole number of steps nearest 1 s (at least one: a 2 s
         step records every 2 s).
+    engine : {"compiled", "numpy"}, optional
+        "compiled": the numba loop of :mod:`magbench.sim._detumble_kernel`, one member at a
+        time; "numpy": the vectorised reference loop, all members in each step. The same
+        numbers to the last bit; duty mode with the "propagate" estimator always runs the
+        numpy loop [-].
 
     Returns
     -------
@@ -427,29 +506,17 @@ def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dip
     n_steps = (n_records - 1) * stride
     check_member_steps(members, n_steps)
 
-    body = _Body(j, orbit.mean_motion if gravity_gradient else None)
-    law_fn = _law_bdot if law == "bdot" else _law_projected
-    kk = k[:, 0] if k.ndim == 2 else k
+    law_kk = k[:, 0] if k.ndim == 2 else k
     lim = np.broadcast_to(limit, (3,))
-
-    def dipole(b, b_rate):
-        return law_fn(b, b_rate, kk, lim)
-
-    state = np.empty((7, members))
-    state[:4], state[4:] = q0.T, w0.T
-    rates = np.empty((members, n_records))
-    rates[:, 0] = np.linalg.norm(w0, axis=-1)
-    fields = _FieldTable(orbit, h, n_steps)
-    schedule = _Schedule(mode, estimator, body, fields, dipole, delta, t_off, per_sample, n_off, n_on)
-    for i in range(n_steps):
-        command = schedule.command(i, i * h, state)
-        state = body.rk4(fields, i, state, h, command, dipole)
-        state[:4] /= np.sqrt(state[0] ** 2 + state[1] ** 2 + state[2] ** 2 + state[3] ** 2)
-        if (i + 1) % stride == 0:
-            rates[:, (i + 1) // stride] = np.sqrt(state[4] ** 2 + state[5] ** 2 + state[6] ** 2)
+    if engine not in ("compiled", "numpy"):
+        raise ValueError(f"engine must be 'compiled' or 'numpy', got {engine!r}")
+    loop = _Loop(j, orbit, orbit.mean_motion if gravity_gradient else None, law, law_kk, lim, mode, estimator,
+                 (delta, t_off, per_sample, n_off, n_on), h, n_steps, stride)
+    compiled = engine == "compiled" and not (mode == "duty" and estimator == "propagate")
+    state, rates = (_compiled_loop if compiled else _numpy_loop)(loop, q0, w0)
     inputs = dict(inertia=j, orbit=orbit, attitude=q0, rate=w0, duration=span, gain=gain, max_dipole=max_dipole,
                   law=law, mode=mode, control_interval=delta, on_time=t_on, off_time=t_off, estimator=estimator,
-                  step=h, gravity_gradient=bool(gravity_gradient), record_interval=every)
+                  step=h, gravity_gradient=bool(gravity_gradient), record_interval=every, engine=engine)
     return DetumbleRun(np.arange(n_records) * every, rates, state[4:].T.copy(), state[:4].T.copy(), inputs)
 
 

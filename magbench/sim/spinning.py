@@ -9,10 +9,11 @@ orbit of :class:`magbench.earth.CircularOrbit` and the one fixed-step
 simulation is adaptive (:func:`scipy.integrate.solve_ivp`, DOP853): the spin period is
 1/2800 of the orbit and a fixed step fine enough would cost more than the error control.
 
-The SI right-hand side is written in scalar ``math`` operations: five orbits need about
-a million evaluations, and the same equations on small numpy arrays run twenty times
-slower (``rotor_spin.md`` §9 "Speed"); a test checks it against the numpy composition of
-:func:`magbench.dynamics.gyrostat_rhs` and the laws.
+The SI right-hand side is written in scalar ``math`` operations and compiled
+(:mod:`magbench.sim._rotor_kernel`): five orbits need about a million evaluations, the same
+equations on small numpy arrays run twenty times slower (``rotor_spin.md`` §9 "Speed") and
+in Python about ten; a test checks it against the numpy composition of
+:func:`magbench.dynamics.gyrostat_rhs` and the laws, another against its own uncompiled source.
 
 ``omega`` (the body's angular-velocity vector of a run) is a name of the chapter-6
 contract (``rotor_spin.md`` §15).
@@ -33,6 +34,7 @@ from ..dynamics.rigid_body import _inertia_matrix
 from ..earth.circular_orbit import CircularOrbit
 from ..earth.dipole import dipole_equatorial_b
 from ..earth.orbit import orbital_dipole_b
+from ._rotor_kernel import rotor_constants, rotor_controller, rotor_rhs
 from .integrate import rk4_step
 from .result import SimulationResult
 
@@ -613,92 +615,12 @@ def simulate_rotor_normalised(axial_ratio, momentum, restoring, damping, inclina
                                     "real_node_phase": float(real_node_phase)})
 
 
-def _body_model(satellite, orbit, damping):
-    """The scalar right-hand side and the controller of :func:`simulate_rotor` (closures)."""
-    j = satellite.inertia_matrix
-    jinv = np.linalg.inv(j)
-    (j00, j01, j02), (j10, j11, j12), (j20, j21, j22) = j.tolist()
-    (i00, i01, i02), (i10, i11, i12), (i20, i21, i22) = jinv.tolist()
-    n = orbit.mean_motion
-    u0 = float(orbit.argument_of_latitude0)
-    inc = orbit.inclination
-    si, ci = math.sin(inc), math.cos(inc)
-    b0 = float(dipole_equatorial_b(orbit.earth_moment, orbit.radius))
-    sd, cd = math.sin(orbit.dipole_tilt), math.cos(orbit.dipole_tilt)
-    h0, hr = satellite.axial_momentum, satellite.rotor_inertia * satellite.rotor_rate
-    a_ax, b_tr = j00, satellite.transverse_inertia
-    k, kw, lim = satellite.restoring_gain, satellite.damping_gain, satellite.moment_limit
-    m2_scale = h0 * n / (b0 * si)
-    node, lam0, earth = orbit.ascending_node, orbit.dipole_longitude, orbit.earth_rotation_rate
-    momentum = damping == "momentum"
-    n2 = 3.0 * n * n
-
-    def controller(t, q0, q1, q2, q3, w1, w2, w3):
-        s = 2.0 / (q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
-        # R(q) (body -> orbital); body components of an orbital vector v are Rᵀ v.
-        r00, r01, r02 = 1.0 - s * (q2 * q2 + q3 * q3), s * (q1 * q2 - q0 * q3), s * (q1 * q3 + q0 * q2)
-        r10, r11, r12 = s * (q1 * q2 + q0 * q3), 1.0 - s * (q1 * q1 + q3 * q3), s * (q2 * q3 - q0 * q1)
-        r20, r21, r22 = s * (q1 * q3 - q0 * q2), s * (q2 * q3 + q0 * q1), 1.0 - s * (q1 * q1 + q2 * q2)
-        u = u0 + n * t
-        su, cu = math.sin(u), math.cos(u)
-        # real field: Kovalenko (1975) eq. (2.36), Λ = Ω − λ_N(t) − π/2
-        lam = node - (lam0 + earth * t) - 0.5 * math.pi
-        av = si * cd - ci * sd * math.cos(lam)
-        sv = sd * math.sin(lam)
-        f1 = b0 * (cu * av + su * sv)
-        f2 = b0 * (si * sd * math.cos(lam) + ci * cd)
-        f3 = -2.0 * b0 * (su * av - cu * sv)
-        bb1 = r00 * f1 + r10 * f2 + r20 * f3
-        bb2 = r01 * f1 + r11 * f2 + r21 * f3
-        bb3 = r02 * f1 + r12 * f2 + r22 * f3
-        # semi-body triad from the orbit normal o2 = C e2 (row 1 of R)
-        o1, o2, o3 = r10, r11, r12
-        nrm = math.sqrt(o2 * o2 + o3 * o3)
-        if nrm > 1e-12:
-            s3y, s3z = -o3 / nrm, o2 / nrm        # s3 = e1 × o2 / |·|, s2 = s3 × e1 = (0, s3z, −s3y)
-        else:
-            # rotor axis along the orbit normal (β = ±90°): the semi-body triad is undefined and
-            # the law, made for small β, has no preferred s3; any unit vector across e1 keeps the
-            # run going (a tumbling spacecraft at unstable gains can pass through it)
-            s3y, s3z = 0.0, 1.0
-        p1, p2, p3 = k * b0 * si * cu, k * b0 * ci + m2_scale * cu, -2.0 * k * b0 * si * su
-        m1 = p1
-        m2 = p2 * s3z + p3 * s3y
-        m3 = -p2 * s3y + p3 * s3z
-        href = h0 * cu * cu
-        if momentum:
-            e1 = (j00 * w1 + j01 * w2 + j02 * w3 + hr - href - b_tr * n * o1) / b_tr
-            e2 = (j10 * w1 + j11 * w2 + j12 * w3 - b_tr * n * o2) / b_tr
-            e3 = (j20 * w1 + j21 * w2 + j22 * w3 - b_tr * n * o3) / b_tr
-        else:
-            e1 = w1 - n * o1 - (href - hr) / a_ax
-            e2 = w2 - n * o2
-            e3 = w3 - n * o3
-        bsq = bb1 * bb1 + bb2 * bb2 + bb3 * bb3
-        g = kw / bsq
-        m1 += g * (e2 * bb3 - e3 * bb2)
-        m2 += g * (e3 * bb1 - e1 * bb3)
-        m3 += g * (e1 * bb2 - e2 * bb1)
-        m1, m2, m3 = (min(max(m1, -lim), lim), min(max(m2, -lim), lim), min(max(m3, -lim), lim))
-        return (m1, m2, m3), (bb1, bb2, bb3), (r20, r21, r22), (o1, o2, o3)
-
-    def rhs(t, y):
-        q0, q1, q2, q3, w1, w2, w3 = y
-        (m1, m2, m3), (bb1, bb2, bb3), (x, yy, z), (o1, o2, o3) = controller(t, q0, q1, q2, q3, w1, w2, w3)
-        jr1, jr2, jr3 = j00 * x + j01 * yy + j02 * z, j10 * x + j11 * yy + j12 * z, j20 * x + j21 * yy + j22 * z
-        t1 = m2 * bb3 - m3 * bb2 + n2 * (yy * jr3 - z * jr2)
-        t2 = m3 * bb1 - m1 * bb3 + n2 * (z * jr1 - x * jr3)
-        t3 = m1 * bb2 - m2 * bb1 + n2 * (x * jr2 - yy * jr1)
-        k1, k2, k3 = j00 * w1 + j01 * w2 + j02 * w3 + hr, j10 * w1 + j11 * w2 + j12 * w3, j20 * w1 + j21 * w2 + j22 * w3
-        g1 = t1 - (w2 * k3 - w3 * k2)
-        g2 = t2 - (w3 * k1 - w1 * k3)
-        g3 = t3 - (w1 * k2 - w2 * k1)
-        v1, v2, v3 = w1 - n * o1, w2 - n * o2, w3 - n * o3
-        return [0.5 * (-q1 * v1 - q2 * v2 - q3 * v3), 0.5 * (q0 * v1 + q2 * v3 - q3 * v2),
-                0.5 * (q0 * v2 + q3 * v1 - q1 * v3), 0.5 * (q0 * v3 + q1 * v2 - q2 * v1),
-                i00 * g1 + i01 * g2 + i02 * g3, i10 * g1 + i11 * g2 + i12 * g3, i20 * g1 + i21 * g2 + i22 * g3]
-
-    return rhs, controller
+def _body_constants(satellite, orbit, damping):
+    """The constants vector of the compiled right-hand side (:mod:`magbench.sim._rotor_kernel`)."""
+    return rotor_constants(satellite.inertia_matrix, orbit, satellite.axial_momentum,
+                           satellite.rotor_inertia * satellite.rotor_rate, satellite.transverse_inertia,
+                           satellite.restoring_gain, satellite.damping_gain, satellite.moment_limit,
+                           float(dipole_equatorial_b(orbit.earth_moment, orbit.radius)), damping == "momentum")
 
 
 def rotor_body_rhs(time, state, satellite, orbit, *, damping="rate"):
@@ -727,16 +649,16 @@ def rotor_body_rhs(time, state, satellite, orbit, *, damping="rate"):
     Notes
     -----
     Rotor slides, slides "Choice of control" and "Control implementation" (seed lines 63–87), with ``rotor_spin.md`` §8 (controller in body axes) and
-    §3 (model). Scalar code for speed; built per call here (for one evaluation);
-    :func:`simulate_rotor` builds it once.
+    §3 (model). The compiled scalar kernel :func:`magbench.sim._rotor_kernel.rotor_rhs` that
+    :func:`simulate_rotor` integrates.
     """
     _check_satellite(satellite)
     _check_orbit(orbit)
     x = as_finite("state", state)
     if x.shape != (7,):
         raise ValueError(f"state must have shape (7,), got shape {x.shape}")
-    rhs, _ = _body_model(satellite, orbit, as_choice("damping", damping, DAMPING))
-    return rhs(float(as_finite("time", time)), x.tolist())
+    constants = _body_constants(satellite, orbit, as_choice("damping", damping, DAMPING))
+    return rotor_rhs(float(as_finite("time", time)), np.ascontiguousarray(x, dtype=float), constants).tolist()
 
 
 def simulate_rotor(satellite, orbit, duration, *, initial_angles=(0.0, 0.0, 0.0), initial_rate_error=(0.0, 0.0, 0.0),
@@ -800,10 +722,10 @@ def simulate_rotor(satellite, orbit, duration, *, initial_angles=(0.0, 0.0, 0.0)
     s_ref0 = (satellite.axial_momentum * math.cos(u0) ** 2 - hr) / a_ax
     w0 = n * c0[:, 1] + s_ref0 * np.array([1.0, 0.0, 0.0]) + dw
     q0 = Rotation.from_matrix(c0.T).as_quat(scalar_first=True)
-    rhs, controller = _body_model(satellite, orbit, damping)
+    constants = _body_constants(satellite, orbit, damping)
     samples = np.arange(0.0, t_end * (1.0 + 1e-12), dt)
-    sol = solve_ivp(rhs, (0.0, float(samples[-1])), np.concatenate([q0, w0]), method=method, t_eval=samples,
-                    rtol=rtol, atol=atol)
+    sol = solve_ivp(rotor_rhs, (0.0, float(samples[-1])), np.concatenate([q0, w0]), method=method, t_eval=samples,
+                    rtol=rtol, atol=atol, args=(constants,))
     if not sol.success:
         raise RuntimeError(f"solve_ivp failed: {sol.message}")
     y = sol.y.T
@@ -812,9 +734,9 @@ def simulate_rotor(satellite, orbit, duration, *, initial_angles=(0.0, 0.0, 0.0)
     c = Rotation.from_quat(q, scalar_first=True).as_matrix().transpose(0, 2, 1)
     dipole, torque = np.empty((samples.size, 3)), np.empty((samples.size, 3))
     for n_s, (t, row) in enumerate(zip(samples, y)):
-        m, b, _, _ = controller(t, *row.tolist())
-        dipole[n_s] = m
-        torque[n_s] = np.cross(m, b)
+        out = rotor_controller(float(t), *row.tolist(), constants)
+        dipole[n_s] = out[:3]
+        torque[n_s] = np.cross(out[:3], out[3:6])
     u = u0 + n * samples
     return RotorRun(time=samples, argument_of_latitude=u, attitude=q, angles=np.stack(airplane_231_angles(c), axis=1),
                     omega=omega, pointing_error=np.arccos(np.clip(c[:, 0, 0], -1.0, 1.0)), spin_rate=omega[:, 0],

@@ -149,6 +149,23 @@ def test_scalar_body_rhs_is_the_composition_of_the_library_pieces(damping):
         assert_allclose(got, expected, rtol=1e-9, atol=1e-15)
 
 
+@pytest.mark.parametrize("damping", ["rate", "momentum"])
+def test_compiled_body_rhs_equals_its_uncompiled_source(damping):
+    # The kernel and its own source run by Python: no fast-math, so every operation and its
+    # order are Python's and the results are equal to the last bit (also the controller's).
+    from magbench.sim._rotor_kernel import rotor_controller, rotor_rhs
+    from magbench.sim.spinning import _body_constants
+
+    inertia = np.array([[0.2, 0.002, -0.001], [0.002, 0.1875, 0.0005], [-0.001, 0.0005, 0.3125]])
+    constants = _body_constants(_satellite(inertia), _tilted_orbit(), damping)
+    rng = np.random.default_rng(5)
+    for _ in range(20):
+        t, q, w = rng.uniform(0, 6000), rng.normal(size=4), rng.normal(size=3) * 1e-2 + [-np.pi, 0, 0]
+        y = np.concatenate([q / np.linalg.norm(q), w])
+        np.testing.assert_array_equal(rotor_rhs(t, y, constants), rotor_rhs.py_func(t, y, constants))
+        assert rotor_controller(t, *y, constants) == rotor_controller.py_func(t, *y, constants)
+
+
 def test_si_run_matches_the_normalised_model_for_the_symmetric_body():
     """Same start in both models (rotor_spin.md §4 mapping); a slow spin keeps the test quick:
     the spin does not enter the symmetric model."""
