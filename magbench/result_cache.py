@@ -33,7 +33,8 @@ __all__ = ["RESULT_CACHE_ENV", "cached_result", "disabled", "disk_cached", "exte
 RESULT_CACHE_ENV = "MAGBENCH_RESULT_CACHE"
 
 _PACKAGE = Path(__file__).resolve().parent
-_disabled = 0
+_disabled = 0              # depth of disabled() blocks: no disk at all
+_unkeyed_disabled = 0      # depth of disabled(studies=False) blocks: the studies keep the disk
 
 
 @functools.lru_cache(maxsize=1)
@@ -85,11 +86,12 @@ def inputs_fingerprint():
     return hashlib.sha256(_library_digest().encode() + external_inputs()).hexdigest()
 
 
-def result_cache_folder():
+def result_cache_folder(study=False):
     """The folder results go to in this process (``$MAGBENCH_RESULT_CACHE`` / the first 16
-    digits of :func:`inputs_fingerprint`), or None when the disk cache is off."""
+    digits of :func:`inputs_fingerprint`), or None when the disk cache is off (for a
+    :func:`cached_result` function if ``study``, else for :func:`disk_cached`)."""
     base = os.environ.get(RESULT_CACHE_ENV)
-    if not base or _disabled:
+    if not base or _disabled or (_unkeyed_disabled and not study):
         return None
     return Path(base).resolve() / inputs_fingerprint()[:16]
 
@@ -129,16 +131,28 @@ def _call(folder, func, args, kwargs):
 
 
 @contextlib.contextmanager
-def disabled():
+def disabled(studies=True):
     """Within the block, results are neither read from nor written to disk (for code that
     changes the library's inputs behind its arguments' back, as the input sweep does).
-    The in-memory layer stays: it is keyed on the arguments alone, as it always was."""
-    global _disabled
-    _disabled += 1
+    The in-memory layer stays: it is keyed on the arguments alone, as it always was.
+
+    With ``studies=False`` only :func:`disk_cached`'s callers (a figure's numbers, a
+    chapter's rows: keyed on an id and what they were given, not on the chapter
+    parameters they may read themselves) lose the disk; the :func:`cached_result`
+    functions keep it, keyed on every input they read, so that the input sweep loads a
+    study no scaled input touches instead of computing it again."""
+    global _disabled, _unkeyed_disabled
+    if studies:
+        _disabled += 1
+    else:
+        _unkeyed_disabled += 1
     try:
         yield
     finally:
-        _disabled -= 1
+        if studies:
+            _disabled -= 1
+        else:
+            _unkeyed_disabled -= 1
 
 
 def cached_result(func=None, *, maxsize=4, reads=None):
@@ -159,7 +173,8 @@ def cached_result(func=None, *, maxsize=4, reads=None):
         return functools.partial(cached_result, maxsize=maxsize, reads=reads)
 
     def _from_disk_or_computed(*args, **kwargs):
-        return disk_cached(func, *args, **kwargs)
+        folder = result_cache_folder(study=True)
+        return func(*args, **kwargs) if folder is None else _call(str(folder), func, args, kwargs)
 
     cached = functools.lru_cache(maxsize=maxsize)(_from_disk_or_computed)
     if reads is None:

@@ -141,3 +141,19 @@ def test_figure_data_is_fresh_each_call(cache_dir):
     a = figures.compute("thesis-fig01")
     b = figures.compute("thesis-fig01")
     assert a is not b and a.id == b.id == "thesis-fig01"
+
+
+def test_disabled_but_for_studies_keeps_the_studies_on_disk(cache_dir):
+    # The input sweep's mode: a study is keyed on every input it reads, so its disk entry is
+    # safe to share; a plain disk_cached call is not (it may read parameters behind its key).
+    STUDY_CALLS.clear()
+    _study.cache_clear()
+    with result_cache.disabled(studies=False):
+        assert result_cache.result_cache_folder() is None
+        assert result_cache.result_cache_folder(study=True) is not None
+        _study({"a": 1.0, "b": 2.0})
+        _study.cache_clear()                   # another process
+        _study({"a": 1.0, "b": 2.0})
+    assert len(STUDY_CALLS) == 1 and any(cache_dir.rglob("output.pkl"))
+    with result_cache.disabled():
+        assert result_cache.result_cache_folder(study=True) is None

@@ -63,9 +63,11 @@ class _Tracking(dict):
 
 
 class _Scaled:
-    """Context: the chapter's source parameter set with one value multiplied (and the
-    disk result cache off: a figure that reads the parameter set itself is keyed on its
-    arguments only, which the scaling does not change)."""
+    """Context: the chapter's source parameter set with one value multiplied, and the disk
+    result cache off for a figure's numbers and a chapter's rows (keyed on their arguments
+    only, which the scaling does not change when they read the parameter set themselves).
+    The studies keep it: each is keyed on every input it reads, so a study the scaled
+    input does not touch is loaded (from the book's run or another case), not computed."""
 
     def __init__(self, key, name=None, factor=1.0):
         self.source = chapters.chapter(key).source
@@ -84,7 +86,7 @@ class _Scaled:
 
         _base.load_parameter_set = scaled
         _figures._PARAMETERS.clear()    # figure defaults are read from the parameter set once
-        self.no_disk = result_cache.disabled()
+        self.no_disk = result_cache.disabled(studies=False)
         self.no_disk.__enter__()
         return self
 
