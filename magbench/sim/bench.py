@@ -45,6 +45,7 @@ unstable when read in SI (the thesis states no units for them; see
 """
 
 from dataclasses import dataclass, replace
+from functools import cached_property
 
 import numpy as np
 
@@ -147,14 +148,16 @@ class BenchSetup:
         return Mockup(self.inertia, self.field, thread_stiffness=self.thread_stiffness,
                       thread_neutral_angle=self.thread_neutral_angle)
 
-    @property
+    # Cached on the (frozen) instance: the controller reads both at every sample, and
+    # computing them again (with their argument checks) was half the time of a bench run.
+    @cached_property
     def full_scale_moments(self):
         """Moments of the two coils at full duty, (m1, m2) [A·m²]."""
         return coil_full_scale_moment(self.supply_voltage - self.driver_voltage_drop,
                                       np.asarray(self.coil_resistance, float), self.coil_turns,
                                       self.coil_side)
 
-    @property
+    @cached_property
     def moment_limit(self):
         """Largest moment the controller commands: the weaker coil's full scale [A·m²]."""
         return float(np.min(self.full_scale_moments))
