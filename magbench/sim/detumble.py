@@ -6,7 +6,10 @@ modes) with Kovalenko (1975) ch. 5–6 (detumbling, its time estimates). Compose
 laws of :mod:`magbench.control`, integrated with the classical RK4 scheme of
 :func:`magbench.sim.rk4_step`, written out on component arrays (one (M,) array per vector
 component) because the general (M, 3) form spent most of a step stacking arrays: the same
-numbers to ~1e-14, about 2x faster at 1000 members.
+numbers to ~1e-14, about 2x faster at 1000 members. That numpy loop is the reference; runs
+go through its compiled twin (:mod:`magbench.sim._detumble_kernel`), which repeats its
+operations in scalar code, member by member, and gives the same numbers to the last bit
+(40-100 times faster at a few members, where numpy's per-call overhead dominates).
 
 ``omega`` (the angular-velocity vector, final state of a run) is a name of the chapter-5
 contract (``shared/reference/bdot_triad.md`` §9); ``rate`` is its magnitude.
@@ -150,6 +153,12 @@ class _FieldTable:
         if self.start is None or not self.start <= i < self.start + self.block:
             self._fill(i - i % self.block)
         return 2 * (i - self.start) + stage
+
+    def block_at(self, start):
+        """The table of the block of steps from ``start`` (a multiple of :attr:`block`): B,
+        Ḃ and the radial unit vector, each (3, 2·count + 1, M or 1)."""
+        self._index(start, 0)
+        return tuple(a if a.ndim == 3 else a[:, :, None] for a in (self.b, self.b_rate, self.radial))
 
     def field(self, i, stage):
         n = self._index(i, stage)
@@ -387,10 +396,8 @@ def _compiled_loop(loop, q0, w0):
     gg = 0.0 if loop.mean_motion is None else 3.0 * loop.mean_motion ** 2
     fields = _FieldTable(loop.orbit, loop.step, loop.n_steps)
     for start in range(0, loop.n_steps, fields.block):
-        fields._index(start, 0)                     # fill the table for this block
-        table = [a if a.ndim == 3 else a[:, :, None] for a in (fields.b, fields.b_rate, fields.radial)]
         count = min(fields.block, loop.n_steps - start)
-        advance_block(state, start, count, loop.step, *table, schedule, how, held, window, previous, gain,
+        advance_block(state, start, count, loop.step, *fields.block_at(start), schedule, how, held, window, previous, gain,
                       np.ascontiguousarray(loop.limit, dtype=float), loop.law == "projected", gg, diag, jd, jt, jinv,
                       loop.stride, rates)
     return state.T, rates
