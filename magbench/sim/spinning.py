@@ -34,7 +34,6 @@ from ..dynamics.rigid_body import _inertia_matrix
 from ..earth.circular_orbit import CircularOrbit
 from ..earth.dipole import dipole_equatorial_b
 from ..earth.orbit import orbital_dipole_b
-from ._rotor_kernel import rotor_constants, rotor_controller, rotor_rhs
 from .integrate import rk4_step
 from .result import SimulationResult
 
@@ -617,6 +616,8 @@ def simulate_rotor_normalised(axial_ratio, momentum, restoring, damping, inclina
 
 def _body_constants(satellite, orbit, damping):
     """The constants vector of the compiled right-hand side (:mod:`magbench.sim._rotor_kernel`)."""
+    from ._rotor_kernel import rotor_constants
+
     return rotor_constants(satellite.inertia_matrix, orbit, satellite.axial_momentum,
                            satellite.rotor_inertia * satellite.rotor_rate, satellite.transverse_inertia,
                            satellite.restoring_gain, satellite.damping_gain, satellite.moment_limit,
@@ -657,6 +658,8 @@ def rotor_body_rhs(time, state, satellite, orbit, *, damping="rate"):
     x = as_finite("state", state)
     if x.shape != (7,):
         raise ValueError(f"state must have shape (7,), got shape {x.shape}")
+    from ._rotor_kernel import rotor_rhs
+
     constants = _body_constants(satellite, orbit, as_choice("damping", damping, DAMPING))
     return rotor_rhs(float(as_finite("time", time)), np.ascontiguousarray(x, dtype=float), constants).tolist()
 
@@ -722,6 +725,9 @@ def simulate_rotor(satellite, orbit, duration, *, initial_angles=(0.0, 0.0, 0.0)
     s_ref0 = (satellite.axial_momentum * math.cos(u0) ** 2 - hr) / a_ax
     w0 = n * c0[:, 1] + s_ref0 * np.array([1.0, 0.0, 0.0]) + dw
     q0 = Rotation.from_matrix(c0.T).as_quat(scalar_first=True)
+    # Imported here: numba's cache, set up at import, probes its folder with a file.
+    from ._rotor_kernel import rotor_controller, rotor_rhs
+
     constants = _body_constants(satellite, orbit, damping)
     samples = np.arange(0.0, t_end * (1.0 + 1e-12), dt)
     sol = solve_ivp(rotor_rhs, (0.0, float(samples[-1])), np.concatenate([q0, w0]), method=method, t_eval=samples,
