@@ -241,15 +241,21 @@ def envelope_distribution(params, members=None, step=None, dwell=30.0, blanking=
 
     ``blanking`` = (on, off) [s] blanks the coils ``off`` s in every ``on + off`` (the
     duty mode with exact Ḃ while on): one of the effects Cp557's README lists, the only one
-    the library models; the same members as without it."""
+    the library models; the same members as without it, with the largest step not above
+    ``integration_step`` that fits the blank a whole number of times."""
     p = dict(params)
     orbit = envelope_orbit(p)
+    h = p["integration_step"] if step is None else step
     duty = {} if blanking is None else dict(mode="duty", estimator="model", on_time=float(blanking[0]),
                                              off_time=float(blanking[1]))
+    if blanking is not None:
+        # whole steps in the blank: the largest step not above h that divides it (a 2 s step
+        # and a 1 s blank crashed; found by the input sweep)
+        h = float(blanking[1]) / np.ceil(float(blanking[1]) / h - 1e-9)
     run = detumble_monte_carlo(inertia(p), orbit, members=int(p["envelope_members"] if members is None else members),
                                seed=int(p["envelope_seed"]), duration=p["envelope_duration"],
                                rate_range=(p["envelope_rate_low"], p["envelope_rate_high"]), gain=p["envelope_gain"],
-                               max_dipole=p["max_dipole"], step=p["integration_step"] if step is None else step,
+                               max_dipole=p["max_dipole"], step=h,
                                **duty)
     threshold = p["detumble_threshold"]
     return {"initial_rate": np.linalg.norm(run.inputs["draws"]["rate"], axis=-1),
