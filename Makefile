@@ -112,7 +112,7 @@ sweep: export MAGBENCH_RESULT_CACHE = $(TEST_RESULTS)
 sweep: STAGES = _build/sweep-stages.log
 sweep: $(STAMP)
 	@mkdir -p _build && rm -f $(STAGES)
-	$(call stage,sweep,$(BIN)/python -m pytest -n 2 --dist worksteal -m "sweep or not sweep" tests/chapters/test_input_sweep.py)
+	$(call stage,sweep,$(BIN)/python -m pytest -n 2 --dist worksteal --durations=20 -m "sweep or not sweep" tests/chapters/test_input_sweep.py)
 	@$(BIN)/python tools/stages.py report $(STAGES)
 
 bench: $(STAMP)
