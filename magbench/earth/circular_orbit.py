@@ -301,6 +301,22 @@ class CircularOrbit:
            + \mathbf m\cdot\dot{\hat{\mathbf r}})\hat{\mathbf r}
            + 3(\mathbf m\cdot\hat{\mathbf r})\dot{\hat{\mathbf r}} - \dot{\mathbf m}\big].
         """
+        return self.field_rate_and_position(time)[:2]
+
+    def field_rate_and_position(self, time):
+        r""":meth:`field_and_rate` and :meth:`position` at once (one evaluation of the
+        orbit's geometry: a simulation's field table needs all three).
+
+        Parameters
+        ----------
+        time : float or array_like
+            Time since epoch [s].
+
+        Returns
+        -------
+        field, field_rate, position : ndarray, shape (..., 3)
+            B [T], dB/dt [T/s] and r [m], each equal to the separate method's.
+        """
         t = as_finite("time", time)
         radial, along = self._unit_radial_along(t)
         radial_rate = self.mean_motion * along
@@ -311,7 +327,7 @@ class CircularOrbit:
         b = scale * (3.0 * m_r * radial - m)
         m_r_rate = np.sum(m_rate * radial, axis=-1, keepdims=True) + np.sum(m * radial_rate, axis=-1, keepdims=True)
         b_rate = scale * (3.0 * m_r_rate * radial + 3.0 * m_r * radial_rate - m_rate)
-        return b, b_rate
+        return b, b_rate, self.radius * radial
 
     def field_rate(self, time):
         r"""Time derivative of the dipole field along the orbit, in inertial axes.

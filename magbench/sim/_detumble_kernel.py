@@ -130,13 +130,14 @@ def advance_block(state, start, count, h, b, b_rate, radial, schedule, how, held
     bn, br, ra = np.empty(3), np.empty(3), np.empty(3)
     half = 0.5 * h
     sixth = h / 6.0
-    for m in range(members):
-        x = state[m]
-        col = 0 if shared else m
-        k = gain[m]
-        jm = jd[m]
-        for i in range(start, start + count):
-            n = 2 * (i - start)
+    # steps outer, members inner: the field table is read along its contiguous member axis
+    for i in range(start, start + count):
+        n = 2 * (i - start)
+        for m in range(members):
+            x = state[m]
+            col = 0 if shared else m
+            k = gain[m]
+            jm = jd[m]
             if mode == 1 and i % per_sample == 0:
                 for c in range(3):
                     bn[c] = b[c, n, col]

@@ -143,8 +143,8 @@ class _FieldTable:
         count = min(self.block, self.n_steps - start)
         times = (2 * start + np.arange(2 * count + 1)) * (0.5 * self.step)
         t = times[:, None] if self.member_axis else times
-        b, b_rate = self.orbit.field_and_rate(t)
-        radial = self.orbit.position(t) / self.orbit.radius
+        b, b_rate, position = self.orbit.field_rate_and_position(t)
+        radial = position / self.orbit.radius
         # (3, T[, M]) so that one stage's component is a contiguous (M,) array or a scalar
         self.b, self.b_rate, self.radial = (np.ascontiguousarray(np.moveaxis(a, -1, 0)) for a in (b, b_rate, radial))
         self.start = start

@@ -80,6 +80,15 @@ def test_field_rate_is_the_derivative_of_field():
     assert_allclose(b, orbit.field(TIMES), rtol=0, atol=1e-18)
 
 
+def test_field_rate_and_position_at_once_equal_the_separate_methods():
+    orbit = dataclasses.replace(_tilted(), argument_of_latitude0=np.array([0.0, 1.0, 2.0]))
+    t = TIMES[:, None]
+    b, rate, position = orbit.field_rate_and_position(t)
+    # One geometry for the three: the same operations as each method alone, bit for bit.
+    for got, expected in zip((b, rate, position), (*orbit.field_and_rate(t), orbit.position(t))):
+        np.testing.assert_array_equal(got, expected)
+
+
 def test_members_on_the_leading_axis():
     phases = np.array([0.0, 1.0, 2.0])
     orbit = CircularOrbit(6871e3, 1.0, 7.7e22, phases)
