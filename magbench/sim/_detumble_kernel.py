@@ -139,8 +139,7 @@ def advance_block(state, start, count, h, b, b_rate, radial, schedule, how, held
             k = gain[m]
             jm = jd[m]
             if mode == 1 and i % per_sample == 0:
-                for c in range(3):
-                    bn[c] = b[c, n, col]
+                _load(b, b_rate, radial, n, col, bn, br, ra)
                 s0, s1, s2 = _field_body(x, bn)
                 if previous[m, 3] == 0.0:
                     held[m, 0], held[m, 1], held[m, 2] = 0.0, 0.0, 0.0
@@ -153,15 +152,13 @@ def advance_block(state, start, count, h, b, b_rate, radial, schedule, how, held
             elif mode == 2:
                 phase_step = i % (n_off + n_on)
                 if phase_step == 0:
-                    for c in range(3):
-                        bn[c] = b[c, n, col]
+                    _load(b, b_rate, radial, n, col, bn, br, ra)
                     window[m, 0], window[m, 1], window[m, 2] = _field_body(x, bn)
                     held[m, 0], held[m, 1], held[m, 2] = 0.0, 0.0, 0.0
                     how[m] = HELD
                 elif phase_step == n_off:
                     if hold:
-                        for c in range(3):
-                            bn[c] = b[c, n, col]
+                        _load(b, b_rate, radial, n, col, bn, br, ra)
                         e0, e1, e2 = _field_body(x, bn)
                         held[m, 0], held[m, 1], held[m, 2] = _dipole(
                             e0, e1, e2, (e0 - window[m, 0]) / t_off, (e1 - window[m, 1]) / t_off,
