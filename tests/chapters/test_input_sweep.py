@@ -14,7 +14,7 @@ the ``sweep`` marker, which the default suite deselects; ``make sweep`` runs eve
 chapter on both cores, and CI runs it after ``make test``. A case computes only what
 reads its input (each study is keyed on the inputs it declares; the rest comes from the
 result cache): most cases take seconds, one that reaches TNS-0's 37-day run or chapter
-5's 1000-member envelope half a minute to a minute. The whole sweep took 34 min on the
+5's 1000-member envelope half a minute to a minute. The whole sweep took 31 min on the
 2-core machine (2026-11-28), not yet the 20 the project aims at.
 """
 
