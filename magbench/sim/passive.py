@@ -334,7 +334,9 @@ def simulate_passive(satellite, orbit, angular_momentum, nutation, momentum_dire
     else:
         steps, state = _run_numpy(state, times, records, record, args, interval, limit, orbit, inertia, a, c)
     squeeze = (lambda x: x) if has_members else (lambda x: x[0])
-    signals = [squeeze(records[:, i, :].T) for i in range(5)]
+    # Contiguous copies, not strided views: a run loaded from the result cache is contiguous,
+    # and numpy sums the two layouts in different orders (a mean then differs in its last digit).
+    signals = [squeeze(np.ascontiguousarray(records[:, i, :].T)) for i in range(5)]
     inputs = {"angular_momentum": angular_momentum, "nutation": nutation, "momentum_direction": momentum_direction,
               "duration": span, "proper_rotation": proper_rotation, "sample_interval": interval,
               "max_rate_step": limit, "engine": engine, "steps": steps, "initial_attitude": q0, "initial_body_rate": w0}
