@@ -1,5 +1,5 @@
 r"""Compiled (numba) twin of :func:`magbench.sim.simulate_detumble`'s inner loop: the
-same RK4 steps, law and schedule, one member at a time in scalar code.
+same RK4 steps, law and schedule, members on the contiguous axis.
 
 Why compiled: a step of the numpy loop is ~600 elementwise operations on arrays of M
 members, and at the hundreds of members of chapter 5 numpy's per-call overhead, not the
@@ -7,6 +7,13 @@ arithmetic, sets the pace. Each operation here is the numpy loop's, in the same 
 without fast-math, so the two give the same numbers to the last bit (the tests hold them
 to it); the numpy loop stays as the reference and runs the one mode not compiled (duty
 with the "propagate" estimator).
+
+Why this layout: in each step one loop over the members carries the whole RK4 step in
+straight-line code (the law, the gravity gradient and the inertia form are chosen by
+selects, not branches), reading state, table and per-member data along their contiguous
+member axis, so the compiler runs several members per SIMD instruction. Vector lanes
+round each operation as the scalar code does, so this changes no number. The schedule's
+sampling instants (a few per hundred steps) run in their own scalar loop.
 
 The inertial field, its rate and the radial direction come from the numpy loop's field
 table (:class:`magbench.sim.detumble._FieldTable`) one block of steps at a time.
@@ -26,88 +33,113 @@ LAW, HELD = 0, 1
 
 
 @njit(cache=True, error_model="numpy")
-def _dipole(b0, b1, b2, d0, d1, d2, k, lim, projected):
-    """m = sat(−kḂ) or the projected law, per axis clipped to ±lim (control.bdot)."""
-    if projected:
-        bb = b0 * b0 + b1 * b1 + b2 * b2
-        along = (b0 * d0 + b1 * d1 + b2 * d2) / bb
-        scale = -k / bb
-        return (min(max(scale * (d0 - b0 * along), -lim[0]), lim[0]),
-                min(max(scale * (d1 - b1 * along), -lim[1]), lim[1]),
-                min(max(scale * (d2 - b2 * along), -lim[2]), lim[2]))
-    return (min(max(-k * d0, -lim[0]), lim[0]), min(max(-k * d1, -lim[1]), lim[1]),
-            min(max(-k * d2, -lim[2]), lim[2]))
+def _dipole(b0, b1, b2, d0, d1, d2, k, lim0, lim1, lim2, projected):
+    """m = sat(−kḂ) or the projected law, per axis clipped to ±lim (control.bdot); both
+    are formed and one selected, so that a loop over members stays free of branches."""
+    bb = b0 * b0 + b1 * b1 + b2 * b2
+    along = (b0 * d0 + b1 * d1 + b2 * d2) / bb
+    scale = -k / bb
+    p0, p1, p2 = scale * (d0 - b0 * along), scale * (d1 - b1 * along), scale * (d2 - b2 * along)
+    u0, u1, u2 = -k * d0, -k * d1, -k * d2
+    v0, v1, v2 = (p0, p1, p2) if projected else (u0, u1, u2)
+    return (min(max(v0, -lim0), lim0), min(max(v1, -lim1), lim1), min(max(v2, -lim2), lim2))
 
 
 @njit(cache=True, error_model="numpy")
-def _rows(x):
+def _rows(q0, q1, q2, q3):
     """R(q/|q|)ᵀ as nine floats (body components of the inertial axes)."""
-    w, qx, qy, qz = x[0], x[1], x[2], x[3]
-    s = 2.0 / (w * w + qx * qx + qy * qy + qz * qz)
-    xx, yy, zz, xy, xz, yz, wx, wy, wz = (s * qx * qx, s * qy * qy, s * qz * qz, s * qx * qy, s * qx * qz,
-                                          s * qy * qz, s * w * qx, s * w * qy, s * w * qz)
+    s = 2.0 / (q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
+    xx, yy, zz, xy, xz, yz, wx, wy, wz = (s * q1 * q1, s * q2 * q2, s * q3 * q3, s * q1 * q2, s * q1 * q3,
+                                          s * q2 * q3, s * q0 * q1, s * q0 * q2, s * q0 * q3)
     return (1.0 - yy - zz, xy + wz, xz - wy, xy - wz, 1.0 - xx - zz, yz + wx, xz + wy, yz - wx, 1.0 - xx - yy)
 
 
 @njit(cache=True, error_model="numpy")
-def _inertia_times(v0, v1, v2, diag, jd, jt):
-    if diag:
-        return jd[0] * v0, jd[1] * v1, jd[2] * v2
-    return (jt[0, 0] * v0 + jt[0, 1] * v1 + jt[0, 2] * v2, jt[1, 0] * v0 + jt[1, 1] * v1 + jt[1, 2] * v2,
-            jt[2, 0] * v0 + jt[2, 1] * v1 + jt[2, 2] * v2)
+def _inertia_times(v0, v1, v2, diag, j0, j1, j2, jt):
+    """J v: the member's principal moments (diag) or the shared tensor."""
+    d = (j0 * v0, j1 * v1, j2 * v2)
+    t = (jt[0, 0] * v0 + jt[0, 1] * v1 + jt[0, 2] * v2, jt[1, 0] * v0 + jt[1, 1] * v1 + jt[1, 2] * v2,
+         jt[2, 0] * v0 + jt[2, 1] * v1 + jt[2, 2] * v2)
+    return d if diag else t
 
 
 @njit(cache=True, error_model="numpy")
-def _inertia_solve(v0, v1, v2, diag, jd, jinv):
-    if diag:
-        return v0 / jd[0], v1 / jd[1], v2 / jd[2]
-    return (jinv[0, 0] * v0 + jinv[0, 1] * v1 + jinv[0, 2] * v2, jinv[1, 0] * v0 + jinv[1, 1] * v1
-            + jinv[1, 2] * v2, jinv[2, 0] * v0 + jinv[2, 1] * v1 + jinv[2, 2] * v2)
+def _inertia_solve(v0, v1, v2, diag, j0, j1, j2, jinv):
+    """J⁻¹ v, as :func:`_inertia_times` chooses J."""
+    d = (v0 / j0, v1 / j1, v2 / j2)
+    t = (jinv[0, 0] * v0 + jinv[0, 1] * v1 + jinv[0, 2] * v2, jinv[1, 0] * v0 + jinv[1, 1] * v1 + jinv[1, 2] * v2,
+         jinv[2, 0] * v0 + jinv[2, 1] * v1 + jinv[2, 2] * v2)
+    return d if diag else t
 
 
 @njit(cache=True, error_model="numpy")
-def _rhs(x, bn, br, ra, how, held, k, lim, projected, gg, diag, jd, jt, jinv, out):
+def _rhs(q0, q1, q2, q3, w0, w1, w2, bn0, bn1, bn2, br0, br1, br2, ra0, ra1, ra2, law, h0, h1, h2, k,
+         lim0, lim1, lim2, projected, gg, diag, j0, j1, j2, jt, jinv):
     """(q̇, ω̇) of one member: the numpy loop's ``_Body.rhs``, operation for operation."""
-    r00, r01, r02, r10, r11, r12, r20, r21, r22 = _rows(x)
-    w0, w1, w2 = x[4], x[5], x[6]
-    b0 = r00 * bn[0] + r01 * bn[1] + r02 * bn[2]
-    b1 = r10 * bn[0] + r11 * bn[1] + r12 * bn[2]
-    b2 = r20 * bn[0] + r21 * bn[1] + r22 * bn[2]
-    if how == LAW:                   # the on-board models: exact Ḃ in body axes
-        c0, c1, c2 = w1 * b2 - w2 * b1, w2 * b0 - w0 * b2, w0 * b1 - w1 * b0
-        m0, m1, m2 = _dipole(b0, b1, b2, (r00 * br[0] + r01 * br[1] + r02 * br[2]) - c0,
-                             (r10 * br[0] + r11 * br[1] + r12 * br[2]) - c1,
-                             (r20 * br[0] + r21 * br[1] + r22 * br[2]) - c2, k, lim, projected)
-    else:
-        m0, m1, m2 = held[0], held[1], held[2]
+    r00, r01, r02, r10, r11, r12, r20, r21, r22 = _rows(q0, q1, q2, q3)
+    b0 = r00 * bn0 + r01 * bn1 + r02 * bn2
+    b1 = r10 * bn0 + r11 * bn1 + r12 * bn2
+    b2 = r20 * bn0 + r21 * bn1 + r22 * bn2
+    # the on-board models: exact Ḃ in body axes (formed for every member, used where law)
+    c0, c1, c2 = w1 * b2 - w2 * b1, w2 * b0 - w0 * b2, w0 * b1 - w1 * b0
+    l0, l1, l2 = _dipole(b0, b1, b2, (r00 * br0 + r01 * br1 + r02 * br2) - c0, (r10 * br0 + r11 * br1 + r12 * br2) - c1,
+                         (r20 * br0 + r21 * br1 + r22 * br2) - c2, k, lim0, lim1, lim2, projected)
+    m0, m1, m2 = (l0, l1, l2) if law else (h0, h1, h2)
     t0, t1, t2 = m1 * b2 - m2 * b1, m2 * b0 - m0 * b2, m0 * b1 - m1 * b0
+    p0 = r00 * ra0 + r01 * ra1 + r02 * ra2
+    p1 = r10 * ra0 + r11 * ra1 + r12 * ra2
+    p2 = r20 * ra0 + r21 * ra1 + r22 * ra2
+    i0, i1, i2 = _inertia_times(p0, p1, p2, diag, j0, j1, j2, jt)
+    g0, g1, g2 = t0 + gg * (p1 * i2 - p2 * i1), t1 + gg * (p2 * i0 - p0 * i2), t2 + gg * (p0 * i1 - p1 * i0)
     if gg > 0.0:
-        p0 = r00 * ra[0] + r01 * ra[1] + r02 * ra[2]
-        p1 = r10 * ra[0] + r11 * ra[1] + r12 * ra[2]
-        p2 = r20 * ra[0] + r21 * ra[1] + r22 * ra[2]
-        i0, i1, i2 = _inertia_times(p0, p1, p2, diag, jd, jt)
-        t0, t1, t2 = t0 + gg * (p1 * i2 - p2 * i1), t1 + gg * (p2 * i0 - p0 * i2), t2 + gg * (p0 * i1 - p1 * i0)
-    h0, h1, h2 = _inertia_times(w0, w1, w2, diag, jd, jt)
-    out[4], out[5], out[6] = _inertia_solve(t0 - (w1 * h2 - w2 * h1), t1 - (w2 * h0 - w0 * h2),
-                                            t2 - (w0 * h1 - w1 * h0), diag, jd, jinv)
-    qw, qx, qy, qz = x[0], x[1], x[2], x[3]
-    out[0] = -0.5 * (qx * w0 + qy * w1 + qz * w2)
-    out[1] = 0.5 * (qw * w0 + qy * w2 - qz * w1)
-    out[2] = 0.5 * (qw * w1 - qx * w2 + qz * w0)
-    out[3] = 0.5 * (qw * w2 + qx * w1 - qy * w0)
+        t0, t1, t2 = g0, g1, g2
+    a0, a1, a2 = _inertia_times(w0, w1, w2, diag, j0, j1, j2, jt)
+    d4, d5, d6 = _inertia_solve(t0 - (w1 * a2 - w2 * a1), t1 - (w2 * a0 - w0 * a2), t2 - (w0 * a1 - w1 * a0),
+                                diag, j0, j1, j2, jinv)
+    return (-0.5 * (q1 * w0 + q2 * w1 + q3 * w2), 0.5 * (q0 * w0 + q2 * w2 - q3 * w1),
+            0.5 * (q0 * w1 - q1 * w2 + q3 * w0), 0.5 * (q0 * w2 + q1 * w1 - q2 * w0), d4, d5, d6)
 
 
 @njit(cache=True, error_model="numpy")
-def _field_body(x, bn):
-    r00, r01, r02, r10, r11, r12, r20, r21, r22 = _rows(x)
-    return (r00 * bn[0] + r01 * bn[1] + r02 * bn[2], r10 * bn[0] + r11 * bn[1] + r12 * bn[2],
-            r20 * bn[0] + r21 * bn[1] + r22 * bn[2])
+def _field_body(state, m, b, n):
+    """The member's inertial field at table row n, in body axes."""
+    r00, r01, r02, r10, r11, r12, r20, r21, r22 = _rows(state[0, m], state[1, m], state[2, m], state[3, m])
+    bn0, bn1, bn2 = b[0, n, m], b[1, n, m], b[2, n, m]
+    return (r00 * bn0 + r01 * bn1 + r02 * bn2, r10 * bn0 + r11 * bn1 + r12 * bn2, r20 * bn0 + r21 * bn1 + r22 * bn2)
 
 
 @njit(cache=True, error_model="numpy")
-def _load(b, b_rate, radial, n, col, bn, br, ra):
-    for c in range(3):
-        bn[c], br[c], ra[c] = b[c, n, col], b_rate[c, n, col], radial[c, n, col]
+def _sample(i, n, state, b, schedule, how, held, window, previous, gain, lim, projected):
+    """The schedule at step i: a new held dipole or law where a sampling instant falls."""
+    mode, per_sample, n_off, n_on = int(schedule[0]), int(schedule[1]), int(schedule[2]), int(schedule[3])
+    hold, delta, t_off = schedule[4] != 0.0, schedule[5], schedule[6]
+    phase_step = i % (n_off + n_on) if mode == 2 else -1
+    if not ((mode == 1 and i % per_sample == 0) or phase_step == 0 or phase_step == n_off):
+        return
+    for m in range(state.shape[1]):
+        k = gain[m]
+        if mode == 1:
+            s0, s1, s2 = _field_body(state, m, b, n)
+            if previous[3, m] == 0.0:
+                held[0, m], held[1, m], held[2, m] = 0.0, 0.0, 0.0
+            else:
+                held[0, m], held[1, m], held[2, m] = _dipole(
+                    s0, s1, s2, (s0 - previous[0, m]) / delta, (s1 - previous[1, m]) / delta,
+                    (s2 - previous[2, m]) / delta, k, lim[0], lim[1], lim[2], projected)
+            previous[0, m], previous[1, m], previous[2, m], previous[3, m] = s0, s1, s2, 1.0
+            how[m] = HELD
+        elif phase_step == 0:
+            window[0, m], window[1, m], window[2, m] = _field_body(state, m, b, n)
+            held[0, m], held[1, m], held[2, m] = 0.0, 0.0, 0.0
+            how[m] = HELD
+        elif hold:
+            e0, e1, e2 = _field_body(state, m, b, n)
+            held[0, m], held[1, m], held[2, m] = _dipole(
+                e0, e1, e2, (e0 - window[0, m]) / t_off, (e1 - window[1, m]) / t_off,
+                (e2 - window[2, m]) / t_off, k, lim[0], lim[1], lim[2], projected)
+            how[m] = HELD
+        else:
+            how[m] = LAW
 
 
 @njit(cache=True, error_model="numpy")
@@ -115,74 +147,56 @@ def advance_block(state, start, count, h, b, b_rate, radial, schedule, how, held
                   projected, gg, diag, jd, jt, jinv, stride, rates):
     """Advance every member over steps ``start`` … ``start + count − 1`` in place.
 
-    state (M, 7); b, b_rate, radial (3, 2·count + 1, M or 1): the field table of the block;
+    state (7, M); b, b_rate, radial (3, 2·count + 1, M): the field table of the block;
     schedule = (mode, per_sample, n_off, n_on, hold, delta, t_off) with mode 0/1/2 for
-    continuous/sampled/duty and hold 1 for the "hold" estimator; how, held, window,
-    previous: each member's command (kept across blocks; previous[m, 3] = 1 once sampled);
-    gain (M,); jd (M, 3) principal moments (diag) or jt, jinv (3, 3); rates (M, K) |ω| at
-    every ``stride`` steps.
+    continuous/sampled/duty and hold 1 for the "hold" estimator; how (M,), held, window
+    (3, M), previous (4, M): each member's command (kept across blocks; previous[3] = 1
+    once sampled); gain (M,); jd (3, M) principal moments (diag) or jt, jinv (3, 3); rates
+    (M, K) |ω| at every ``stride`` steps.
     """
-    members = state.shape[0]
-    mode, per_sample, n_off, n_on = int(schedule[0]), int(schedule[1]), int(schedule[2]), int(schedule[3])
-    hold, delta, t_off = schedule[4] != 0.0, schedule[5], schedule[6]
-    shared = b.shape[2] == 1
-    k1, k2, k3, k4, tmp = np.empty(7), np.empty(7), np.empty(7), np.empty(7), np.empty(7)
-    bn, br, ra = np.empty(3), np.empty(3), np.empty(3)
+    members = state.shape[1]
+    lim0, lim1, lim2 = lim[0], lim[1], lim[2]
     half = 0.5 * h
     sixth = h / 6.0
-    # steps outer, members inner: the field table is read along its contiguous member axis
     for i in range(start, start + count):
         n = 2 * (i - start)
+        _sample(i, n, state, b, schedule, how, held, window, previous, gain, lim, projected)
         for m in range(members):
-            x = state[m]
-            col = 0 if shared else m
-            k = gain[m]
-            jm = jd[m]
-            if mode == 1 and i % per_sample == 0:
-                _load(b, b_rate, radial, n, col, bn, br, ra)
-                s0, s1, s2 = _field_body(x, bn)
-                if previous[m, 3] == 0.0:
-                    held[m, 0], held[m, 1], held[m, 2] = 0.0, 0.0, 0.0
-                else:
-                    held[m, 0], held[m, 1], held[m, 2] = _dipole(
-                        s0, s1, s2, (s0 - previous[m, 0]) / delta, (s1 - previous[m, 1]) / delta,
-                        (s2 - previous[m, 2]) / delta, k, lim, projected)
-                previous[m, 0], previous[m, 1], previous[m, 2], previous[m, 3] = s0, s1, s2, 1.0
-                how[m] = HELD
-            elif mode == 2:
-                phase_step = i % (n_off + n_on)
-                if phase_step == 0:
-                    _load(b, b_rate, radial, n, col, bn, br, ra)
-                    window[m, 0], window[m, 1], window[m, 2] = _field_body(x, bn)
-                    held[m, 0], held[m, 1], held[m, 2] = 0.0, 0.0, 0.0
-                    how[m] = HELD
-                elif phase_step == n_off:
-                    if hold:
-                        _load(b, b_rate, radial, n, col, bn, br, ra)
-                        e0, e1, e2 = _field_body(x, bn)
-                        held[m, 0], held[m, 1], held[m, 2] = _dipole(
-                            e0, e1, e2, (e0 - window[m, 0]) / t_off, (e1 - window[m, 1]) / t_off,
-                            (e2 - window[m, 2]) / t_off, k, lim, projected)
-                        how[m] = HELD
-                    else:
-                        how[m] = LAW
-            _load(b, b_rate, radial, n, col, bn, br, ra)
-            _rhs(x, bn, br, ra, how[m], held[m], k, lim, projected, gg, diag, jm, jt, jinv, k1)
-            _load(b, b_rate, radial, n + 1, col, bn, br, ra)
-            for j in range(7):
-                tmp[j] = x[j] + half * k1[j]
-            _rhs(tmp, bn, br, ra, how[m], held[m], k, lim, projected, gg, diag, jm, jt, jinv, k2)
-            for j in range(7):
-                tmp[j] = x[j] + half * k2[j]
-            _rhs(tmp, bn, br, ra, how[m], held[m], k, lim, projected, gg, diag, jm, jt, jinv, k3)
-            _load(b, b_rate, radial, n + 2, col, bn, br, ra)
-            for j in range(7):
-                tmp[j] = x[j] + h * k3[j]
-            _rhs(tmp, bn, br, ra, how[m], held[m], k, lim, projected, gg, diag, jm, jt, jinv, k4)
-            for j in range(7):
-                x[j] = x[j] + sixth * (k1[j] + 2.0 * (k2[j] + k3[j]) + k4[j])
-            norm = math.sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + x[3] * x[3])
-            for j in range(4):
-                x[j] = x[j] / norm
-            if (i + 1) % stride == 0:
-                rates[m, (i + 1) // stride] = math.sqrt(x[4] * x[4] + x[5] * x[5] + x[6] * x[6])
+            x0, x1, x2, x3, x4, x5, x6 = (state[0, m], state[1, m], state[2, m], state[3, m], state[4, m],
+                                          state[5, m], state[6, m])
+            law, k, h0, h1, h2 = how[m] == LAW, gain[m], held[0, m], held[1, m], held[2, m]
+            j0, j1, j2 = jd[0, m], jd[1, m], jd[2, m]
+            k10, k11, k12, k13, k14, k15, k16 = _rhs(
+                x0, x1, x2, x3, x4, x5, x6, b[0, n, m], b[1, n, m], b[2, n, m], b_rate[0, n, m], b_rate[1, n, m],
+                b_rate[2, n, m], radial[0, n, m], radial[1, n, m], radial[2, n, m], law, h0, h1, h2, k,
+                lim0, lim1, lim2, projected, gg, diag, j0, j1, j2, jt, jinv)
+            k20, k21, k22, k23, k24, k25, k26 = _rhs(
+                x0 + half * k10, x1 + half * k11, x2 + half * k12, x3 + half * k13, x4 + half * k14,
+                x5 + half * k15, x6 + half * k16, b[0, n + 1, m], b[1, n + 1, m], b[2, n + 1, m],
+                b_rate[0, n + 1, m], b_rate[1, n + 1, m], b_rate[2, n + 1, m], radial[0, n + 1, m],
+                radial[1, n + 1, m], radial[2, n + 1, m], law, h0, h1, h2, k, lim0, lim1, lim2, projected, gg, diag,
+                j0, j1, j2, jt, jinv)
+            k30, k31, k32, k33, k34, k35, k36 = _rhs(
+                x0 + half * k20, x1 + half * k21, x2 + half * k22, x3 + half * k23, x4 + half * k24,
+                x5 + half * k25, x6 + half * k26, b[0, n + 1, m], b[1, n + 1, m], b[2, n + 1, m],
+                b_rate[0, n + 1, m], b_rate[1, n + 1, m], b_rate[2, n + 1, m], radial[0, n + 1, m],
+                radial[1, n + 1, m], radial[2, n + 1, m], law, h0, h1, h2, k, lim0, lim1, lim2, projected, gg, diag,
+                j0, j1, j2, jt, jinv)
+            k40, k41, k42, k43, k44, k45, k46 = _rhs(
+                x0 + h * k30, x1 + h * k31, x2 + h * k32, x3 + h * k33, x4 + h * k34, x5 + h * k35, x6 + h * k36,
+                b[0, n + 2, m], b[1, n + 2, m], b[2, n + 2, m], b_rate[0, n + 2, m], b_rate[1, n + 2, m],
+                b_rate[2, n + 2, m], radial[0, n + 2, m], radial[1, n + 2, m], radial[2, n + 2, m], law, h0, h1, h2,
+                k, lim0, lim1, lim2, projected, gg, diag, j0, j1, j2, jt, jinv)
+            y0 = x0 + sixth * (k10 + 2.0 * (k20 + k30) + k40)
+            y1 = x1 + sixth * (k11 + 2.0 * (k21 + k31) + k41)
+            y2 = x2 + sixth * (k12 + 2.0 * (k22 + k32) + k42)
+            y3 = x3 + sixth * (k13 + 2.0 * (k23 + k33) + k43)
+            norm = math.sqrt(y0 * y0 + y1 * y1 + y2 * y2 + y3 * y3)
+            state[0, m], state[1, m], state[2, m], state[3, m] = y0 / norm, y1 / norm, y2 / norm, y3 / norm
+            state[4, m] = x4 + sixth * (k14 + 2.0 * (k24 + k34) + k44)
+            state[5, m] = x5 + sixth * (k15 + 2.0 * (k25 + k35) + k45)
+            state[6, m] = x6 + sixth * (k16 + 2.0 * (k26 + k36) + k46)
+        if (i + 1) % stride == 0:
+            for m in range(members):
+                rates[m, (i + 1) // stride] = math.sqrt(state[4, m] * state[4, m] + state[5, m] * state[5, m]
+                                                        + state[6, m] * state[6, m])

@@ -9,7 +9,8 @@ tests hold the two to 1e-10 on short spans.
 Step rule, field, right-hand side and sampling are those of the numpy path: in each sample
 interval the step is interval/n with n = ⌈interval·max(|ω|, |Ω_p|, 2n_orbit)/limit⌉ over all
 members; the quaternion is renormalised after every step; the field is the centred dipole of
-:meth:`magbench.earth.CircularOrbit.field_and_rate`.
+:meth:`magbench.earth.CircularOrbit.field_and_rate`, through its compiled twin
+(:mod:`magbench.earth.kernels`).
 
 ``cache=True`` writes the compiled code next to this file (``__pycache__``, ignored by git) or,
 if that folder is not writable, to numba's per-user cache; it only saves the ~10 s compilation
@@ -22,6 +23,7 @@ import numpy as np
 from numba import njit
 
 from ..constants import MU_0
+from ..earth.kernels import dipole_field_rate_radial
 
 _TWO_OVER_PI = 2.0 / math.pi
 _INV_MU_0 = 1.0 / MU_0
@@ -29,30 +31,10 @@ _INV_MU_0 = 1.0 / MU_0
 
 @njit(cache=True, error_model="numpy")
 def _field_trig(cu, su, cl, sl, geo, out):
-    """Inertial B (out[0:3]) and dB/dt (out[3:6]) of CircularOrbit.field_and_rate, given
-    cos/sin of the argument of latitude u and of the pole's longitude λ.
-
-    geo = (n, scale, node[3], ahead[3], sin δ, cos δ, λ0, ω_E, M).
-    """
-    n, scale = geo[0], geo[1]
-    r0 = cu * geo[2] + su * geo[5]
-    r1 = cu * geo[3] + su * geo[6]
-    r2 = cu * geo[4] + su * geo[7]
-    a0 = -su * geo[2] + cu * geo[5]
-    a1 = -su * geo[3] + cu * geo[6]
-    a2 = -su * geo[4] + cu * geo[7]
-    rr0, rr1, rr2 = n * a0, n * a1, n * a2
-    sd, cd, big_m, erate = geo[8], geo[9], geo[12], geo[11]
-    m0, m1, m2 = -big_m * (sd * cl), -big_m * (sd * sl), -big_m * cd
-    md0, md1, md2 = -big_m * (erate * (-sd * sl)), -big_m * (erate * (sd * cl)), -big_m * (erate * 0.0)
-    m_r = m0 * r0 + m1 * r1 + m2 * r2
-    out[0] = scale * (3.0 * m_r * r0 - m0)
-    out[1] = scale * (3.0 * m_r * r1 - m1)
-    out[2] = scale * (3.0 * m_r * r2 - m2)
-    m_r_rate = (md0 * r0 + md1 * r1 + md2 * r2) + (m0 * rr0 + m1 * rr1 + m2 * rr2)
-    out[3] = scale * (3.0 * m_r_rate * r0 + 3.0 * m_r * rr0 - md0)
-    out[4] = scale * (3.0 * m_r_rate * r1 + 3.0 * m_r * rr1 - md1)
-    out[5] = scale * (3.0 * m_r_rate * r2 + 3.0 * m_r * rr2 - md2)
+    """Inertial B (out[0:3]) and dB/dt (out[3:6]), given cos/sin of u and of λ."""
+    f = dipole_field_rate_radial(cu, su, cl, sl, geo)
+    for c in range(6):
+        out[c] = f[c]
 
 
 @njit(cache=True, error_model="numpy")
@@ -193,12 +175,3 @@ def run_passive(state, u0, geo, inertia, magnet, axes, volume, hc, bs, kk, inter
             _record(x, interval * (j + 1), u0[m], geo, inertia, records[j + 1, :, m])
         steps += n
     return steps
-
-
-def orbit_geometry(orbit):
-    """The float64 vector ``geo`` of :func:`_field` for a :class:`~magbench.earth.CircularOrbit`."""
-    ci, si = np.cos(orbit.inclination), np.sin(orbit.inclination)
-    co, so = np.cos(orbit.ascending_node), np.sin(orbit.ascending_node)
-    return np.array([orbit.mean_motion, MU_0 / (4.0 * np.pi * orbit.radius**3), co, so, 0.0, -ci * so, ci * co, si,
-                     np.sin(orbit.dipole_tilt), np.cos(orbit.dipole_tilt), orbit.dipole_longitude,
-                     orbit.earth_rotation_rate, orbit.earth_moment], dtype=float)

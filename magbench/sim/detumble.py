@@ -134,20 +134,41 @@ class _FieldTable:
 
     block = 256
 
-    def __init__(self, orbit, step, n_steps):
+    def __init__(self, orbit, step, n_steps, compiled=False):
         self.orbit, self.step, self.n_steps, self.start = orbit, step, n_steps, None
         phase = np.ndim(orbit.argument_of_latitude0)
         self.member_axis = phase != 0
+        self.geometry = None
+        if compiled and self.member_axis:
+            from ..earth.kernels import orbit_geometry
+
+            self.geometry = orbit_geometry(orbit)
 
     def _fill(self, start):
         count = min(self.block, self.n_steps - start)
         times = (2 * start + np.arange(2 * count + 1)) * (0.5 * self.step)
-        t = times[:, None] if self.member_axis else times
-        b, b_rate, position = self.orbit.field_rate_and_position(t)
-        radial = position / self.orbit.radius
-        # (3, T[, M]) so that one stage's component is a contiguous (M,) array or a scalar
-        self.b, self.b_rate, self.radial = (np.ascontiguousarray(np.moveaxis(a, -1, 0)) for a in (b, b_rate, radial))
+        if self.geometry is not None:
+            self._fill_compiled(times)
+        else:
+            t = times[:, None] if self.member_axis else times
+            b, b_rate, position = self.orbit.field_rate_and_position(t)
+            radial = position / self.orbit.radius
+            # (3, T[, M]) so that one stage's component is a contiguous (M,) array or a scalar
+            self.b, self.b_rate, self.radial = (np.ascontiguousarray(np.moveaxis(a, -1, 0))
+                                                for a in (b, b_rate, radial))
         self.start = start
+
+    def _fill_compiled(self, times):
+        # the same numbers as field_rate_and_position (tested bit for bit): numpy's sines
+        # and cosines, the rest compiled, straight into the (3, T, M) layout
+        from ..earth.kernels import field_table
+
+        orbit = self.orbit
+        u = orbit.argument_of_latitude(times[:, None])
+        lam = orbit.dipole_longitude + orbit.earth_rotation_rate * times
+        self.b, self.b_rate, self.radial = (np.empty((3,) + u.shape) for _ in range(3))
+        field_table(np.cos(u), np.sin(u), np.cos(lam), np.sin(lam), self.geometry, float(orbit.radius),
+                    self.b, self.b_rate, self.radial)
 
     def _index(self, i, stage):
         if self.start is None or not self.start <= i < self.start + self.block:
@@ -380,11 +401,11 @@ def _compiled_loop(loop, q0, w0):
     from ._detumble_kernel import LAW, advance_block
 
     members = q0.shape[0]
-    state = np.ascontiguousarray(np.concatenate([q0, w0], axis=-1))
+    state = np.ascontiguousarray(np.concatenate([q0, w0], axis=-1).T)
     rates = np.empty((members, loop.n_steps // loop.stride + 1))
     rates[:, 0] = np.linalg.norm(w0, axis=-1)
     diag = loop.inertia.shape != (3, 3)
-    jd = np.ascontiguousarray(np.broadcast_to(loop.inertia, (members, 3)) if diag else np.ones((members, 3)))
+    jd = np.ascontiguousarray((np.broadcast_to(loop.inertia, (members, 3)) if diag else np.ones((members, 3))).T)
     jt = np.eye(3) if diag else np.ascontiguousarray(loop.inertia)
     jinv = np.eye(3) if diag else np.linalg.inv(jt)
     gain = np.ascontiguousarray(np.broadcast_to(np.asarray(loop.gain, dtype=float), (members,)))
@@ -392,15 +413,18 @@ def _compiled_loop(loop, q0, w0):
     schedule = np.array([MODES.index(loop.mode), per_sample, n_off, n_on, loop.estimator == "hold", delta, t_off],
                         dtype=float)
     how = np.full(members, LAW, dtype=np.int64)
-    held, window, previous = np.zeros((members, 3)), np.zeros((members, 3)), np.zeros((members, 4))
+    held, window, previous = np.zeros((3, members)), np.zeros((3, members)), np.zeros((4, members))
     gg = 0.0 if loop.mean_motion is None else 3.0 * loop.mean_motion ** 2
-    fields = _FieldTable(loop.orbit, loop.step, loop.n_steps)
+    limit = np.ascontiguousarray(loop.limit, dtype=float)
+    fields = _FieldTable(loop.orbit, loop.step, loop.n_steps, compiled=True)
     for start in range(0, loop.n_steps, fields.block):
         count = min(fields.block, loop.n_steps - start)
-        advance_block(state, start, count, loop.step, *fields.block_at(start), schedule, how, held, window, previous, gain,
-                      np.ascontiguousarray(loop.limit, dtype=float), loop.law == "projected", gg, diag, jd, jt, jinv,
-                      loop.stride, rates)
-    return state.T, rates
+        # one column per member even for a shared orbit: the kernel reads every table
+        # along its contiguous member axis
+        table = [np.ascontiguousarray(np.broadcast_to(a, a.shape[:2] + (members,))) for a in fields.block_at(start)]
+        advance_block(state, start, count, loop.step, *table, schedule, how, held, window, previous, gain, limit,
+                      loop.law == "projected", gg, diag, jd, jt, jinv, loop.stride, rates)
+    return state, rates
 
 
 def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dipole, law="bdot",

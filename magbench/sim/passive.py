@@ -324,7 +324,8 @@ def simulate_passive(satellite, orbit, angular_momentum, nutation, momentum_dire
                       np.linalg.norm(w, axis=-1)]
 
     if engine == "compiled":
-        from ._passive_kernel import orbit_geometry, run_passive
+        from ..earth.kernels import orbit_geometry
+        from ._passive_kernel import run_passive
 
         state = np.ascontiguousarray(state, dtype=float)
         u0 = np.ascontiguousarray(np.broadcast_to(phase, (members,)), dtype=float)
