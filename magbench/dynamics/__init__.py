@@ -9,8 +9,8 @@ Re-exports the public names of its modules.
 
 from .aerodynamic_angles import aerodynamic_angles, aerodynamic_attitude_matrix, aerodynamic_body_rates
 from .gyrostat import (airplane_231_angles, airplane_231_matrix, gyrostat_kinetic_energy, gyrostat_momentum,
-                       gyrostat_rates, gyrostat_rhs, rotor_dimensionless_numbers, rotor_reduced_rhs, semi_body_axes,
-                       semi_body_field, semi_body_rhs)
+                       gyrostat_rates, gyrostat_rhs, gyrostat_turning_field_rhs, rotor_dimensionless_numbers,
+                       rotor_reduced_rhs, semi_body_axes, semi_body_field, semi_body_rhs)
 from .energy_exchange import momentum_exchange_energy_ratio, thesis_energy_ratio
 from .pendulum import (Mockup, amplitude_for_period, body_rates_313, euler_313_matrix, field_for_period,
                        mockup_rhs, natural_frequency, pendulum_energy, pendulum_peak_rate, pendulum_period, pendulum_rhs,
@@ -32,5 +32,5 @@ __all__ = ["momentum_exchange_energy_ratio", "thesis_energy_ratio", "two_coil_to
            "axial_magnet_torque", "euler_case_rates", "euler_case_angles", "euler_case_matrix",
            "body_rate_from_momentum", "momentum_and_nutation", "conical_rotation_angle", "conical_rotation_rate",
            "airplane_231_matrix", "airplane_231_angles", "semi_body_axes", "semi_body_field", "gyrostat_rates",
-           "gyrostat_rhs", "gyrostat_kinetic_energy", "gyrostat_momentum", "semi_body_rhs", "rotor_reduced_rhs",
+           "gyrostat_rhs", "gyrostat_turning_field_rhs", "gyrostat_kinetic_energy", "gyrostat_momentum", "semi_body_rhs", "rotor_reduced_rhs",
            "rotor_dimensionless_numbers"]

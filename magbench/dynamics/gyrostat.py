@@ -20,7 +20,7 @@ from .rigid_body import (_as_quaternions, _cross, _euler_rates, _gravity_gradien
                          _quaternion_rate, _rotate)
 
 __all__ = ["airplane_231_matrix", "airplane_231_angles", "semi_body_axes", "semi_body_field",
-           "gyrostat_rates", "gyrostat_rhs", "gyrostat_kinetic_energy", "gyrostat_momentum",
+           "gyrostat_rates", "gyrostat_rhs", "gyrostat_turning_field_rhs", "gyrostat_kinetic_energy", "gyrostat_momentum",
            "semi_body_rhs", "rotor_reduced_rhs", "rotor_dimensionless_numbers"]
 
 
@@ -251,6 +251,56 @@ def gyrostat_rhs(time, state, dipole, field_orbital, inertia, rotor_momentum, me
     n = as_positive("mean_motion", mean_motion, unit="rad/s")
     return _gyrostat_rhs(x, as_vectors("dipole", dipole), as_vectors("field_orbital", field_orbital),
                          _inertia_matrix("inertia", inertia), as_finite("rotor_momentum", rotor_momentum), n)
+
+
+def gyrostat_turning_field_rhs(time, state, principal_inertia, rotor_momentum, damping_gain, field_rate):
+    r"""Right-hand side of a damped gyrostat in a field that turns about a fixed inertial axis,
+    carried in body axes (no attitude needed). Array kernel: unchecked, SI.
+
+    Parameters
+    ----------
+    time : float
+        Time [s] (unused: the model is autonomous; solvers pass it).
+    state : ndarray, shape (..., 9)
+        ω, the body's absolute angular velocity [rad/s]; B, the field [T]; n, the unit axis
+        the field turns about [-]; all in body axes.
+    principal_inertia : ndarray, shape (3,)
+        A, B, C of body + rotor (rotor counted as rigid), principal axes [kg·m²].
+    rotor_momentum : float
+        J_f ν along body axis 1 [N·m·s].
+    damping_gain : float
+        k in the torque −k w⊥, w⊥ = ω − (ω·B̂)B̂ [N·m·s]; k > 0 damps, k < 0 is the slides'
+        printed sign read as a torque.
+    field_rate : float
+        Ω_f, the field's turning rate in inertial space [rad/s].
+
+    Returns
+    -------
+    ndarray, shape (..., 9)
+        (ω̇, Ḃ, ṅ): ω̇ of :func:`gyrostat_rates` under T = −k w⊥, Ḃ = −ω × B + Ω_f n × B,
+        ṅ = −ω × n [SI per s].
+
+    Notes
+    -----
+    Rotor slides, slide "Control implementation" (seed lines 85–87; the damping torque of
+    :func:`magbench.control.spin.projected_damping_dipole`, and of
+    :func:`magbench.control.spin.slides_printed_damping_torque` with k < 0); the field turns
+    as a circular orbit's does at Ω_f = ω0 (``rotor_spin.md`` §9). The power is
+    ω·T = −k |w⊥|²; |B|, |n| and n·B are invariants. Its compiled twin (equal to the last
+    bit) is :func:`magbench.dynamics.kernels.gyrostat_turning_field_rhs`.
+    """
+    w1, w2, w3, b1, b2, b3, n1, n2, n3 = np.moveaxis(np.asarray(state, dtype=float), -1, 0)
+    a, b, c = principal_inertia[0], principal_inertia[1], principal_inertia[2]
+    h, k = rotor_momentum, damping_gain
+    bb = b1 * b1 + b2 * b2 + b3 * b3
+    wb = (w1 * b1 + w2 * b2 + w3 * b3) / bb
+    t1, t2, t3 = -k * (w1 - wb * b1), -k * (w2 - wb * b2), -k * (w3 - wb * b3)
+    k1, k2, k3 = a * w1 + h, b * w2, c * w3                 # body + rotor momentum
+    return np.stack([(t1 - (w2 * k3 - w3 * k2)) / a, (t2 - (w3 * k1 - w1 * k3)) / b, (t3 - (w1 * k2 - w2 * k1)) / c,
+                     -(w2 * b3 - w3 * b2) + field_rate * (n2 * b3 - n3 * b2),
+                     -(w3 * b1 - w1 * b3) + field_rate * (n3 * b1 - n1 * b3),
+                     -(w1 * b2 - w2 * b1) + field_rate * (n1 * b2 - n2 * b1),
+                     -(w2 * n3 - w3 * n2), -(w3 * n1 - w1 * n3), -(w1 * n2 - w2 * n1)], axis=-1)
 
 
 def gyrostat_momentum(rate, inertia, rotor_momentum):

@@ -234,3 +234,46 @@ def test_dimensionless_numbers():
 def test_bad_input_names_the_parameter(call, name):
     with pytest.raises(ValueError, match=name):
         call()
+
+
+def _turning_field_states():
+    rng = np.random.default_rng(7)
+    n = rng.normal(size=(6, 3))
+    n /= np.linalg.norm(n, axis=-1, keepdims=True)
+    return np.concatenate([rng.normal(scale=0.2, size=(6, 3)), rng.normal(scale=3e-5, size=(6, 3)), n], axis=-1)
+
+
+TURNING = (np.array([0.04, 0.07, 0.09]), 0.6, 5.5e-4, 1.1e-3)   # A, B, C; J_f ν; k; Ω_f (chapter 6's scale)
+
+
+def test_turning_field_rhs_compiled_twin_equals_the_numpy_kernel():
+    from magbench.dynamics import gyrostat_turning_field_rhs
+    from magbench.dynamics.kernels import gyrostat_turning_field_rhs as compiled
+
+    states = _turning_field_states()
+    for k in (TURNING[2], -TURNING[2]):
+        args = (TURNING[0], TURNING[1], k, TURNING[3])
+        expected = gyrostat_turning_field_rhs(0.0, states, *args)
+        # the same operations in the same order, without fast-math: equal to the last bit
+        np.testing.assert_array_equal(np.array([compiled(0.0, s, *args) for s in states]), expected)
+
+
+def test_turning_field_rhs_power_invariants_and_torque():
+    from magbench.control.spin import projected_damping_dipole, slides_printed_damping_torque
+    from magbench.dynamics import gyrostat_turning_field_rhs
+
+    states = _turning_field_states()
+    j, h, k, rate = TURNING
+    w, b, n = states[:, :3], states[:, 3:6], states[:, 6:]
+    for gain, torque in ((k, np.cross(projected_damping_dipole(b, w, k), b)), (-k, slides_printed_damping_torque(b, w, k))):
+        d = gyrostat_turning_field_rhs(0.0, states, j, h, gain, rate)
+        # Euler's equation with the rotor: J ω̇ + ω × (Jω + h e1) is the law's torque
+        lhs = j * d[:, :3] + np.cross(w, j * w + h * np.array([1.0, 0.0, 0.0]))
+        assert_allclose(lhs, torque, rtol=1e-12, atol=1e-12 * np.abs(torque).max())  # rounding of a few terms
+        # power ω·T = −k|w⊥|² (the printed sign pumps energy at the same rate)
+        perp = w - np.sum(w * b, -1, keepdims=True) * b / np.sum(b * b, -1, keepdims=True)
+        assert_allclose(np.sum(w * j * d[:, :3], -1), -gain * np.sum(perp * perp, -1), rtol=1e-10)
+        # the field and its axis only turn: |B|, |n| and n·B are invariants
+        for rate_of in (np.sum(b * d[:, 3:6], -1) / np.sum(b * b, -1), np.sum(n * d[:, 6:], -1),
+                        (np.sum(n * d[:, 3:6], -1) + np.sum(b * d[:, 6:], -1)) / np.linalg.norm(b, axis=-1)):
+            assert_allclose(rate_of, 0.0, atol=1e-15)   # relative to rates of order 0.3 rad/s

@@ -9,8 +9,8 @@ import math
 
 import numpy as np
 
-from ...control.spin import (projected_damping_dipole, rotor_equilibrium_dipole, rotor_program_field,
-                             rotor_spin_reference, slides_printed_damping_torque)
+from ...control.spin import (rotor_equilibrium_dipole, rotor_program_field,
+                             rotor_spin_reference)
 from ...earth.dipole import dipole_equatorial_b
 from ...io import load_printed
 from ...result_cache import cached_result
@@ -297,42 +297,27 @@ def _damping_parameters():
 def _energy_run(law, gain, rotor_momentum, initial_rate, field_rate, b0, duration):
     """Gyrostat (default inertia, diagonal) in a field turning about an inertial axis.
 
-    The field and that axis are carried in body axes (Ḃ = −ω × B + Ω_f n × B, ṅ = −ω × n),
-    so no attitude is needed; scalar code, as the spinning run (``rotor_spin.md`` §9).
-    The torques are those of :func:`magbench.control.spin.projected_damping_dipole`
-    (corrected) and :func:`magbench.control.spin.slides_printed_damping_torque` (printed):
-    +k_w w⊥ and −k_w w⊥ with w = ω.
+    :func:`magbench.dynamics.gyrostat_turning_field_rhs` (its compiled twin): the field and
+    that axis carried in body axes, so no attitude is needed (``rotor_spin.md`` §9). The
+    torques are those of :func:`magbench.control.spin.projected_damping_dipole` (corrected)
+    and :func:`magbench.control.spin.slides_printed_damping_torque` (printed): −k_w w⊥ and
+    +k_w w⊥ with w = ω (the tests hold the kernel's torque to both).
     """
     from scipy.integrate import solve_ivp
+
+    from ...dynamics.kernels import gyrostat_turning_field_rhs
 
     inertia = default_rotor_satellite(_defaults()).inertia_matrix
     if np.any(np.abs(inertia - np.diag(np.diag(inertia))) > 0):
         raise ValueError("the damping-sign figure needs a principal-axes inertia")
-    a, b, c = np.diag(inertia).tolist()
-    h, k = float(rotor_momentum), float(gain) * (1.0 if law == "corrected" else -1.0)
-    # check the scalar torque against the library laws at one state
-    w_t, b_t = np.array([0.1, -0.2, 0.3]), np.array([1.0, 2.0, -0.5]) * b0
-    perp = w_t - (w_t @ b_t) * b_t / (b_t @ b_t)
-    lib = (np.cross(projected_damping_dipole(b_t, w_t, gain), b_t) if law == "corrected"
-           else slides_printed_damping_torque(b_t, w_t, gain))
-    if not np.allclose(lib, -k * perp, rtol=1e-12, atol=0.0):
-        raise RuntimeError("the scalar damping torque disagrees with magbench.control.spin")
-
-    def rhs(t, y):
-        w1, w2, w3, b1, b2, b3, n1, n2, n3 = y
-        bb = b1 * b1 + b2 * b2 + b3 * b3
-        wb = (w1 * b1 + w2 * b2 + w3 * b3) / bb
-        t1, t2, t3 = -k * (w1 - wb * b1), -k * (w2 - wb * b2), -k * (w3 - wb * b3)
-        k1, k2, k3 = a * w1 + h, b * w2, c * w3                 # body + rotor momentum
-        return [(t1 - (w2 * k3 - w3 * k2)) / a, (t2 - (w3 * k1 - w1 * k3)) / b, (t3 - (w1 * k2 - w2 * k1)) / c,
-                -(w2 * b3 - w3 * b2) + field_rate * (n2 * b3 - n3 * b2),
-                -(w3 * b1 - w1 * b3) + field_rate * (n3 * b1 - n1 * b3),
-                -(w1 * b2 - w2 * b1) + field_rate * (n1 * b2 - n2 * b1),
-                -(w2 * n3 - w3 * n2), -(w3 * n1 - w1 * n3), -(w1 * n2 - w2 * n1)]
-
+    # the printed projection, read as a torque, is the damping torque with the sign reversed
+    k = float(gain) * (1.0 if law == "corrected" else -1.0)
     t = np.linspace(0.0, duration, 301)
     y0 = [initial_rate] * 3 + [b0, 0.0, 0.0] + [0.0, 1.0, 0.0]
-    sol = solve_ivp(rhs, (0.0, duration), y0, t_eval=t, rtol=1e-9, atol=1e-12, method="DOP853")
+    sol = solve_ivp(gyrostat_turning_field_rhs, (0.0, duration), y0, t_eval=t, rtol=1e-9, atol=1e-12, method="DOP853",
+                    args=(np.diag(inertia).copy(), float(rotor_momentum), k, float(field_rate)))
+    if not sol.success:
+        raise RuntimeError(f"the {law} energy run failed: {sol.message}")
     w = sol.y[:3].T
     return t, 0.5 * np.einsum("ni,ij,nj->n", w, inertia, w)
 
