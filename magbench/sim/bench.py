@@ -499,6 +499,70 @@ ERROR_INPUTS = {
 }
 
 
+#: The sample loop: "compiled" (:mod:`magbench.sim._bench_kernel`, the default) or "numpy"
+#: (the reference, operation for operation the same; the tests switch it to compare the two).
+_ENGINE = "compiled"
+
+
+class _CompiledLoop:
+    """simulate_bench's sample loop in compiled code: the member inputs gathered once into
+    the kernel's rows, the controller's memory kept between blocks of sensor errors."""
+
+    def __init__(self, setup, psi_des, field, plant, err, coil_axes, full_1, full_2, members):
+        from . import _bench_kernel as kernel
+
+        self.kernel = kernel
+        rows = {"psi_des": psi_des, "field": field, "thread_stiffness": plant.thread_stiffness,
+                "thread_neutral_angle": plant.thread_neutral_angle,
+                "filter_coefficient": (setup.filter_coefficient if err["filter_coefficient"] is None
+                                       else err["filter_coefficient"]),
+                "pwm_levels": int(setup.pwm_levels) if err["pwm_levels"] is None else err["pwm_levels"],
+                "full_1": full_1, "full_2": full_2}
+        present = np.zeros(10, dtype=np.bool_)
+        for flag, name in ((kernel.HAS_G_OFF, "gyro_offset"), (kernel.HAS_G_DRIFT, "gyro_drift"),
+                           (kernel.HAS_M_ROT, "magnetometer_misalignment"), (kernel.HAS_RIPPLE, "heading_ripple"),
+                           (kernel.HAS_COUPLING, "coil_field_coupling"), (kernel.HAS_AZIMUTH, "field_azimuth")):
+            if err[name] is not None:
+                present[flag], rows[name] = True, err[name]
+        if err["magnetometer_matrix"] is not None:
+            present[kernel.HAS_MATRIX] = True
+            for i, row in enumerate(("matrix_00", "matrix_01", "matrix_10", "matrix_11")):
+                rows[row] = err["magnetometer_matrix"][:, i // 2, i % 2]
+        if err["magnetometer_offset"] is not None:
+            present[kernel.HAS_OFFSET] = True
+            rows["offset_1"], rows["offset_2"] = err["magnetometer_offset"][:, 0], err["magnetometer_offset"][:, 1]
+        if coil_axes is not None:
+            present[kernel.HAS_AXES] = True
+            rows.update(zip(("axis_1x", "axis_1y", "axis_2x", "axis_2y"), coil_axes))
+        present[kernel.QUANTISED] = err["pwm_levels"] is not None or bool(setup.pwm_levels)
+        self.member = np.zeros((len(kernel.ROWS), members))
+        for name, value in rows.items():
+            self.member[kernel.ROWS.index(name)] = value
+        duty_gain = 1.0 / setup.full_scale_moments
+        self.setup = np.array([setup.sample_interval, setup.kp, setup.ki, setup.kd, setup.moment_limit,
+                               duty_gain[0], duty_gain[1], plant.inertia], dtype=float)
+        self.present = present
+        self.gyro, self.bxy = np.empty(members), np.empty((2, members))
+        self.estimate, self.integral = np.empty(members), np.zeros(members)
+        self.commanded, self.applied = np.zeros((2, members)), np.zeros((2, members))
+
+    def run(self, start, count, state, g_blk, m_blk, band, band_est, first_in_window, every, states, moments,
+            estimates):
+        """Advance ``state`` (2, M) in place over samples start … start + count − 1."""
+        sense, control_and_step = self.kernel.sense, self.kernel.control_and_step
+        g_blk = np.ascontiguousarray(g_blk, dtype=float)
+        m_blk = np.ascontiguousarray(m_blk, dtype=float)
+        dt = self.setup[0]
+        for j in range(count):
+            k = start + j
+            sense(k, j, state, g_blk, m_blk, self.member, self.present, self.applied, dt, self.gyro, self.bxy)
+            # numpy's arctan2, not the C library's: they differ in the last bit (see the kernel)
+            heading = np.arctan2(-self.bxy[1], self.bxy[0])
+            control_and_step(k, heading, self.gyro, self.bxy, state, self.member, self.present, self.setup,
+                             self.estimate, self.integral, self.commanded, self.applied, band, band_est,
+                             first_in_window, every, states, moments, estimates)
+
+
 def _error_arrays(members, values):
     """Checked per-member arrays of the error sources given (None: left out)."""
     out = {}
@@ -683,12 +747,19 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
     estimate = None
     integral = np.zeros(members)
     state = np.array([psi, omega])
+    loop = _CompiledLoop(setup, psi_des, b0, plant, err, coil_axes, full_1, full_2, members) \
+        if _ENGINE == "compiled" else None
     for start in range(0, steps, _BLOCK):
         count = min(_BLOCK, steps - start)
         if sensor_errors is not None:
             g_blk, m_blk = g_err[start:start + count], m_err[start:start + count]
         else:
             g_blk, m_blk = draw_sensor_errors(setup, count, members, rng)
+        if loop is not None:
+            loop.run(start, count, state, g_blk, m_blk, band, band_est, first_in_window, every, states, moments,
+                     estimates)
+            estimate, (moment_1, moment_2) = loop.estimate, loop.commanded
+            continue
         for j in range(count):
             k = start + j
             psi, omega = state
