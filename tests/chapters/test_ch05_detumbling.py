@@ -52,6 +52,14 @@ def test_fig2_data_columns_follow_the_contract():
         assert np.all(np.isfinite(s.columns["duration"][1]))
 
 
+def test_fig2_and_rate_decay_label_the_duty_cycle_they_ran():
+    # A researcher who re-runs with another duty cycle must not be shown the source's 16 s / 1 s.
+    fig2 = figures.compute("samsat-fig2", on_time=8.0, off_time=2.0)
+    assert fig2.series[1].label == "discrete (8 s on / 2 s off)"
+    decay = figures.compute("ch05-rate-decay", on_time=8.0, off_time=2.0)
+    assert decay.series[1].label == "discrete (8 s on / 2 s off), 'model'"
+
+
 @pytest.mark.slow
 def test_model_estimator_costs_the_off_time():
     """Shared reference §2: with on-board models the continuous/discrete time ratio is

@@ -116,16 +116,21 @@ def _estimator(code):
     return ESTIMATORS[index]
 
 
+def _duty_label(p):
+    """The duty cycle as run (the parameters' values, not the source's 16 s / 1 s)."""
+    return f"discrete ({p['on_time']:g} s on / {p['off_time']:g} s off)"
+
+
 def compute_fig2(estimator=0.0, **params):
     """Median detumble time, continuous and duty-cycled, over Fig. 2's initial rates."""
     name = _estimator(estimator)
+    p = {**_defaults(), **params}
     d = study.duty_study(_key(**params), (name,))
     w = d["rates"] / DEG
     damped = np.isfinite(d["median"][name])      # rates the discrete mode does not damp are left out
     return FigureData("", "", "", {}, [
         Series("continuous", {"initial_rate": ("deg/s", w), "duration": ("s", d["median"]["continuous"])}),
-        Series("discrete (16 s on / 1 s off)", {"initial_rate": ("deg/s", w[damped]),
-                                                "duration": ("s", d["median"][name][damped])}),
+        Series(_duty_label(p), {"initial_rate": ("deg/s", w[damped]), "duration": ("s", d["median"][name][damped])}),
     ], extra={"estimator": name, "members": d["members"], "gain": d["gain"]})
 
 
@@ -148,7 +153,7 @@ def compute_rate_decay(**params):
     d = study.duty_study(_key(**params), ("model",))
     index = int(np.argmin(np.abs(d["rates"] - p["initial_rate_y"])))
     series = []
-    for name, label in (("continuous", "continuous"), ("model", "discrete (16 s on / 1 s off), 'model'")):
+    for name, label in (("continuous", "continuous"), ("model", f"{_duty_label(p)}, 'model'")):
         t = d["time"][name]
         series.append(Series(label, {"time": ("s", t), "rate": ("deg/s", d["rate"][name][index, 0] / DEG)}))
     low, mean, high = study.field_direction_rate(study.samsat_orbit(p))
