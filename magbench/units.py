@@ -14,7 +14,12 @@ import numpy as np
 
 from .constants import MU_0
 
+#: One degree in radians, π/180 [rad]: the one factor for the degrees the sources and the
+#: figures print.
+DEG = np.pi / 180.0
+
 __all__ = [
+    "DEG",
     "SI_FACTORS",
     "SI_UNIT_NAMES",
     "oersted_to_ampere_per_meter",

@@ -15,7 +15,7 @@ from ...compare import make_row
 from ...constants import EARTH_POLAR_MOMENT_OF_INERTIA, EARTH_RADIUS, EARTH_ROTATION_RATE, MU_0
 from ...io import load_parameter_set, load_printed
 from ...errata import source_check
-from ...units import ampere_per_meter_to_oersted, tesla_to_oersted
+from ...units import DEG, ampere_per_meter_to_oersted, tesla_to_oersted
 from ..._format import format_number
 from .._base import Chapter, chapter_parameters
 
@@ -67,9 +67,8 @@ def geomagnetic_rows(params=None, *, epochs=None):
         epochs = (1960.0, p["thesis_epoch"])
     m, tilt = p["earth_dipole_moment"], p["earth_dipole_tilt"]
     plat, plon = p["geomagnetic_pole_latitude"], p["geomagnetic_pole_longitude"]
-    deg = np.pi / 180
     # Half a unit in the last printed digit: 8.1e25 CGS, 11.5°, 78.5° N, 69° W.
-    half_m, half_tilt, half_plat, half_plon = 0.05e22, 0.05 * deg, 0.05 * deg, 0.5 * deg
+    half_m, half_tilt, half_plat, half_plon = 0.05e22, 0.05 * DEG, 0.05 * DEG, 0.5 * DEG
     src = "IGRF-14 (ppigrf), degree 1"
     rows = []
     for year in epochs:
@@ -79,11 +78,11 @@ def geomagnetic_rows(params=None, *, epochs=None):
             make_row(f"dipole-moment-{tag}", f"Earth dipole moment, {tag}", src, d.moment, m, half_m,
                      unit="1e22 A m^2", scale=1e22),
             make_row(f"dipole-tilt-{tag}", f"Dipole tilt to the rotation axis, {tag}", src,
-                     d.tilt, tilt, half_tilt, unit="deg", scale=deg),
+                     d.tilt, tilt, half_tilt, unit="deg", scale=DEG),
             make_row(f"pole-latitude-{tag}", f"Northern geomagnetic pole latitude, {tag}", src,
-                     d.pole_latitude, plat, half_plat, unit="deg", scale=deg),
+                     d.pole_latitude, plat, half_plat, unit="deg", scale=DEG),
             make_row(f"pole-longitude-{tag}", f"Northern geomagnetic pole longitude, {tag}", src,
-                     d.pole_longitude, plon, half_plon, unit="deg", scale=deg),
+                     d.pole_longitude, plon, half_plon, unit="deg", scale=DEG),
         ]
     # The full field at the laboratory when the bench was built.
     lat, lon, year = p["laboratory_latitude"], p["laboratory_longitude"], p["thesis_epoch"]
@@ -108,7 +107,7 @@ def geomagnetic_rows(params=None, *, epochs=None):
         make_row("lab-vertical-field", "Vertical (downward) field at the laboratory", src_full,
                  f.down, model[2], spread[2], unit="uT", scale=1e-6),
         make_row("lab-inclination", "Inclination at the laboratory", src_full,
-                 f.inclination, model[3], spread[3], unit="deg", scale=deg),
+                 f.inclination, model[3], spread[3], unit="deg", scale=DEG),
     ]
     # The equatorial dipole field the thesis prints (0.31 Oe) against the real dipole.
     d = igrf.igrf_dipole(year)

@@ -11,8 +11,8 @@ from . import CHAPTER
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
+from ...units import DEG
 
-DEG = np.pi / 180.0
 SOURCE = "Bui (2016), thesis §1.1–1.2"
 
 

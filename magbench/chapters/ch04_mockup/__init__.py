@@ -12,6 +12,7 @@ from ...compare import make_row
 from ...errata import source_check
 from ...io import load_parameter_set
 from .._base import Chapter, chapter_parameters
+from ...units import DEG
 
 __all__ = ["CHAPTER", "INPUTS", "KD_SWEEP", "KP_SWEEP", "PRINTED_SETS", "bench_rows", "budget_rows",
            "dynamics_checks", "gyro_offset_error"]
@@ -62,7 +63,6 @@ def bench_rows(params=None):
     p = params or chapter_parameters("ch04")
     setup = bench.BenchSetup.from_parameters(p)
     measured = measurement("orientation-error")
-    deg = np.pi / 180
     rows = []
     for tag, label, figure, target in BENCH_TARGETS:
         label = f"{label} ({figure})"
@@ -72,7 +72,7 @@ def bench_rows(params=None):
         rows.append(make_row(
             f"bench-error-{tag}", f"Orientation error on the bench, target angle {label}",
             "thesis §4.4 (measured; metric not stated)", measured.value,
-            float(run.error_band[0]), 0.5 * deg, unit="deg", scale=deg,
+            float(run.error_band[0]), 0.5 * DEG, unit="deg", scale=DEG,
             note=("model: noise floor of the bench as designed (datasheet white sensor noise, thread, "
                   "release at rest; no sensor calibration error, misalignment or coil field at the "
                   "sensor), error band of the last window of a nominal run; not a prediction of the 10°")))
@@ -133,7 +133,6 @@ def budget_rows(params=None):
     measured = measurement("orientation-error")
     sources = budget.load_error_sources()
     gyro_source = {"gyro_offset": sources["gyro_offset"]}
-    deg = np.pi / 180
     oat = budget.one_at_a_time(setup, [t for *_, t in BENCH_TARGETS], gyro_source, points=3,
                                duration=p["bench_duration"], window=p["bench_error_window"],
                                field_h=p["bench_field_h"], seed=int(p["bench_seed"]))
@@ -148,7 +147,7 @@ def budget_rows(params=None):
             f"bench-budget-gyro-{tag}",
             f"Orientation error an uncalibrated gyro offset at the datasheet bound could give, target angle {label}",
             "thesis §4.4 (measured) beside the MPU-6050's ±20 °/s (PS-MPU-6000A-00, Table 6.1)",
-            measured.value, gyro, 0.5 * deg, unit="deg", scale=deg,
+            measured.value, gyro, 0.5 * DEG, unit="deg", scale=DEG,
             note=(f"could explain the 10° if the offset was not calibrated and A_f = "
                   f"{setup.filter_coefficient:.2f}, Δt = {1e3 * setup.sample_interval:.0f} ms (both assumed; the "
                   f"same bound gives {span[0]:.1f}° at A_f = {a_lo:.2f}, {1e3 * dt_lo:.0f} ms and "

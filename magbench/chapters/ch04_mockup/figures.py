@@ -15,9 +15,9 @@ from . import CHAPTER, KD_SWEEP, KP_SWEEP, PRINTED_SETS
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
+from ...units import DEG
 
 SOURCE = "Bui (2016), thesis §4"
-DEG = np.pi / 180.0
 #: The gain sets of thesis Figs. 15–18 (thesis §4.1), as (kp, ki, kd).
 STYLES = ("-", "--", ":")
 

@@ -18,9 +18,9 @@ from .._base import chapter_parameters
 from ...rotations import wrap_angle
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
+from ...units import DEG
 
 SOURCE = "Bui (2016), thesis §4.4, Figs. 19–20; the bench model is ours (chapter 4)"
-DEG = np.pi / 180.0
 
 #: Chapter-4 inputs the bench figures take as parameters (all of the bench's).
 #: The bench's inputs (a subset of chapter 4's: the chapter's other sections have their own).

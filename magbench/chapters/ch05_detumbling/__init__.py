@@ -16,6 +16,7 @@ from ...constants import MU_0
 from ...errata import printed_check, source_check
 from ...io import load_parameter_set, load_printed
 from .._base import Chapter, chapter_parameters
+from ...units import DEG
 
 __all__ = ["CHAPTER", "INPUTS", "peer_rows", "detumbling_checks", "formula_checks", "parameter_key"]
 
@@ -184,7 +185,6 @@ def formula_checks():
     p = dict(_source_key())
     orbit = study.samsat_orbit(p)
     n = orbit.mean_motion
-    deg = np.pi / 180.0
     kin = study.kinematics_test_state(p)
     printed_w, true_w = kin["printed"], kin["true"]
     w0 = np.array([p["initial_rate_x"], p["initial_rate_y"], p["initial_rate_z"]])
@@ -203,13 +203,13 @@ def formula_checks():
             id="samsat-kinematics-orbital-term", chapter="ch05", source="samsat",
             location="§ Kinematics",
             quantity=("ω_x from the kinematic equations (α = 40°, φ = 25°, γ = 60°, rates 1, −2, 3 °/s, "
-                      f"ω0 = {n / deg:.4f} °/s)"),
-            printed=float(printed_w[0] / deg), computed=float(true_w[0] / deg), tolerance=1e-9, unit="deg/s",
+                      f"ω0 = {n / DEG:.4f} °/s)"),
+            printed=float(printed_w[0] / DEG), computed=float(true_w[0] / DEG), tolerance=1e-9, unit="deg/s",
             explanation=(f"The printed orbital-rate term ω0·(b21, b22, b23) is a row of B1; the body components "
                          f"of the orbital frame's rate are its second column ω0·(b12, b22, b32). Here the printed "
-                         f"form gives ω_x {abs(printed_w[0] - true_w[0]) / deg:.4f} °/s off and the whole rate "
-                         f"vector {kin['vector_error'] / deg:.4f} °/s off, {kin['vector_error'] / n:.1f} times "
-                         f"the orbital rate ω0 = {n / deg:.4f} °/s; the library's corrected form is checked "
+                         f"form gives ω_x {abs(printed_w[0] - true_w[0]) / DEG:.4f} °/s off and the whole rate "
+                         f"vector {kin['vector_error'] / DEG:.4f} °/s off, {kin['vector_error'] / n:.1f} times "
+                         f"the orbital rate ω0 = {n / DEG:.4f} °/s; the library's corrected form is checked "
                          "against finite differences."),
             computation="magbench.dynamics.aerodynamic_body_rates"),
         source_check(

@@ -12,9 +12,9 @@ import numpy as np
 
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ...units import DEG
 from . import parameter_key, study
 
-DEG = np.pi / 180.0
 SOURCE = "Kramlikh & Melnik (2016), SamSat-218D"
 ESTIMATORS = ("model", "hold", "propagate")
 

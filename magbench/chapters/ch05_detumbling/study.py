@@ -18,13 +18,13 @@ from ...earth import CircularOrbit
 from ...estimation import magnitude_consistent, triad_attitude, triad_covariance
 from ...result_cache import cached_result
 from ...sim import detumble_monte_carlo, detumble_time, simulate_detumble
+from ...units import DEG
 
 __all__ = ["samsat_orbit", "envelope_orbit", "max_field", "field_direction_rate", "mean_square_field", "fig1_gains", "duty_study",
            "envelope_distribution", "kovalenko_650_time", "gain_sweep", "decay_rate_sweep", "basilisk_peer", "BASILISK",
            "printed_kinematics_rates", "printed_dipole_projection", "triad_geometry", "triad_rejection",
            "triad_vs_align_vectors", "geopolar_b2_range", "chained_detumble"]
 
-DEG = np.pi / 180.0
 
 #: Shared reference §6.1: Basilisk 2.12.1, 3U (z long), inertially fixed dipole 31.2 µT
 #: tilted 11°, 10 Hz sampled B-dot k = 5e4 A·m²·s/T, ±0.2 A·m², no gravity gradient:

@@ -22,13 +22,13 @@ from ..._format import format_number
 from .._base import Chapter, chapter_parameters
 from .defaults import default_rotor_orbit, default_rotor_satellite, rotor_parameters
 from ..._validate import shown
+from ...units import DEG
 
 __all__ = ["CHAPTER", "INPUTS", "default_rotor_orbit", "default_rotor_satellite", "rotor_parameters",
            "default_run", "orbit_maxima", "claim_rows", "damping_checks", "kovalenko_checks",
            "relay_mean_moment", "relay_spin_correction", "printed_damping_power"]
 
 RPM = 2.0 * math.pi / 60.0
-DEG = math.pi / 180.0
 
 #: The chapter's inputs: names in the rotor parameter set (``data/rotor/params.toml``).
 INPUTS = (

@@ -19,9 +19,9 @@ from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 from . import CHAPTER, default_rotor_orbit, default_rotor_satellite, default_run, orbit_maxima
 from ..._validate import shown
+from ...units import DEG
 
 SOURCE = "rotor slides (Ovchinnikov, Pen'kov, Roldugin, Tkachev)"
-DEG = math.pi / 180.0
 RPM = 2.0 * math.pi / 60.0
 
 

@@ -14,6 +14,7 @@ from ...errata import printed_check
 from ...io import load_parameter_set, load_printed
 from ...result_cache import cached_result
 from .._base import Chapter, chapter_parameters
+from ...units import DEG
 
 __all__ = ["CHAPTER", "INPUTS", "capture_run", "decay_fits", "decay_balance", "full_run", "orbit_from",
            "satellite_from", "capture_rows", "full_run_rows", "session_fits", "cone_checks", "table_checks",
@@ -286,7 +287,6 @@ def full_run_rows(params=None):
     run = full_run(p)
     cap = capture_run(p)
     spread_angle, spread_l = float(np.std(cap["final_angle"])), float(np.std(cap["final_momentum"]))
-    deg = np.pi / 180.0
     note = (f"consistency check, not a test: one {p['full_run_duration'] / 3600:g} h full-dynamics run from "
             "session 1 (Table 1 row 1), mean over its last orbit; one random direction of K; rod volume "
             f"calibrated on Fig. 14, magnet moment chosen. Over its last {FINAL_ORBITS} orbits the orbit-mean angle "
@@ -296,10 +296,10 @@ def full_run_rows(params=None):
     return [
         make_row("tns0-full-run-angle-table2", "Angle between B and the symmetry axis after capture (full run)",
                  "TNS-0 Table 2 (fit of one orbit of flight data)", printed["tns0-table2-nutation"].value,
-                 run["final_angle"], spread_angle, unit="deg", scale=deg, note=note),
+                 run["final_angle"], spread_angle, unit="deg", scale=DEG, note=note),
         make_row("tns0-full-run-angle-conclusion", "Angle between B and the symmetry axis after capture (full run)",
                  "TNS-0 conclusions (flight data)", printed["tns0-final-angle"].value, run["final_angle"], spread_angle,
-                 unit="deg", scale=deg, note=note),
+                 unit="deg", scale=DEG, note=note),
         make_row("tns0-full-run-momentum-table2", "Angular momentum after capture (full run)",
                  "TNS-0 Table 2 (fit of one orbit of flight data)", printed["tns0-table2-angular-momentum"].value,
                  run["final_momentum"], spread_l, unit="kg m^2/s", note=note),
@@ -382,7 +382,6 @@ def capture_rows(params=None):
     cap = capture_run(params)
     angle = cap["final_angle"]
     mean, spread = float(np.mean(angle)), float(np.std(angle))
-    deg = np.pi / 180.0
     fall = -float(np.degrees(np.mean(cap["final_drift"])) * 3600.0)
     note = (f"consistency check, not a test: mean ± sd over {angle.size} members of a "
             f"{_params(params)['capture_duration'] / 3600:g} h capture run from a random direction of K (rod volume "
@@ -393,9 +392,9 @@ def capture_rows(params=None):
     return [
         make_row("tns0-final-angle-table2", "Angle between B and the symmetry axis in the final regime",
                  "TNS-0 Table 2 (fit of one orbit of flight data)", table2.value, mean, spread,
-                 unit="deg", scale=deg, note=note),
+                 unit="deg", scale=DEG, note=note),
         make_row("tns0-final-angle-conclusion", "Angle between B and the symmetry axis (in words, 'about 45°')",
-                 "TNS-0 conclusions (flight data)", words.value, mean, spread, unit="deg", scale=deg, note=note),
+                 "TNS-0 conclusions (flight data)", words.value, mean, spread, unit="deg", scale=DEG, note=note),
     ]
 
 

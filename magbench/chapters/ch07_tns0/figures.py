@@ -12,9 +12,9 @@ from . import CHAPTER, capture_run, decay_balance, decay_fits, full_run, orbit_f
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
+from ...units import DEG
 
 SOURCE = "TNS-0 preprint (Ilyin et al. 2006)"
-DEG = np.pi / 180.0
 
 
 def _defaults():
