@@ -499,6 +499,11 @@ def rotor_stability_map(restoring, damping, *, axial_ratio, momentum, inclinatio
     return np.abs(rho[..., 0])
 
 
+#: The normalised loop: "compiled" (:mod:`magbench.sim._normalised_rotor_kernel`) or
+#: "numpy" (the reference, the same operations; the tests switch it to compare the two).
+_NORMALISED_ENGINE = "compiled"
+
+
 def _normalised_flow(a, c1, kappa, kappa_w, i, steps, orbits=1, record=False, real=None):
     h = 2.0 * math.pi / steps
 
@@ -510,7 +515,32 @@ def _normalised_flow(a, c1, kappa, kappa_w, i, steps, orbits=1, record=False, re
                 out.append(x)
         return np.stack(out, axis=1) if record else x
 
-    return flow
+    def compiled_flow(x):
+        from ._normalised_rotor_kernel import normalised_flow
+
+        x = np.asarray(x, dtype=float)
+        shape = np.broadcast_shapes(x.shape[1:], np.shape(kappa), np.shape(kappa_w))
+        members = int(np.prod(shape))
+        state = np.array(np.broadcast_to(x, (5,) + shape), dtype=float).reshape(5, members)   # a writable copy
+        gains = [np.array(np.broadcast_to(g, shape), dtype=float).reshape(members) for g in (kappa, kappa_w)]
+        n = steps * orbits
+        out = np.empty((5, n + 1, members) if record else (0, 0, 0))
+        if real is None:
+            field = np.zeros(4)
+        else:
+            # orbital_dipole_b's terms that do not depend on u, computed as it computes them
+            tilt, lam = real
+            field = np.array([np.sin(i) * np.cos(tilt) - np.cos(i) * np.sin(tilt) * np.cos(lam),
+                              np.sin(tilt) * np.sin(lam),
+                              np.sin(i) * np.sin(tilt) * np.cos(lam) + np.cos(i) * np.cos(tilt),
+                              dipole_equatorial_b(1.0, 1.0)], dtype=float)
+        normalised_flow(state, n, h, float(a), float(c1), gains[0], gains[1], float(i), real is not None, field,
+                        record, out)
+        if record:
+            return out.reshape((5, n + 1) + shape)
+        return state.reshape((5,) + shape)
+
+    return compiled_flow if _NORMALISED_ENGINE == "compiled" else flow
 
 
 def rotor_finite_difference_monodromy(axial_ratio, momentum, restoring, damping, inclination, *, steps=2000,
