@@ -23,12 +23,25 @@ __all__ = ["orbit_geometry", "dipole_field_rate_radial", "field_table"]
 
 
 def orbit_geometry(orbit):
-    """The float64 vector ``geo`` the kernels read, for a :class:`~magbench.earth.CircularOrbit`.
+    """The float64 vector ``geo`` the kernels read, for a circular orbit.
 
-    geo = (n, μ0/(4π r³), node[3], ahead[3], sin δ, cos δ, λ0, ω_E, M): the mean motion
-    [rad/s], the field scale [T/(A·m²)], the unit vectors toward the ascending node and 90°
-    ahead of it, the dipole tilt's sine and cosine, the pole's longitude at time 0 [rad],
-    the Earth's rotation rate [rad/s] and its dipole moment [A·m²].
+    Parameters
+    ----------
+    orbit : CircularOrbit
+        The orbit and its dipole [SI].
+
+    Returns
+    -------
+    ndarray, shape (13,)
+        geo = (n, μ0/(4π r³), node[3], ahead[3], sin δ, cos δ, λ0, ω_E, M): the mean motion
+        [rad/s], the field scale [T/(A·m²)], the unit vectors toward the ascending node and
+        90° ahead of it [-], the dipole tilt's sine and cosine [-], the pole's longitude at
+        time 0 [rad], the Earth's rotation rate [rad/s] and its dipole moment [A·m²].
+
+    Notes
+    -----
+    Not in the sources: the terms of :meth:`magbench.earth.CircularOrbit.field_rate_and_position`
+    (Kovalenko (1975) eq. (2.36)) that do not depend on time.
     """
     ci, si = np.cos(orbit.inclination), np.sin(orbit.inclination)
     co, so = np.cos(orbit.ascending_node), np.sin(orbit.ascending_node)

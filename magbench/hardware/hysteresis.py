@@ -19,6 +19,7 @@ H_from being the field on the limb the state comes from; on a limb the slope is 
 
 import numpy as np
 
+from ..integrate import rk4_step
 from .._validate import as_finite, as_nonnegative, as_positive, as_positive_scalar, shown
 
 __all__ = ["limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
@@ -64,6 +65,11 @@ def limb_induction(field, coercivity, remanence, saturation, *, ascending=True):
     hc, _, bs, k = _material(coercivity, remanence, saturation)
     shift = hc if ascending else -hc
     return 2.0 * bs / np.pi * np.arctan(k * (h - shift))
+
+
+def _slope_along_h(h, b, direction, hc, bs, k):
+    """dB/dH with H first, as an integrator takes a right-hand side."""
+    return _slope(b, h, direction, hc, bs, k)
 
 
 def _slope(b, h, direction, hc, bs, k):
@@ -166,12 +172,8 @@ def hysteresis_response(field, coercivity, remanence, saturation, *, initial_ind
         dh = delta / n
         state = b[..., j]
         for s in range(n):
-            hh = start + s * dh
-            k1 = _slope(state, hh, direction, hc, bs, k)
-            k2 = _slope(state + 0.5 * dh * k1, hh + 0.5 * dh, direction, hc, bs, k)
-            k3 = _slope(state + 0.5 * dh * k2, hh + 0.5 * dh, direction, hc, bs, k)
-            k4 = _slope(state + dh * k3, hh + dh, direction, hc, bs, k)
-            state = state + dh / 6.0 * (k1 + 2.0 * (k2 + k3) + k4)
+            # the library's RK4 step with H as the independent variable
+            state = rk4_step(_slope_along_h, start + s * dh, state, dh, args=(direction, hc, bs, k))
         b[..., j + 1] = state
     return b
 

@@ -8,7 +8,7 @@ satellite; the loops are imported from their modules.
 """
 
 from .detumble import DetumbleRun, detumble_monte_carlo, detumble_time, simulate_detumble
-from .integrate import rk4_step
+from ..integrate import rk4_step
 from .passive import PassiveRun, PassiveSatellite, flat_spin_decay_rate, initial_passive_state, simulate_passive
 from .result import SimulationResult
 from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimensionless, rotor_finite_difference_monodromy,

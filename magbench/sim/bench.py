@@ -54,7 +54,7 @@ from .._validate import as_count, as_finite, as_in_range, as_nonnegative, as_pos
 from ..constants import MU_0
 from ..dynamics.pendulum import Mockup, mockup_rhs
 from ..rotations import wrap_angle
-from .integrate import rk4_step
+from ..integrate import rk4_step, solve_adaptive
 from .result import SimulationResult
 
 __all__ = ["BenchSetup", "controller_step", "horizontal_field", "coil_full_scale_moment",
@@ -857,8 +857,6 @@ def simulate_bench_reference(setup, psi_des, *, duration, release_angle=0.0, rel
     >>> simulate_bench_reference(s, 1.0, duration=0.05).psi.shape
     (6,)
     """
-    from scipy.integrate import solve_ivp
-
     dt = setup.sample_interval
     steps = int(round(float(duration) / dt))
     kappa = setup.thread_stiffness if thread_stiffness is None else float(thread_stiffness)
@@ -877,8 +875,8 @@ def simulate_bench_reference(setup, psi_des, *, duration, release_angle=0.0, rel
         m1, m2, estimate, integral = controller_step(setup, psi_des, gyro, bx, by, estimate, integral,
                                                      full_actual[0], full_actual[1])
         out[k] = psi, omega, m1, m2, estimate
-        sol = solve_ivp(mockup_rhs, (k * dt, (k + 1) * dt), state, args=((float(m1), float(m2)), plant),
-                        rtol=rtol, atol=atol)
+        sol = solve_adaptive(mockup_rhs, (k * dt, (k + 1) * dt), state, args=((float(m1), float(m2)), plant),
+                             method="RK45", rtol=rtol, atol=atol)
         state = sol.y[:, -1]
     out[steps] = state[0], state[1], out[steps - 1, 2], out[steps - 1, 3], estimate
     return SimulationResult(np.arange(steps + 1) * dt, out[:, :2].T, out[:, 2:4].T, out[:, 4:].T,

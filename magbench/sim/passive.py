@@ -24,7 +24,7 @@ from ..dynamics.torques import _rod_moment
 from ..earth.circular_orbit import CircularOrbit
 from ..hardware.hysteresis import _material, _slope, rod_cycle_energy
 from .detumble import _Field
-from .integrate import rk4_step
+from ..integrate import rk4_step
 from .result import SimulationResult
 
 __all__ = ["PassiveSatellite", "PassiveRun", "simulate_passive", "initial_passive_state", "flat_spin_decay_rate"]

@@ -13,7 +13,7 @@ from .._validate import as_finite, as_positive, shown
 from ..dynamics.pendulum import Mockup, mockup_rhs, two_coil_torque
 from ..control.allocation import ALLOCATIONS
 from ..control.pid import pid_step
-from .integrate import rk4_step
+from ..integrate import rk4_step, solve_adaptive
 from .result import SimulationResult
 
 __all__ = ["PidLoop", "loop_torque", "pid_continuous_rhs", "simulate_pid"]
@@ -208,8 +208,6 @@ def simulate_pid(loop, initial_angle, initial_rate, duration, *, sample_interval
     >>> abs(float(r.psi[-1])) < 1e-3
     True
     """
-    from scipy.integrate import solve_ivp
-
     initial_angle = float(as_finite("initial_angle", initial_angle))
     initial_rate = float(as_finite("initial_rate", initial_rate))
     duration = float(as_positive("duration", duration, unit="s"))
@@ -217,10 +215,8 @@ def simulate_pid(loop, initial_angle, initial_rate, duration, *, sample_interval
     t_out = np.linspace(0.0, duration, max(1, int(round(duration / out))) + 1)
     if sample_interval is None:
         t = t_out
-        sol = solve_ivp(pid_continuous_rhs, (0.0, duration), [initial_angle, initial_rate, 0.0],
-                        args=(loop,), t_eval=t, rtol=1e-9, atol=1e-12, max_step=min(out, 1.0), method=method)
-        if not sol.success:
-            raise RuntimeError(f"solve_ivp failed: {sol.message}")
+        sol = solve_adaptive(pid_continuous_rhs, (0.0, duration), [initial_angle, initial_rate, 0.0],
+                             args=(loop,), t_eval=t, rtol=1e-9, atol=1e-12, max_step=min(out, 1.0), method=method)
         psi, omega, integral = sol.y
         raw = loop.kp * (loop.target - psi) + loop.ki * integral - loop.kd * omega
         command = np.clip(raw, -loop.moment_limit, loop.moment_limit)

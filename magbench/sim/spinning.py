@@ -23,7 +23,6 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
 from .._validate import as_choice, as_finite, as_in_range, as_positive, as_positive_or_infinite, as_positive_scalar, shown
@@ -34,7 +33,7 @@ from ..dynamics.rigid_body import _inertia_matrix
 from ..earth.circular_orbit import CircularOrbit
 from ..earth.dipole import dipole_equatorial_b
 from ..earth.orbit import orbital_dipole_b
-from .integrate import rk4_step
+from ..integrate import rk4_step, solve_adaptive
 from .result import SimulationResult
 
 __all__ = ["RotorSatellite", "RotorRun", "rotor_dimensionless", "rotor_satellite_from_dimensionless", "rotor_normalised_rhs",
@@ -760,10 +759,8 @@ def simulate_rotor(satellite, orbit, duration, *, initial_angles=(0.0, 0.0, 0.0)
 
     constants = _body_constants(satellite, orbit, damping)
     samples = np.arange(0.0, t_end * (1.0 + 1e-12), dt)
-    sol = solve_ivp(rotor_rhs, (0.0, float(samples[-1])), np.concatenate([q0, w0]), method=method, t_eval=samples,
-                    rtol=rtol, atol=atol, args=(constants,))
-    if not sol.success:
-        raise RuntimeError(f"solve_ivp failed: {sol.message}")
+    sol = solve_adaptive(rotor_rhs, (0.0, float(samples[-1])), np.concatenate([q0, w0]), method=method,
+                         t_eval=samples, rtol=rtol, atol=atol, args=(constants,))
     y = sol.y.T
     q = y[:, :4] / np.linalg.norm(y[:, :4], axis=1, keepdims=True)
     omega = y[:, 4:]

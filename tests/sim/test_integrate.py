@@ -1,4 +1,4 @@
-"""magbench.sim.integrate: the one fixed-step integrator."""
+"""magbench.integrate: the fixed-step RK4 step and the checked adaptive solve."""
 
 import numpy as np
 from numpy.testing import assert_allclose
@@ -50,3 +50,16 @@ def test_rk4_on_the_mock_up_is_bit_for_bit_the_bench_step_it_replaced():
     new = rk4_step(mockup_rhs, 0.0, np.array([psi, omega]), 0.01, args=((m1, m2), plant))
     old = _old_bench_step(psi, omega, m1, m2, 0.01, 3.3e-4, 0.005, kappa, 0.2)
     assert np.array_equal(new[0], old[0]) and np.array_equal(new[1], old[1])
+
+
+def test_adaptive_solve_matches_the_closed_form_and_raises_when_the_solver_stops():
+    import pytest
+
+    from magbench.integrate import solve_adaptive
+
+    sol = solve_adaptive(lambda t, x, k: -k * x, (0.0, 2.0), [1.0], args=(0.5,), rtol=1e-11, atol=1e-14)
+    assert_allclose(sol.y[0, -1], np.exp(-1.0), rtol=1e-10)     # DOP853 at rtol 1e-11
+    # x' = x² from x(0) = 1 blows up at t = 1: the solver stops short of t = 2, and says so
+    stopped = r"DOP853 integration stopped at t = (0\.9\d*|1) of \(0, 2\): Required step size"
+    with pytest.raises(RuntimeError, match=stopped):
+        solve_adaptive(lambda t, x: x * x, (0.0, 2.0), [1.0])

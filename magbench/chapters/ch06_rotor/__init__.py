@@ -193,7 +193,7 @@ def relay_spin_correction(relative_change, field_ratio, *, torque_number=2e-4, a
     achieved : float
         The spin's relative change at the end [-].
     """
-    from scipy.integrate import solve_ivp
+    from ...integrate import solve_adaptive
 
     if not 0.0 < relative_change < 0.5:
         raise ValueError(f"relative_change must be in (0, 0.5), got {shown(relative_change)}")
@@ -216,7 +216,7 @@ def relay_spin_correction(relative_change, field_ratio, *, torque_number=2e-4, a
     # Kovalenko (7.26)-(7.29): mean moment (4/π) L0, so t0 = δω J3 ω3 / ((4/π) L0 B⊥)
     duration = relative_change * j3 / (4.0 / math.pi * l0)
     y0 = np.concatenate([np.eye(3).ravel(), [0.0, 0.0, 1.0]])
-    sol = solve_ivp(rhs, (0.0, duration), y0, method="DOP853", rtol=1e-10, atol=1e-12, max_step=0.05)
+    sol = solve_adaptive(rhs, (0.0, duration), y0, method="DOP853", rtol=1e-10, atol=1e-12, max_step=0.05)
     r_end, w_end = sol.y[:9, -1].reshape(3, 3), sol.y[9:, -1]
     k0 = np.array([0.0, 0.0, j3])
     k1 = r_end @ np.array([j1 * w_end[0], j1 * w_end[1], j3 * w_end[2]])

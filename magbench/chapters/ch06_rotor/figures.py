@@ -303,9 +303,8 @@ def _energy_run(law, gain, rotor_momentum, initial_rate, field_rate, b0, duratio
     and :func:`magbench.control.spin.slides_printed_damping_torque` (printed): −k_w w⊥ and
     +k_w w⊥ with w = ω (the tests hold the kernel's torque to both).
     """
-    from scipy.integrate import solve_ivp
-
     from ...dynamics.kernels import gyrostat_turning_field_rhs
+    from ...integrate import solve_adaptive
 
     inertia = default_rotor_satellite(_defaults()).inertia_matrix
     if np.any(np.abs(inertia - np.diag(np.diag(inertia))) > 0):
@@ -314,10 +313,8 @@ def _energy_run(law, gain, rotor_momentum, initial_rate, field_rate, b0, duratio
     k = float(gain) * (1.0 if law == "corrected" else -1.0)
     t = np.linspace(0.0, duration, 301)
     y0 = [initial_rate] * 3 + [b0, 0.0, 0.0] + [0.0, 1.0, 0.0]
-    sol = solve_ivp(gyrostat_turning_field_rhs, (0.0, duration), y0, t_eval=t, rtol=1e-9, atol=1e-12, method="DOP853",
-                    args=(np.diag(inertia).copy(), float(rotor_momentum), k, float(field_rate)))
-    if not sol.success:
-        raise RuntimeError(f"the {law} energy run failed: {sol.message}")
+    sol = solve_adaptive(gyrostat_turning_field_rhs, (0.0, duration), y0, t_eval=t, rtol=1e-9, atol=1e-12,
+                         method="DOP853", args=(np.diag(inertia).copy(), float(rotor_momentum), k, float(field_rate)))
     w = sol.y[:3].T
     return t, 0.5 * np.einsum("ni,ij,nj->n", w, inertia, w)
 
