@@ -21,20 +21,8 @@ from .spin import (momentum_damping_dipole, projected_damping_dipole, rotor_equi
                    rotor_equilibrium_dipole, rotor_program_field, rotor_reference_momentum, rotor_spin_reference,
                    slides_printed_damping_torque)
 
-_SIMULATION = ("PidLoop", "loop_torque", "pid_continuous_rhs", "ClosedLoopResult", "simulate_pid")
-
-
-def __getattr__(name):
-    # Compatibility: the simulation composes control laws, so control must not import it.
-    if name in _SIMULATION:
-        from ..sim import pid_loop
-
-        return getattr(pid_loop, name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
 __all__ = ["pid_step", "pid_gains_for_triple_pole", "ALLOCATIONS", "body_field_exact", "body_field_small_angle",
-           "dipole_allocation", *_SIMULATION, "closed_loop_polynomial", "closed_loop_poles",
+           "dipole_allocation", "closed_loop_polynomial", "closed_loop_poles",
            "integral_gain_limit", "critical_gain_scale", "ziegler_nichols_pid",
            "double_integrator_ultimate_gain", "GAIN_READINGS", "gain_reading_scale", "bdot_dipole",
            "bdot_dipole_projected", "avanzini_giulietti_gain", "samsat_gain", "held_bdot_rate_limit",

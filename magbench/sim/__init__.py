@@ -3,12 +3,13 @@ result type (:class:`SimulationResult`), the mock-up's PID loop (:mod:`.pid_loop
 bench loop (:mod:`.bench`), B-dot detumbling on orbit (:mod:`.detumble`), the spinning spacecraft with a
 coaxial rotor (:mod:`.spinning`) and the passive magnetic satellite (:mod:`.passive`).
 
-Re-exports the integrator, the result type, detumbling, the spinning spacecraft and the passive
-satellite; the loops are imported from their modules.
+Re-exports the integrator, the result type, the mock-up's PID loop, detumbling, the spinning
+spacecraft and the passive satellite; the bench loop is imported from its module.
 """
 
 from .detumble import DetumbleRun, detumble_monte_carlo, detumble_time, simulate_detumble
 from ..integrate import rk4_step
+from .pid_loop import PidLoop, loop_torque, pid_continuous_rhs, simulate_pid
 from .passive import PassiveRun, PassiveSatellite, flat_spin_decay_rate, initial_passive_state, simulate_passive
 from .result import SimulationResult
 from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimensionless, rotor_finite_difference_monodromy,
@@ -16,7 +17,7 @@ from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimension
                        rotor_satellite_from_dimensionless, rotor_stability_map, simulate_rotor,
                        simulate_rotor_normalised)
 
-__all__ = ["rk4_step", "SimulationResult", "DetumbleRun", "simulate_detumble", "detumble_time",
+__all__ = ["rk4_step", "SimulationResult", "PidLoop", "loop_torque", "pid_continuous_rhs", "simulate_pid", "DetumbleRun", "simulate_detumble", "detumble_time",
            "detumble_monte_carlo",
            "PassiveSatellite", "PassiveRun", "simulate_passive", "initial_passive_state", "flat_spin_decay_rate",
            "RotorSatellite", "RotorRun", "rotor_dimensionless",

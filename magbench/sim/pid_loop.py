@@ -18,9 +18,6 @@ from .result import SimulationResult
 
 __all__ = ["PidLoop", "loop_torque", "pid_continuous_rhs", "simulate_pid"]
 
-#: The old name of the simulations' one result type, still served by magbench.control.
-ClosedLoopResult = SimulationResult
-
 
 @dataclass(frozen=True)
 class PidLoop:

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from magbench import control
+from magbench import sim
 from magbench.sim import bench
 from magbench.dynamics import Mockup, mockup_rhs, pendulum_rhs, two_coil_rhs
 
@@ -26,7 +26,7 @@ def test_the_right_hand_sides_are_one_equation():
 
 
 def test_loops_carry_the_plant():
-    loop = control.PidLoop(0.005, 3.3e-4, 0.1, 0.001, 2.0)
+    loop = sim.PidLoop(0.005, 3.3e-4, 0.1, 0.001, 2.0)
     assert loop.plant == Mockup(0.005, 3.3e-4)
     setup = bench.BenchSetup(0.005, 3.3e-4, (55.0, 55.0), 240, 0.1, 12.0, 0.1, 0.001, 2.0, 0.98,
                              thread_stiffness=1e-6, thread_neutral_angle=0.2)

@@ -9,6 +9,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 from magbench import control
+from magbench import sim
 from magbench.constants import MU_0
 
 J, M1 = 0.005, 0.4                  # thesis seed line 516
@@ -61,8 +62,8 @@ def test_ziegler_nichols_on_a_double_integrator():
 def test_linear_step_response_matches_python_control():
     ct = _ct()
     kp, ki, kd = control.pid_gains_for_triple_pole(J, B0, 0.05)
-    loop = control.PidLoop(J, B0, kp, ki, kd, target=0.01)       # exact allocation, unsaturated
-    run = control.simulate_pid(loop, 0.0, 0.0, 300.0, output_interval=0.5)
+    loop = sim.PidLoop(J, B0, kp, ki, kd, target=0.01)       # exact allocation, unsaturated
+    run = sim.simulate_pid(loop, 0.0, 0.0, 300.0, output_interval=0.5)
     # Derivative on the measurement: r → ψ is B0 (Kp s + Ki) / (J s³ + B0 Kd s² + B0 Kp s + B0 Ki).
     sys = ct.tf(B0 * np.array([kp, ki]), control.closed_loop_polynomial(J, B0, kp, ki, kd))
     ref = ct.forced_response(sys, run.time, 0.01 * np.ones_like(run.time)).outputs
@@ -78,7 +79,7 @@ def test_interconnection_matches_simulate_pid():
     t = np.linspace(0.0, 200.0, 401)
     ref = ct.input_output_response(system, t, 0.1 * np.ones_like(t), X0=np.zeros(3),
                                    solve_ivp_kwargs={"rtol": 1e-10, "atol": 1e-13, "max_step": 0.5})
-    ours = control.simulate_pid(control.PidLoop(J, B0, kp, ki, kd, target=0.1, moment_limit=0.4),
+    ours = sim.simulate_pid(sim.PidLoop(J, B0, kp, ki, kd, target=0.1, moment_limit=0.4),
                                 0.0, 0.0, 200.0, output_interval=0.5)
     # Unsaturated (Kp·0.1 ≪ 0.4), so the anti-windup schemes do not enter; solver tolerances.
     assert_allclose(ours.psi, ref.outputs[0], atol=1e-7)

@@ -6,7 +6,7 @@ import pickle
 import numpy as np
 import pytest
 
-from magbench import control
+from magbench import control, sim
 from magbench.sim import bench
 from magbench.sim import SimulationResult
 
@@ -39,9 +39,9 @@ def test_copies_and_pickles():
 
 
 def test_the_simulations_return_it_with_their_labels():
-    loop = control.PidLoop(0.005, 3.3e-4, 0.1, 0.001, 2.0, moment_limit=0.4)
-    for run in (control.simulate_pid(loop, 0.1, 0.0, 2.0),
-                control.simulate_pid(loop, 0.1, 0.0, 2.0, sample_interval=0.1)):
+    loop = sim.PidLoop(0.005, 3.3e-4, 0.1, 0.001, 2.0, moment_limit=0.4)
+    for run in (sim.simulate_pid(loop, 0.1, 0.0, 2.0),
+                sim.simulate_pid(loop, 0.1, 0.0, 2.0, sample_interval=0.1)):
         assert isinstance(run, SimulationResult)
         assert (run.state_labels, run.input_labels, run.output_labels) == (
             ("psi", "rate", "integral"), ("command",), ("torque",))
@@ -56,6 +56,9 @@ def test_the_simulations_return_it_with_their_labels():
     np.testing.assert_allclose(fast.inputs[:, :, 0], ref.inputs, rtol=0, atol=1e-12)
 
 
-def test_the_old_names_are_the_one_type():
-    # BenchRun went with the magbench.bench shim; ClosedLoopResult stays an old name of the one type.
-    assert control.ClosedLoopResult is SimulationResult and not hasattr(bench, "BenchRun")
+def test_one_result_type_and_no_old_names():
+    # BenchRun went with the magbench.bench shim, ClosedLoopResult with control's lazy import of
+    # the simulation (an arrow from a family up to sim/); the PID loop returns the one type.
+    assert not hasattr(control, "ClosedLoopResult") and not hasattr(bench, "BenchRun")
+    loop = sim.PidLoop(0.005, 3.14e-4, 0.12, 0.002, 2.4, moment_limit=0.4)
+    assert isinstance(sim.simulate_pid(loop, 0.05, 0.0, 1.0), SimulationResult)

@@ -9,6 +9,7 @@ import numpy as np
 
 from ... import control
 from ... import dynamics
+from ... import sim
 from ...constants import MU_0
 from ..._format import format_number
 from . import CHAPTER, KD_SWEEP, KP_SWEEP, PRINTED_SETS
@@ -287,11 +288,11 @@ def build_interconnection(inertia, field, kp, ki, kd, moment_limit):
 
     The sensors and the complementary filter of thesis eq. (39) are a block of their
     own (``sensors``: ψ, ω → ψ̂, ω_g); in this continuous model they are ideal (ψ̂ = ψ,
-    ω_g = ω), so the loop is the one :func:`magbench.control.simulate_pid` integrates.
+    ω_g = ω), so the loop is the one :func:`magbench.sim.simulate_pid` integrates.
     """
     import control as ct
 
-    loop = control.PidLoop(inertia, field, kp, ki, kd, moment_limit=moment_limit)
+    loop = sim.PidLoop(inertia, field, kp, ki, kd, moment_limit=moment_limit)
     summing = ct.summing_junction(inputs=["psi_des", "-psi_hat"], output="e", name="sum")
     pid = ct.nlsys(lambda t, x, u, p: [u[0]], lambda t, x, u, p: [kp * u[0] + ki * x[0] - kd * u[1]],
                    inputs=["e", "omega_gyro"], outputs=["u"], states=["integral"],
@@ -421,10 +422,10 @@ def compute_sweep(inertia, field, moment, initial_angle, duration, hypothesis_sc
     series = []
     for tag, scale in (("SI", 1.0), ("hypothesis", hypothesis_scale)):
         for kp, ki, kd in sweep:
-            loop = control.PidLoop(inertia, field, scale * kp, scale * ki, scale * kd,
+            loop = sim.PidLoop(inertia, field, scale * kp, scale * ki, scale * kd,
                                    moment_limit=scale * moment)
             # The large-gain readings are stiff (a real pole far beyond the oscillation).
-            run = control.simulate_pid(loop, initial_angle, 0.0, duration, output_interval=0.25,
+            run = sim.simulate_pid(loop, initial_angle, 0.0, duration, output_interval=0.25,
                                        method="RK45" if scale < 100 else "LSODA")
             poles = control.closed_loop_poles(inertia, field, scale * kp, scale * ki, scale * kd)
             series.append(Series(f"{tag}: Kp = {kp:g}, Ki = {ki:g}, Kd = {kd:g}", {
@@ -605,8 +606,8 @@ def compute_allocation_error():
     """Exact against the thesis's small-angle allocation, over the body angle ψ."""
     psi = np.linspace(0.0, np.pi, 721)
     world = np.array([1.0, 0.0, 0.0])
-    loop = control.PidLoop(1.0, 1.0, 0.0, 0.0, 0.0, allocation="small-angle")
-    gain = control.loop_torque(psi, 1.0, loop)                    # torque per unit command, B0 = 1
+    loop = sim.PidLoop(1.0, 1.0, 0.0, 0.0, 0.0, allocation="small-angle")
+    gain = sim.loop_torque(psi, 1.0, loop)                    # torque per unit command, B0 = 1
     b_small = control.body_field_small_angle(psi, world)
     b_exact = control.body_field_exact(psi, world)
     coils = control.dipole_allocation(np.array([0.0, 0.0, 1.0]), b_small)
@@ -723,9 +724,9 @@ def compute_step_response(inertia, field, moment, bandwidth, sample_interval, sm
     for name, step in (("small", small_step), ("large", large_step)):
         runs = {
             "linear (python-control)": None,
-            "nonlinear, saturated": control.PidLoop(inertia, field, kp, ki, kd, target=step, moment_limit=moment),
-            "sampled, saturated": control.PidLoop(inertia, field, kp, ki, kd, target=step, moment_limit=moment),
-            "small-angle allocation": control.PidLoop(inertia, field, kp, ki, kd, target=step, moment_limit=moment,
+            "nonlinear, saturated": sim.PidLoop(inertia, field, kp, ki, kd, target=step, moment_limit=moment),
+            "sampled, saturated": sim.PidLoop(inertia, field, kp, ki, kd, target=step, moment_limit=moment),
+            "small-angle allocation": sim.PidLoop(inertia, field, kp, ki, kd, target=step, moment_limit=moment,
                                                       allocation="small-angle"),
         }
         for label, loop in runs.items():
@@ -734,7 +735,7 @@ def compute_step_response(inertia, field, moment, bandwidth, sample_interval, sm
                 psi = ct.forced_response(closed, t, step * np.ones_like(t)).outputs
                 u = np.full_like(t, np.nan)
             else:
-                r = control.simulate_pid(loop, 0.0, 0.0, duration, output_interval=0.5,
+                r = sim.simulate_pid(loop, 0.0, 0.0, duration, output_interval=0.5,
                                          sample_interval=sample_interval if label.startswith("sampled") else None)
                 t, psi, u = r.time, r.psi, r.command
             cols = {"t": ("s", t), "psi": ("rad", psi)}
