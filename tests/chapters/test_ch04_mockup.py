@@ -14,6 +14,7 @@ from scipy.integrate import solve_ivp
 
 from magbench import control
 from magbench import dynamics
+from magbench import sim
 from magbench.constants import MU_0
 
 J, M1 = 0.005, 0.4                  # thesis seed line 516
@@ -167,18 +168,18 @@ def test_exact_allocation_gives_the_commanded_torque():
     coils = control.dipole_allocation(mz, b_body / B0)
     tau = np.cross(coils, b_body)[:, 2]                          # M × B, independent of eq. (36)
     assert_allclose(tau, B0 * u, rtol=1e-12, atol=1e-20)
-    loop = control.PidLoop(J, B0, 0.1, 0.0, 0.5)
-    assert_allclose(control.loop_torque(psi, u, loop), tau, rtol=1e-12, atol=1e-20)
+    loop = sim.PidLoop(J, B0, 0.1, 0.0, 0.5)
+    assert_allclose(sim.loop_torque(psi, u, loop), tau, rtol=1e-12, atol=1e-20)
     assert_allclose(coils[:, 2], 0.0, atol=1e-20)                # only the two horizontal coils
 
 
 def test_small_angle_allocation_error_closed_form():
     psi = np.linspace(-np.pi, np.pi, 201)
-    loop = control.PidLoop(J, B0, 0.1, 0.0, 0.5, allocation="small-angle")
-    ratio = control.loop_torque(psi, 1.0, loop) / B0
+    loop = sim.PidLoop(J, B0, 0.1, 0.0, 0.5, allocation="small-angle")
+    ratio = sim.loop_torque(psi, 1.0, loop) / B0
     assert_allclose(ratio, psi * np.sin(psi) + np.cos(psi), rtol=1e-12, atol=1e-15)
     small = np.array([1e-3, 1e-2])
-    assert_allclose(control.loop_torque(small, 1.0, loop) / B0 - 1, small**2 / 2, rtol=1e-4)   # O(ψ⁴) term
+    assert_allclose(sim.loop_torque(small, 1.0, loop) / B0 - 1, small**2 / 2, rtol=1e-4)   # O(ψ⁴) term
     # The thesis's small-angle vector is the exact one to first order in ψ.
     assert_allclose(control.body_field_small_angle(1e-4, [1.0, 2.0, 0.5]),
                     control.body_field_exact(1e-4, [1.0, 2.0, 0.5]), atol=1e-8)
@@ -195,11 +196,11 @@ def test_printed_gains_are_all_unstable_in_si():
 
 def test_sampled_pid_converges_to_the_continuous_loop():
     kp, ki, kd = control.pid_gains_for_triple_pole(J, B0, 0.05)
-    loop = control.PidLoop(J, B0, kp, ki, kd, moment_limit=0.4)
-    ref = control.simulate_pid(loop, 0.3, 0.0, 100.0, output_interval=1.0)
+    loop = sim.PidLoop(J, B0, kp, ki, kd, moment_limit=0.4)
+    ref = sim.simulate_pid(loop, 0.3, 0.0, 100.0, output_interval=1.0)
     errors = []
     for dt in (0.5, 0.25, 0.125):
-        run = control.simulate_pid(loop, 0.3, 0.0, 100.0, sample_interval=dt, output_interval=1.0)
+        run = sim.simulate_pid(loop, 0.3, 0.0, 100.0, sample_interval=dt, output_interval=1.0)
         errors.append(np.max(np.abs(run.psi - ref.psi)))
     errors = np.array(errors)
     # First order in Δt (zero-order hold, rectangle-rule integral): halving Δt halves the error.
@@ -208,29 +209,29 @@ def test_sampled_pid_converges_to_the_continuous_loop():
 
 
 def test_back_calculation_bleeds_the_integral_in_saturation():
-    loop = control.PidLoop(J, B0, 1.0, 1.0, 1.0, moment_limit=0.4)
+    loop = sim.PidLoop(J, B0, 1.0, 1.0, 1.0, moment_limit=0.4)
     assert loop.tracking == 1.0                                      # √(Kd/Ki)
     # Saturated (raw 1.0 > 0.4): İ = e + (u − raw)/(Ki Tt) = 1 − 0.6.
-    assert control.pid_continuous_rhs(0.0, [-1.0, 0.0, 0.0], loop)[2] == pytest.approx(0.4)
-    assert control.pid_continuous_rhs(0.0, [-0.1, 0.0, 0.0], loop)[2] == pytest.approx(0.1)   # linear
-    free = control.PidLoop(J, B0, 1.0, 1.0, 0.0, moment_limit=0.4, anti_windup=False)
-    assert control.pid_continuous_rhs(0.0, [-1.0, 0.0, 0.0], free)[2] == 1.0
+    assert sim.pid_continuous_rhs(0.0, [-1.0, 0.0, 0.0], loop)[2] == pytest.approx(0.4)
+    assert sim.pid_continuous_rhs(0.0, [-0.1, 0.0, 0.0], loop)[2] == pytest.approx(0.1)   # linear
+    free = sim.PidLoop(J, B0, 1.0, 1.0, 0.0, moment_limit=0.4, anti_windup=False)
+    assert sim.pid_continuous_rhs(0.0, [-1.0, 0.0, 0.0], free)[2] == 1.0
 
 
 def test_saturated_continuous_and_sampled_loops_agree():
     # The two anti-windup schemes differ only while saturated; from a large error both
     # settle on the target, and the sampled loop stays within the coil limit.
     kp, ki, kd = control.pid_gains_for_triple_pole(J, B0, 0.1)      # Kp·2π/3 ≈ 1 A·m² > 0.4
-    loop = control.PidLoop(J, B0, kp, ki, kd, target=2 * np.pi / 3, moment_limit=0.4)
-    cont = control.simulate_pid(loop, 0.0, 0.0, 600.0, output_interval=1.0)
-    samp = control.simulate_pid(loop, 0.0, 0.0, 600.0, sample_interval=0.05, output_interval=1.0)
+    loop = sim.PidLoop(J, B0, kp, ki, kd, target=2 * np.pi / 3, moment_limit=0.4)
+    cont = sim.simulate_pid(loop, 0.0, 0.0, 600.0, output_interval=1.0)
+    samp = sim.simulate_pid(loop, 0.0, 0.0, 600.0, sample_interval=0.05, output_interval=1.0)
     assert np.max(np.abs(cont.command)) == pytest.approx(0.4)          # it does saturate
     assert_allclose([cont.psi[-1], samp.psi[-1]], 2 * np.pi / 3, atol=2e-3)
 
 
 def test_saturated_run_respects_the_coil_limit():
-    loop = control.PidLoop(J, B0, 0.3, 0.01, 3.0, moment_limit=0.4)
-    run = control.simulate_pid(loop, np.pi / 2, 0.0, 200.0)
+    loop = sim.PidLoop(J, B0, 0.3, 0.01, 3.0, moment_limit=0.4)
+    run = sim.simulate_pid(loop, np.pi / 2, 0.0, 200.0)
     assert np.max(np.abs(run.command)) <= 0.4 + 1e-15
     assert np.max(np.abs(run.torque)) <= 0.4 * B0 * (1 + 1e-12)
 
@@ -254,10 +255,10 @@ def test_gain_reading_scales():
     (lambda: dynamics.Mockup(0.0, B0), "inertia"),
     (lambda: dynamics.Mockup(J, np.nan), "field"),
     (lambda: dynamics.thread_center_of_mass(0, 0, 0, 0, -0.1), "cm_offset"),
-    (lambda: control.PidLoop(J, B0, 0.1, 0.5, 0.5, allocation="approx"), "allocation"),
-    (lambda: control.PidLoop(J, B0, 0.1, 0.5, 0.5, moment_limit=0.0), "moment_limit"),
-    (lambda: control.PidLoop(J, -B0, 0.1, 0.5, 0.5), "field"),
-    (lambda: control.simulate_pid(control.PidLoop(J, B0, 0.1, 0.5, 0.5), 0.0, 0.0, -1.0), "duration"),
+    (lambda: sim.PidLoop(J, B0, 0.1, 0.5, 0.5, allocation="approx"), "allocation"),
+    (lambda: sim.PidLoop(J, B0, 0.1, 0.5, 0.5, moment_limit=0.0), "moment_limit"),
+    (lambda: sim.PidLoop(J, -B0, 0.1, 0.5, 0.5), "field"),
+    (lambda: sim.simulate_pid(sim.PidLoop(J, B0, 0.1, 0.5, 0.5), 0.0, 0.0, -1.0), "duration"),
     (lambda: control.body_field_exact(0.1, [1.0, 0.0]), "world_field"),
     (lambda: control.gain_reading_scale("furlongs", B0, 0.4), "reading"),
     (lambda: control.integral_gain_limit(J, B0, 0.0, 0.5), "kp"),
