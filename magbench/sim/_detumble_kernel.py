@@ -143,24 +143,6 @@ def _sample(i, n, state, b, schedule, how, held, window, previous, gain, lim, pr
 
 
 @njit(cache=True, error_model="numpy")
-def _along(x, c, k):
-    """The RK stage's state x + c·k (seven floats)."""
-    return (x[0] + c * k[0], x[1] + c * k[1], x[2] + c * k[2], x[3] + c * k[3], x[4] + c * k[4], x[5] + c * k[5],
-            x[6] + c * k[6])
-
-
-@njit(cache=True, error_model="numpy")
-def _table_rhs(x, b, b_rate, radial, row, m, member, lim, projected, gg, diag, jt, jinv):
-    """_rhs of member m at state x, with the field table's row ``row`` and the member's
-    command and inertia ``member`` = (law, held[3], gain, principal moments[3])."""
-    law, h0, h1, h2, k, j0, j1, j2 = member
-    return _rhs(x[0], x[1], x[2], x[3], x[4], x[5], x[6], b[0, row, m], b[1, row, m], b[2, row, m],
-                b_rate[0, row, m], b_rate[1, row, m], b_rate[2, row, m], radial[0, row, m], radial[1, row, m],
-                radial[2, row, m], law, h0, h1, h2, k, lim[0], lim[1], lim[2], projected, gg, diag, j0, j1, j2, jt,
-                jinv)
-
-
-@njit(cache=True, error_model="numpy")
 def advance_block(state, start, count, h, b, b_rate, radial, schedule, how, held, window, previous, gain, lim,
                   projected, gg, diag, jd, jt, jinv, stride, rates):
     """Advance every member over steps ``start`` … ``start + count − 1`` in place.
@@ -173,6 +155,7 @@ def advance_block(state, start, count, h, b, b_rate, radial, schedule, how, held
     (M, K) |ω| at every ``stride`` steps.
     """
     members = state.shape[1]
+    lim0, lim1, lim2 = lim[0], lim[1], lim[2]
     half = 0.5 * h
     sixth = h / 6.0
     for i in range(start, start + count):
@@ -183,16 +166,27 @@ def advance_block(state, start, count, h, b, b_rate, radial, schedule, how, held
                                           state[5, m], state[6, m])
             law, k, h0, h1, h2 = how[m] == LAW, gain[m], held[0, m], held[1, m], held[2, m]
             j0, j1, j2 = jd[0, m], jd[1, m], jd[2, m]
-            x = (x0, x1, x2, x3, x4, x5, x6)
-            member = (law, h0, h1, h2, k, j0, j1, j2)
-            k10, k11, k12, k13, k14, k15, k16 = k1 = _table_rhs(x, b, b_rate, radial, n, m, member, lim, projected,
-                                                                gg, diag, jt, jinv)
-            k20, k21, k22, k23, k24, k25, k26 = k2 = _table_rhs(_along(x, half, k1), b, b_rate, radial, n + 1, m,
-                                                                member, lim, projected, gg, diag, jt, jinv)
-            k30, k31, k32, k33, k34, k35, k36 = k3 = _table_rhs(_along(x, half, k2), b, b_rate, radial, n + 1, m,
-                                                                member, lim, projected, gg, diag, jt, jinv)
-            k40, k41, k42, k43, k44, k45, k46 = _table_rhs(_along(x, h, k3), b, b_rate, radial, n + 2, m, member,
-                                                           lim, projected, gg, diag, jt, jinv)
+            k10, k11, k12, k13, k14, k15, k16 = _rhs(
+                x0, x1, x2, x3, x4, x5, x6, b[0, n, m], b[1, n, m], b[2, n, m], b_rate[0, n, m], b_rate[1, n, m],
+                b_rate[2, n, m], radial[0, n, m], radial[1, n, m], radial[2, n, m], law, h0, h1, h2, k,
+                lim0, lim1, lim2, projected, gg, diag, j0, j1, j2, jt, jinv)
+            k20, k21, k22, k23, k24, k25, k26 = _rhs(
+                x0 + half * k10, x1 + half * k11, x2 + half * k12, x3 + half * k13, x4 + half * k14,
+                x5 + half * k15, x6 + half * k16, b[0, n + 1, m], b[1, n + 1, m], b[2, n + 1, m],
+                b_rate[0, n + 1, m], b_rate[1, n + 1, m], b_rate[2, n + 1, m], radial[0, n + 1, m],
+                radial[1, n + 1, m], radial[2, n + 1, m], law, h0, h1, h2, k, lim0, lim1, lim2, projected, gg, diag,
+                j0, j1, j2, jt, jinv)
+            k30, k31, k32, k33, k34, k35, k36 = _rhs(
+                x0 + half * k20, x1 + half * k21, x2 + half * k22, x3 + half * k23, x4 + half * k24,
+                x5 + half * k25, x6 + half * k26, b[0, n + 1, m], b[1, n + 1, m], b[2, n + 1, m],
+                b_rate[0, n + 1, m], b_rate[1, n + 1, m], b_rate[2, n + 1, m], radial[0, n + 1, m],
+                radial[1, n + 1, m], radial[2, n + 1, m], law, h0, h1, h2, k, lim0, lim1, lim2, projected, gg, diag,
+                j0, j1, j2, jt, jinv)
+            k40, k41, k42, k43, k44, k45, k46 = _rhs(
+                x0 + h * k30, x1 + h * k31, x2 + h * k32, x3 + h * k33, x4 + h * k34, x5 + h * k35, x6 + h * k36,
+                b[0, n + 2, m], b[1, n + 2, m], b[2, n + 2, m], b_rate[0, n + 2, m], b_rate[1, n + 2, m],
+                b_rate[2, n + 2, m], radial[0, n + 2, m], radial[1, n + 2, m], radial[2, n + 2, m], law, h0, h1, h2,
+                k, lim0, lim1, lim2, projected, gg, diag, j0, j1, j2, jt, jinv)
             y0 = x0 + sixth * (k10 + 2.0 * (k20 + k30) + k40)
             y1 = x1 + sixth * (k11 + 2.0 * (k21 + k31) + k41)
             y2 = x2 + sixth * (k12 + 2.0 * (k22 + k32) + k42)
