@@ -13,9 +13,11 @@ simulations (bench Monte Carlo, detumbling studies, rotor and TNS-0 runs), so th
 the ``sweep`` marker, which the default suite deselects; ``make sweep`` runs every
 chapter on both cores, and CI runs it after ``make test``. A case computes only what
 reads its input (each study is keyed on the inputs it declares; the rest comes from the
-result cache): most cases take seconds, one that reaches TNS-0's 37-day run or chapter
-5's 1000-member envelope half a minute to a minute. The whole sweep took 31 min on the
-2-core machine (2026-11-28), not yet the 20 the project aims at.
+result cache): most cases take seconds; one that reaches TNS-0's 37-day run (one member,
+10⁸ compiled RK4 steps) or chapter 6's rotor runs (DOP853 through solve_ivp) half a minute
+to a minute and a half. The whole sweep took 25 min 25 s on the 2-core machine
+(2026-11-28; 38 min before the compiled bench, detumbling and rotor loops), not yet the 20
+the project aims at: chapters 6 and 7 are 65 % of it.
 """
 
 import pytest
