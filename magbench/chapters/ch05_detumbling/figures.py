@@ -384,25 +384,25 @@ register(FigureSpec("samsat-fig1", "Gain k against the initial separation rates 
                     partial(_parameters, "max_dipole", "initial_rate_x", "initial_rate_y", "fig2_rate_min",
                             "fig2_rate_max", "fig2_rate_step", *_ORBIT)))
 register(FigureSpec("samsat-fig2", "Damping time, continuous and discrete modes (SamSat-218D Fig. 2, "
-                    "reconstruction; about 25 s to compute)", f"{SOURCE}, Fig. 2", compute_fig2, plot_fig2,
+                    "reconstruction)", f"{SOURCE}, Fig. 2", compute_fig2, plot_fig2,
                     partial(_parameters, *_DUTY, estimator=FigureParameter(
                         0.0, "1", "Ḃ estimator of the discrete mode: 0 model, 1 hold, 2 propagate"))))
-register(FigureSpec("ch05-rate-decay", "Rate decay, continuous and discrete (about 25 s to compute, shared with "
-                    "samsat-fig2)", f"{SOURCE}, Rate damping", compute_rate_decay, plot_rate_decay,
+register(FigureSpec("ch05-rate-decay", "Rate decay, continuous and discrete", f"{SOURCE}, Rate damping",
+                    compute_rate_decay, plot_rate_decay,
                     partial(_parameters, *_DUTY)))
-register(FigureSpec("ch05-duty-estimators", "Damping kept by each duty-cycle estimator (about 15 s to compute)",
+register(FigureSpec("ch05-duty-estimators", "Damping kept by each duty-cycle estimator",
                     f"{SOURCE}, Rate damping (the estimators are ours)", compute_duty_estimators, plot_duty_estimators,
                     partial(_parameters, *_DUTY, span=FigureParameter(
                         1020.0, "s", "span over which |ω| drops (60 cycles; ours)"))))
-register(FigureSpec("ch05-detumble-distribution", "3U envelope: 1000 detumble times beside Cp557 and Kovalenko (6.50) "
-                    "(about 40 s to compute)", "Cp557/detumble; Kovalenko (1975) eq. (6.50)", compute_distribution,
-                    plot_distribution, partial(_parameters, *_ENVELOPE)))
-register(FigureSpec("ch05-basilisk-peer", "Detumble times beside Basilisk's 18 runs (about 15 s to compute)",
+register(FigureSpec("ch05-detumble-distribution", "3U envelope: 1000 detumble times beside Cp557 and Kovalenko (6.50)",
+                    "Cp557/detumble; Kovalenko (1975) eq. (6.50)", compute_distribution, plot_distribution,
+                    partial(_parameters, *_ENVELOPE)))
+register(FigureSpec("ch05-basilisk-peer", "Detumble times beside Basilisk's 18 runs",
                     "Basilisk 2.12.1, 18 runs of the same case", compute_basilisk, plot_basilisk,
                     partial(_parameters, "inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold",
                                 "envelope_altitude", "envelope_inclination", "envelope_dipole_field",
                                 "envelope_dipole_tilt", "envelope_gain")))
-register(FigureSpec("ch05-gain-sweep", "Projected B-dot: unsaturated decay rate and saturated detumble time against k/k* (about 20 s to compute)",
+register(FigureSpec("ch05-gain-sweep", "Projected B-dot: unsaturated decay rate and saturated detumble time against k/k*",
                     "Avanzini & Giulietti (2012); Kovalenko (1975) eq. (6.7)", compute_gain_sweep, plot_gain_sweep,
                     partial(_parameters, "inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold",
                                 "earth_rotation_rate", "envelope_altitude", "envelope_inclination",

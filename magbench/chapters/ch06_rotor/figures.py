@@ -347,8 +347,7 @@ def plot_damping_sign(data):
 register(FigureSpec("rotor-stability-map", "Stability in the gains (reconstruction of the lost slide)",
                     f"{SOURCE}, slide 'Stability and choice of control parameters' (lost)",
                     compute_stability_map, plot_stability_map, _map_parameters))
-register(FigureSpec("rotor-simulation", "The asymmetric spacecraft simulated (reconstruction of the lost slide; "
-                    "slow, about 20 s)",
+register(FigureSpec("rotor-simulation", "The asymmetric spacecraft simulated (reconstruction of the lost slide)",
                     f"{SOURCE}, slide 'Simulation (asymmetric spacecraft)' (lost)",
                     compute_simulation, plot_simulation, _simulation_parameters))
 register(FigureSpec("rotor-equilibrium-law", "The equilibrium dipole law over one orbit",
