@@ -19,7 +19,7 @@ __all__ = ["normalised_flow"]
 
 
 @njit(cache=True, error_model="numpy")
-def _rhs(tau, x0, x1, x2, x3, x4, a, c1, kappa, kappa_w, si, ci, sin_i, real, real_field):
+def _rhs(tau, x0, x1, x2, x3, x4, a, c1, kappa, kappa_w, si, ci, real, real_field):
     """d/dτ of (α, β, h, Ω2, Ω3): spinning._closed_loop for one member, operation for operation."""
     su, cu = math.sin(tau), math.cos(tau)
     bo0, bo1, bo2 = 1.0 * (si * cu), 1.0 * (ci + 0.0 * tau), 1.0 * (-2.0 * si * su)
@@ -35,14 +35,13 @@ def _rhs(tau, x0, x1, x2, x3, x4, a, c1, kappa, kappa_w, si, ci, sin_i, real, re
     ca, sa, cb, sb = math.cos(x0), math.sin(x0), math.cos(x1), math.sin(x1)
     y1 = ca * br0 - sa * br2
     b0_, b1_, b2_ = cb * y1 + sb * br1, -sb * y1 + cb * br1, sa * br0 + ca * br2
-    cos_tau = math.cos(tau)
-    w0, w1, w2 = (x2 - c1 * (cos_tau * cos_tau)) / a - sb, x3 - cb, x4
+    w0, w1, w2 = (x2 - c1 * (cu * cu)) / a - sb, x3 - cb, x4
     bb = (b0_ * b0_ + b1_ * b1_) + b2_ * b2_
     c0, c1_, c2 = w1 * b2_ - w2 * b1_, w2 * b0_ - w0 * b2_, w0 * b1_ - w1 * b0_
     m0 = kappa * bo0 + (kappa_w * c0) / bb
     m1 = kappa * bo1 + (kappa_w * c1_) / bb
     m2 = kappa * bo2 + (kappa_w * c2) / bb
-    m0, m1, m2 = m0 + 0.0, m1 + c1 * cos_tau / sin_i, m2 + 0.0
+    m0, m1, m2 = m0 + 0.0, m1 + c1 * cu / si, m2 + 0.0
     t0, t1, t2 = m1 * b2_ - m2 * b1_, m2 * b0_ - m0 * b2_, m0 * b1_ - m1 * b0_
     tb = sb / cb
     return (x3 / cb - 1.0, x4, t0,
@@ -54,7 +53,7 @@ def _rhs(tau, x0, x1, x2, x3, x4, a, c1, kappa, kappa_w, si, ci, sin_i, real, re
 def normalised_flow(state, steps, h, a, c1, kappa, kappa_w, inclination, real, real_field, record, out):
     """Advance state (5, M) in place by ``steps`` RK4 steps of h; when ``record``, out
     (5, steps + 1, M) receives every state from the first."""
-    si, ci, sin_i = math.sin(inclination), math.cos(inclination), math.sin(inclination)
+    si, ci = math.sin(inclination), math.cos(inclination)
     half = 0.5 * h
     sixth = h / 6.0
     for m in range(state.shape[1]):
@@ -64,13 +63,13 @@ def normalised_flow(state, steps, h, a, c1, kappa, kappa_w, inclination, real, r
             out[0, 0, m], out[1, 0, m], out[2, 0, m], out[3, 0, m], out[4, 0, m] = x0, x1, x2, x3, x4
         for n in range(steps):
             t = n * h
-            a0, a1, a2, a3, a4 = _rhs(t, x0, x1, x2, x3, x4, a, c1, k, kw, si, ci, sin_i, real, real_field)
+            a0, a1, a2, a3, a4 = _rhs(t, x0, x1, x2, x3, x4, a, c1, k, kw, si, ci, real, real_field)
             b0, b1, b2, b3, b4 = _rhs(t + half, x0 + half * a0, x1 + half * a1, x2 + half * a2, x3 + half * a3,
-                                      x4 + half * a4, a, c1, k, kw, si, ci, sin_i, real, real_field)
+                                      x4 + half * a4, a, c1, k, kw, si, ci, real, real_field)
             c0, c1_, c2, c3, c4 = _rhs(t + half, x0 + half * b0, x1 + half * b1, x2 + half * b2, x3 + half * b3,
-                                       x4 + half * b4, a, c1, k, kw, si, ci, sin_i, real, real_field)
+                                       x4 + half * b4, a, c1, k, kw, si, ci, real, real_field)
             d0, d1, d2, d3, d4 = _rhs(t + h, x0 + h * c0, x1 + h * c1_, x2 + h * c2, x3 + h * c3, x4 + h * c4,
-                                      a, c1, k, kw, si, ci, sin_i, real, real_field)
+                                      a, c1, k, kw, si, ci, real, real_field)
             x0 = x0 + sixth * (a0 + 2.0 * (b0 + c0) + d0)
             x1 = x1 + sixth * (a1 + 2.0 * (b1 + c1_) + d1)
             x2 = x2 + sixth * (a2 + 2.0 * (b2 + c2) + d2)
