@@ -6,8 +6,9 @@ the gyrostat of :mod:`magbench.dynamics.gyrostat`, the laws of
 :mod:`magbench.control.spin`, the Floquet tools of :mod:`magbench.control.floquet`, the
 orbit of :class:`magbench.earth.CircularOrbit` and the one fixed-step
 :func:`magbench.sim.rk4_step` (the Floquet monodromy and the normalised runs); the SI
-simulation is adaptive (:func:`scipy.integrate.solve_ivp`, DOP853): the spin period is
-1/2800 of the orbit and a fixed step fine enough would cost more than the error control.
+simulation is adaptive (DOP853 through :func:`magbench.integrate.solve_adaptive`, in its compiled
+twin of :func:`scipy.integrate.solve_ivp`'s): the spin period is 1/2800 of the orbit and a fixed
+step fine enough would cost more than the error control.
 
 The SI right-hand side is written in scalar ``math`` operations and compiled
 (:mod:`magbench.sim._rotor_kernel`): five orbits need about a million evaluations, the same
@@ -693,6 +694,11 @@ def rotor_body_rhs(time, state, satellite, orbit, *, damping="rate"):
     return rotor_rhs(float(as_finite("time", time)), np.ascontiguousarray(x, dtype=float), constants).tolist()
 
 
+#: DOP853 runs in the compiled twin of solve_ivp's (:func:`magbench.integrate.solve_adaptive`);
+#: "scipy" is the reference the tests hold it to.
+_ADAPTIVE_ENGINE = "compiled"
+
+
 def simulate_rotor(satellite, orbit, duration, *, initial_angles=(0.0, 0.0, 0.0), initial_rate_error=(0.0, 0.0, 0.0),
                    sample_interval=10.0, rtol=1e-8, atol=1e-10, damping="rate", method="DOP853"):
     r"""Simulate the rotor spacecraft from an initial pointing error (adaptive integration).
@@ -713,12 +719,14 @@ def simulate_rotor(satellite, orbit, duration, *, initial_angles=(0.0, 0.0, 0.0)
     sample_interval : float, optional
         Spacing of the samples from 0 to ``duration`` [s].
     rtol, atol : float, optional
-        Tolerances of :func:`scipy.integrate.solve_ivp` [-]; rtol ≤ 1e-8 is needed
-        (1e-6 halves the transient by numerical damping, ``rotor_spin.md`` §9).
+        Tolerances of the adaptive solve [-]; rtol ≤ 1e-8 is needed (1e-6 halves the
+        transient by numerical damping, ``rotor_spin.md`` §9).
     damping : {"rate", "momentum"}, optional
         Damp the rate error (the slides) or the momentum error (Kovalenko) [-].
     method : str, optional
-        :func:`scipy.integrate.solve_ivp` method [-].
+        :func:`scipy.integrate.solve_ivp` method [-]; DOP853 (the default) runs in the
+        compiled twin of scipy's (:func:`magbench.integrate.solve_adaptive`, equal to rounding:
+        ``tests/sim/test_integrate.py``), any other in scipy.
 
     Returns
     -------
@@ -759,8 +767,9 @@ def simulate_rotor(satellite, orbit, duration, *, initial_angles=(0.0, 0.0, 0.0)
 
     constants = _body_constants(satellite, orbit, damping)
     samples = np.arange(0.0, t_end * (1.0 + 1e-12), dt)
+    engine = _ADAPTIVE_ENGINE if method == "DOP853" else "scipy"
     sol = solve_adaptive(rotor_rhs, (0.0, float(samples[-1])), np.concatenate([q0, w0]), method=method,
-                         t_eval=samples, rtol=rtol, atol=atol, args=(constants,))
+                         t_eval=samples, rtol=rtol, atol=atol, args=(constants,), engine=engine)
     y = sol.y.T
     q = y[:, :4] / np.linalg.norm(y[:, :4], axis=1, keepdims=True)
     omega = y[:, 4:]

@@ -63,3 +63,99 @@ def test_adaptive_solve_matches_the_closed_form_and_raises_when_the_solver_stops
     stopped = r"DOP853 integration stopped at t = (0\.9\d*|1) of \(0, 2\): Required step size"
     with pytest.raises(RuntimeError, match=stopped):
         solve_adaptive(lambda t, x: x * x, (0.0, 2.0), [1.0])
+
+
+# The compiled DOP853 twin (engine="compiled"): the same method as solve_ivp's, summed in
+# order instead of by BLAS. Where the error estimate is far above rounding the two take
+# the same steps; both are held to the closed form and to each other at the tolerance.
+
+def _oscillator():
+    from numba import njit
+
+    @njit
+    def rhs(t, x, omega):
+        out = np.empty(2)
+        out[0] = x[1]
+        out[1] = -omega * omega * x[0]
+        return out
+
+    return rhs
+
+
+def test_compiled_dop853_meets_the_closed_form_and_scipy_on_the_same_samples():
+    from magbench.integrate import solve_adaptive
+
+    rhs, times = _oscillator(), np.linspace(0.0, 20.0, 201)
+    runs = {engine: solve_adaptive(rhs, (0.0, 20.0), [1.0, 0.0], args=(2.0,), t_eval=times, rtol=1e-10,
+                                   atol=1e-12, engine=engine) for engine in ("compiled", "scipy")}
+    compiled, scipy_run = runs["compiled"], runs["scipy"]
+    assert_allclose(compiled.t, times, rtol=0, atol=0)
+    # 40 periods at rtol 1e-10: the global error grows to a few 1e-9 (DOP853's own, in both)
+    assert_allclose(compiled.y[0], np.cos(2.0 * times), atol=2e-8)
+    assert_allclose(compiled.y, scipy_run.y, atol=2e-8)
+    # the same method: the step count agrees within a few rejected or re-sized steps
+    assert abs(compiled.nfev - scipy_run.nfev) <= 0.02 * scipy_run.nfev
+
+
+def test_compiled_dop853_takes_scipys_steps_when_the_error_is_above_rounding():
+    from magbench.integrate import solve_adaptive
+
+    rhs = _oscillator()
+    # rtol 1e-6: the same accepted steps; their ends differ by 2e-10 (the first steps' error
+    # estimates are near rounding, and a step factor is err^(−1/8) of them)
+    compiled, scipy_run = (solve_adaptive(rhs, (0.0, 10.0), [1.0, 0.0], args=(2.0,), rtol=1e-6, atol=1e-9,
+                                          engine=engine) for engine in ("compiled", "scipy"))
+    assert compiled.nfev == scipy_run.nfev and compiled.t.size == scipy_run.t.size
+    assert compiled.t[0] == 0.0 and compiled.t[-1] == 10.0
+    assert_allclose(compiled.t, scipy_run.t, rtol=1e-9)
+    # 1e-9: three orders below the global error of either (1e-6 against cos 2t)
+    assert_allclose(compiled.y, scipy_run.y, rtol=0, atol=1e-9)
+
+
+def test_compiled_dop853_on_the_rotor_loop_equals_scipy_to_rounding():
+    import math
+
+    from magbench.chapters import ch06_rotor
+    from magbench.sim import spinning
+
+    sat, orbit = ch06_rotor.default_rotor_satellite(), ch06_rotor.default_rotor_orbit()
+    runs = {}
+    for engine in ("compiled", "scipy"):
+        spinning._ADAPTIVE_ENGINE = engine
+        try:
+            runs[engine] = spinning.simulate_rotor(sat, orbit, 0.3 * orbit.period, sample_interval=30.0,
+                                                   initial_angles=(math.radians(20.0), math.radians(-15.0), 0.0))
+        finally:
+            spinning._ADAPTIVE_ENGINE = "compiled"
+    compiled, scipy_run = runs["compiled"], runs["scipy"]
+    assert compiled.inputs["nfev"] == scipy_run.inputs["nfev"]       # the same steps
+    # rtol 1e-8 per step; the two differ by rounding carried along: 1e-10 rad is 1e4 ulps of π
+    assert_allclose(compiled.angles, scipy_run.angles, rtol=0, atol=1e-10)
+    assert_allclose(compiled.omega, scipy_run.omega, rtol=0, atol=1e-12)
+
+
+def test_compiled_dop853_refuses_what_only_scipy_offers_and_raises_when_it_stops():
+    import pytest
+    from numba import njit
+
+    from magbench.integrate import solve_adaptive
+
+    rhs = _oscillator()
+    with pytest.raises(ValueError, match="method='RK45'"):
+        solve_adaptive(rhs, (0.0, 1.0), [1.0, 0.0], args=(1.0,), method="RK45", engine="compiled")
+    with pytest.raises(ValueError, match="accepts only t_eval, max_step, first_step, got events"):
+        solve_adaptive(rhs, (0.0, 1.0), [1.0, 0.0], args=(1.0,), events=lambda t, x, w: x[0], engine="compiled")
+    with pytest.raises(ValueError, match="numba"):
+        solve_adaptive(lambda t, x: -x, (0.0, 1.0), [1.0], engine="compiled")
+    with pytest.raises(ValueError, match="forward"):
+        solve_adaptive(rhs, (1.0, 0.0), [1.0, 0.0], args=(1.0,), engine="compiled")
+    with pytest.raises(ValueError, match="engine must be"):
+        solve_adaptive(rhs, (0.0, 1.0), [1.0, 0.0], args=(1.0,), engine="fortran")
+
+    @njit
+    def blow_up(t, x):
+        return x * x
+
+    # x' = x² from 1 leaves every float before t = 1, as in the scipy test above
+    with pytest.raises(RuntimeError, match=r"DOP853 integration stopped at t = (0\.9\d*|1) of \(0, 2\)"):
+        solve_adaptive(blow_up, (0.0, 2.0), [1.0], engine="compiled")
