@@ -131,7 +131,8 @@ def compute_fig2(estimator=0.0, **params):
     return FigureData("", "", "", {}, [
         Series("continuous", {"initial_rate": ("deg/s", w), "duration": ("s", d["median"]["continuous"])}),
         Series(_duty_label(p), {"initial_rate": ("deg/s", w[damped]), "duration": ("s", d["median"][name][damped])}),
-    ], extra={"estimator": name, "members": d["members"], "gain": d["gain"]})
+    ], extra={"estimator": name, "members": d["members"], "gain": d["gain"],
+              "threshold": p["detumble_threshold"] / DEG})
 
 
 def plot_fig2(data):
@@ -139,7 +140,7 @@ def plot_fig2(data):
     for s, style in zip(data.series, ("C0o-", "C1s--")):
         ax.plot(s.columns["initial_rate"][1], np.asarray(s.columns["duration"][1]) / 3600.0, style, label=s.label)
     ax.set_xlabel(r"initial rate w, $\boldsymbol{\omega}_\mathrm{i}$ = (0.1, w, w) [°/s]")
-    ax.set_ylabel("time to 0.5 °/s [h]")
+    ax.set_ylabel(f"time to {data.extra['threshold']:g} °/s [h]")
     ax.set_title(f"Reconstruction of SamSat-218D Fig. 2: median of {data.extra['members']} attitudes, $k$ = "
                  f"{data.extra['gain']:.0f} A·m²·s/T, estimator '{data.extra['estimator']}'")
     ax.legend()
@@ -166,7 +167,7 @@ def plot_rate_decay(data):
     fig, ax = _new_figure(3.2)
     for s, style in zip(data.series, ("C0-", "C1-")):
         ax.semilogy(s.columns["time"][1] / 3600.0, s.columns["rate"][1], style, lw=1, label=s.label)
-    ax.axhline(data.extra["threshold"], color="k", ls=":", lw=1, label="0.5 °/s (damped)")
+    ax.axhline(data.extra["threshold"], color="k", ls=":", lw=1, label=f"{data.extra['threshold']:g} °/s (damped)")
     low, mean, high = data.extra["field_rate"]
     ax.axhspan(low, high, color="0.5", alpha=0.25, lw=0,
                label="rate of the field's direction (B-dot's end state)")
@@ -211,7 +212,7 @@ def plot_duty_estimators(data):
 # --- peers ------------------------------------------------------------------------------
 
 def compute_distribution(**params):
-    """1000-member detumble times of the 3U envelope beside Cp557 and Kovalenko (6.50)."""
+    """Detumble times of the 3U envelope's members beside Cp557 and Kovalenko (6.50)."""
     from . import CP557
 
     key = _key(**params)
@@ -229,7 +230,8 @@ def compute_distribution(**params):
                                     "initial_rate": ("deg/s", env["initial_rate"] / DEG)}),
         Series("Cp557/detumble README", {"median": ("s", [CP557["median"]]), "p95": ("s", [CP557["p95"]])}),
         Series("simulated, coils blanked 10 %", {"median": ("s", [float(np.nanmedian(blanked))])}),
-    ], extra={"members": env["held"].size})
+    ], extra={"members": env["held"].size, "threshold": p["detumble_threshold"] / DEG,
+              "rates": (p["envelope_rate_low"] / DEG, p["envelope_rate_high"] / DEG)})
 
 
 def plot_distribution(data):
@@ -243,9 +245,9 @@ def plot_distribution(data):
                                 (cp.columns["p95"][1][0], "C3--", "Cp557 p95"),
                                 (np.median(kov.columns["detumble_time"][1]), "C2:", "Kovalenko (6.50) median")):
         ax.axvline(value, color=style[:2], ls=style[2:], lw=1.2, label=label)
-    ax.set_xlabel("time to 0.5 °/s [s]")
+    ax.set_xlabel(f"time to {data.extra['threshold']:g} °/s [s]")
     ax.set_ylabel("members")
-    ax.set_title(f"{data.extra['members']} members, 5–15 °/s")
+    ax.set_title("{} members, {:g}–{:g} °/s".format(data.extra["members"], *data.extra["rates"]))
     ax.set_ylim(top=1.9 * ax.get_ylim()[1])        # room for the legend above the bars
     ax.legend(fontsize=7, loc="upper left")
     bx.plot(sim.columns["initial_rate"][1], sim.columns["detumble_time"][1], "C0.", ms=2, label="simulated")
@@ -292,7 +294,7 @@ def plot_basilisk(data):
 
 def compute_gain_sweep(**params):
     """Against k/k*, projected law, 3U and cube: the unsaturated decay rate of |ω| (the
-    quantity k* optimises) and the saturated median time 10 → 0.5 °/s."""
+    quantity k* optimises) and the saturated median time from 10 °/s to the threshold."""
     key = _key(**params)
     d = study.gain_sweep(key)
     r = study.decay_rate_sweep(key)
@@ -306,7 +308,9 @@ def compute_gain_sweep(**params):
         ok = np.isfinite(d["median"][name])
         series.append(Series(f"{name}: median time, ±0.2 A·m² rods",
                              {"gain_ratio": ("1", d["ratios"][ok]), "duration": ("s", d["median"][name][ok])}))
-    return FigureData("", "", "", {}, series)
+    return FigureData("", "", "", {}, series, extra={"band": tuple(b / DEG for b in r["band"]),
+                                                     "start": d["initial_rate"] / DEG,
+                                                     "threshold": dict(key)["detumble_threshold"] / DEG})
 
 
 def plot_gain_sweep(data):
@@ -321,9 +325,10 @@ def plot_gain_sweep(data):
         ax.set_xlabel(r"gain $k\,/\,k^*$")
         ax.grid(alpha=0.3, which="both")
         ax.legend()
-    left.set_ylabel(r"decay rate of $|\boldsymbol{\omega}|$, 2 → 0.5 °/s [10$^{-3}$/s]")
+    left.set_ylabel(r"decay rate of $|\boldsymbol{\omega}|$, " + "{:g} → {:g} °/s".format(*data.extra["band"])
+                    + r" [10$^{-3}$/s]")
     left.set_title("unsaturated: what $k^*$ optimises")
-    right.set_ylabel("median time 10 → 0.5 °/s [s]")
+    right.set_ylabel(f"median time {data.extra['start']:g} → {data.extra['threshold']:g} °/s [s]")
     right.set_title("rods ±0.2 A·m² (gaps: not damped)")
     return fig
 
@@ -394,7 +399,7 @@ register(FigureSpec("ch05-duty-estimators", "Damping kept by each duty-cycle est
                     f"{SOURCE}, Rate damping (the estimators are ours)", compute_duty_estimators, plot_duty_estimators,
                     partial(_parameters, *_DUTY, span=FigureParameter(
                         1020.0, "s", "span over which |ω| drops (60 cycles; ours)"))))
-register(FigureSpec("ch05-detumble-distribution", "3U envelope: 1000 detumble times beside Cp557 and Kovalenko (6.50)",
+register(FigureSpec("ch05-detumble-distribution", "3U envelope: detumble times beside Cp557 and Kovalenko (6.50)",
                     "Cp557/detumble; Kovalenko (1975) eq. (6.50)", compute_distribution, plot_distribution,
                     partial(_parameters, *_ENVELOPE)))
 register(FigureSpec("ch05-basilisk-peer", "Detumble times beside Basilisk's 18 runs",

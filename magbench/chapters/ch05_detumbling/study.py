@@ -302,12 +302,12 @@ def gain_sweep(params, ratios=(0.3, 0.5, 1.0, 2.0, 3.0, 5.0, 10.0, 20.0), member
     (J = SamSat's) and a cube with J = J_max on every axis, on the envelope orbit.
 
     k* = 2n(1 + sin i)J_min (Avanzini & Giulietti 2012, the orbit's inclination as the
-    proxy of ξm). Returns ``ratios``, ``k_star`` and ``median``/``times`` per body."""
+    proxy of ξm). Returns ``ratios``, ``k_star``, ``initial_rate`` and ``median``/``times`` per body."""
     p = dict(params)
     ratios = np.asarray(ratios, dtype=float)
     bodies, k_star, run = _gain_runs(p, ratios, members, initial_rate, duration, p["max_dipole"])
     times = detumble_time(run.time, run.rate, p["detumble_threshold"]).reshape(len(bodies), ratios.size, members)
-    out = {"ratios": ratios, "k_star": k_star, "times": {}, "median": {}}
+    out = {"ratios": ratios, "k_star": k_star, "initial_rate": initial_rate, "times": {}, "median": {}}
     for b, name in enumerate(bodies):
         out["times"][name] = times[b]
         out["median"][name] = np.median(times[b], axis=-1)     # NaN if any member is not damped
