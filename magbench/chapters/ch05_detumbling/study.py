@@ -21,34 +21,9 @@ from ...sim import detumble_monte_carlo, detumble_time, simulate_detumble
 from ...units import DEG
 
 __all__ = ["samsat_orbit", "envelope_orbit", "max_field", "field_direction_rate", "mean_square_field", "fig1_gains", "duty_study",
-           "envelope_distribution", "kovalenko_650_time", "gain_sweep", "decay_rate_sweep", "basilisk_peer", "BASILISK",
+           "envelope_distribution", "kovalenko_650_time", "gain_sweep", "decay_rate_sweep", "basilisk_peer",
            "printed_kinematics_rates", "printed_dipole_projection", "triad_geometry", "triad_rejection",
            "triad_vs_align_vectors", "geopolar_b2_range", "chained_detumble"]
-
-
-#: Shared reference §6.1: Basilisk 2.12.1, 3U (z long), inertially fixed dipole 31.2 µT
-#: tilted 11°, 10 Hz sampled B-dot k = 5e4 A·m²·s/T, ±0.2 A·m², no gravity gradient:
-#: MRP σ_BN, ω₀ [rad/s] in body axes, t_det [s] (first 1 s log sample with |ω| ≤ 0.5 °/s).
-BASILISK = (
-    ((-0.165167, 0.800703, 0.131154), (-0.03211959, 0.02168182, 0.07818993), 2338),
-    ((-0.165167, 0.800703, 0.131154), (-0.06423919, 0.04336364, 0.15637987), 3176),
-    ((-0.165167, 0.800703, 0.131154), (-0.09635878, 0.06504546, 0.2345698), 3478),
-    ((0.419488, 0.168709, -0.665344), (0.06910179, 0.03406979, -0.04098326), 3076),
-    ((0.419488, 0.168709, -0.665344), (0.13820359, 0.06813958, -0.08196651), 3578),
-    ((0.419488, 0.168709, -0.665344), (0.20730538, 0.10220937, -0.12294977), 4017),
-    ((-0.191704, -0.15148, -0.895345), (0.07280108, 0.04628337, -0.01316388), 3309),
-    ((-0.191704, -0.15148, -0.895345), (0.14560217, 0.09256673, -0.02632776), 4778),
-    ((-0.191704, -0.15148, -0.895345), (0.21840325, 0.1388501, -0.03949165), 5087),
-    ((-0.474444, 0.077618, -0.105403), (-0.01897925, -0.00903983, -0.08469655), 1608),
-    ((-0.474444, 0.077618, -0.105403), (-0.03795851, -0.01807966, -0.16939309), 2066),
-    ((-0.474444, 0.077618, -0.105403), (-0.05693776, -0.0271195, -0.25408964), 2697),
-    ((0.068134, -0.648794, -0.257045), (-0.08157931, -0.00025861, -0.03098686), 2714),
-    ((0.068134, -0.648794, -0.257045), (-0.16315862, -0.00051722, -0.06197371), 3529),
-    ((0.068134, -0.648794, -0.257045), (-0.24473792, -0.00077582, -0.09296057), 4722),
-    ((0.546049, 0.102403, -0.173355), (0.0781795, 0.00754968, -0.03803162), 2258),
-    ((0.546049, 0.102403, -0.173355), (0.15635899, 0.01509937, -0.07606324), 3193),
-    ((0.546049, 0.102403, -0.173355), (0.23453849, 0.02264905, -0.11409486), 4461),
-)
 
 
 #: The parameters each set-up reads (the studies declare theirs from these, so that a study
@@ -341,16 +316,16 @@ def decay_rate_sweep(params, ratios=(0.3, 0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 5.0, 7.0
 @cached_result(maxsize=4, reads=("envelope_dipole_field", "envelope_altitude", "envelope_inclination",
                                   "envelope_dipole_tilt", "envelope_gain", "max_dipole", "detumble_threshold") + INERTIA)
 def basilisk_peer(params, mode="continuous", step=None):
-    """The 18 Basilisk runs (the project's reference runs of Basilisk 2.12.1) with the library: the same body,
+    """The 18 Basilisk runs (``data/peers/basilisk_detumble.csv``: Basilisk 2.12.1, made for this book) with the
+    library: the same body,
     orbit, fixed dipole, gain and limits, no gravity gradient. Returns Basilisk's and our
     detumble times [s]."""
+    from ...io import load_basilisk_detumble_runs
+
     p = dict(params)
     orbit = envelope_orbit(p, rotating=False)
-    sigma = np.array([row[0] for row in BASILISK])
-    s2 = np.sum(sigma**2, axis=-1, keepdims=True)
-    q = np.concatenate([(1 - s2) / (1 + s2), 2 * sigma / (1 + s2)], axis=-1)
-    w = np.array([row[1] for row in BASILISK])
-    ref = np.array([row[2] for row in BASILISK], dtype=float)
+    runs = load_basilisk_detumble_runs()
+    q, w, ref = runs.attitude_quaternion(), runs.initial_rate, runs.detumble_time
     j = np.array([p["inertia_y"], p["inertia_z"], p["inertia_x"]])       # Basilisk's 3U is long along z
     duration = float(np.max(ref) + 600.0)
     run = simulate_detumble(j, orbit, q, w, duration, gain=p["envelope_gain"], max_dipole=p["max_dipole"], mode=mode,

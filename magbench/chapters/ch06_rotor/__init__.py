@@ -67,7 +67,7 @@ def default_run(params=None):
     Returns
     -------
     magbench.sim.RotorRun
-        The run (cached: the figure and the compare rows share one run of about 18 s).
+        The run (cached: the figure and the compare rows share one run).
     """
     p = {**rotor_parameters(), **(params or chapter_parameters("ch06"))}
     return _run(tuple(sorted(p.items())))

@@ -161,7 +161,7 @@ def _simulation_parameters():
     return {
         "initial_alpha": FigureParameter(p["initial_alpha"], "rad", "α0, initial error about the orbit normal (ours)"),
         "initial_beta": FigureParameter(p["initial_beta"], "rad", "β0, initial error (ours)"),
-        "orbits": FigureParameter(p["simulation_orbits"], "1", "orbits simulated (slow: about 4 s per orbit)"),
+        "orbits": FigureParameter(p["simulation_orbits"], "1", "orbits simulated"),
     }
 
 
@@ -472,7 +472,7 @@ def plot_field_model(data):
 def _inertia_parameters():
     return {
         "product_of_inertia": FigureParameter(0.002, "kg m^2", "I12 = I13 (ours, 0.8 % of B)"),
-        "orbits": FigureParameter(2.0, "1", "orbits simulated per run (slow: about 4 s per orbit)"),
+        "orbits": FigureParameter(2.0, "1", "orbits simulated per run"),
     }
 
 
@@ -592,7 +592,7 @@ def _asymmetry_parameters():
     return {
         "largest_asymmetry": FigureParameter(0.35, "1", "largest ε = (I33 − I22)/(I33 + I22) of the sweep (ours, "
                                                         "beyond the default 0.25)"),
-        "orbits": FigureParameter(2.0, "1", "orbits per run (slow: about 4 s per orbit and asymmetric body)"),
+        "orbits": FigureParameter(2.0, "1", "orbits per run and asymmetric body"),
     }
 
 

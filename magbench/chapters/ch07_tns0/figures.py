@@ -572,6 +572,6 @@ register(FigureSpec("tns0-session-fit", "Fitting a session: three methods on a s
                                                if k in ("transverse_inertia", "axial_inertia")}))
 register(FigureSpec("tns0-capture", "Capture into rotation about B, Monte Carlo",
                     f"{SOURCE}, Table 2, conclusions", compute_capture, plot_capture, _capture_parameters))
-register(FigureSpec("tns0-full-run", "From session 1 to the capture about B: full dynamics and the energy balance "
-                    "(slow: about 30–70 s)", f"{SOURCE}, Tables 1 and 2, Fig. 14", compute_full_run, plot_full_run,
+register(FigureSpec("tns0-full-run", "From session 1 to the capture about B: full dynamics and the energy balance",
+                    f"{SOURCE}, Tables 1 and 2, Fig. 14", compute_full_run, plot_full_run,
                     _full_parameters))
