@@ -14,10 +14,9 @@ the ``sweep`` marker, which the default suite deselects; ``make sweep`` runs eve
 chapter on both cores, and CI runs it after ``make test``. A case computes only what
 reads its input (each study is keyed on the inputs it declares; the rest comes from the
 result cache): most cases take seconds; one that reaches TNS-0's 37-day run (one member,
-10⁸ compiled RK4 steps) or chapter 6's rotor runs (DOP853 through solve_ivp) half a minute
-to a minute and a half. The whole sweep took 25 min 25 s on the 2-core machine
-(2026-11-28; 38 min before the compiled bench, detumbling and rotor loops), not yet the 20
-the project aims at: chapters 6 and 7 are 65 % of it.
+10⁸ compiled RK4 steps) half a minute to two minutes, and those runs are most of the sweep.
+The whole sweep took 17 min 44 s on the 2-core machine (2026-11-28; 25 min with chapter 6's
+rotor runs in solve_ivp's DOP853, 38 min before the compiled bench and detumbling loops).
 """
 
 import pytest
