@@ -51,6 +51,62 @@ def _stage_sum(K, a, s, h, y, out):
         out[i] = y[i] + acc * h
 
 
+@njit(cache=True, error_model="numpy")
+def _error_norm(K, E5, E3, y, y_new, rtol, atol, h):
+    """scipy's ``DOP853._estimate_error_norm`` of the step just taken (stages in K)."""
+    n = y.size
+    n5 = 0.0
+    n3 = 0.0
+    for i in range(n):
+        scale = atol + max(abs(y[i]), abs(y_new[i])) * rtol
+        e5, e3 = 0.0, 0.0
+        for j in range(N_STAGES + 1):
+            e5 += K[j, i] * E5[j]
+            e3 += K[j, i] * E3[j]
+        e5, e3 = e5 / scale, e3 / scale
+        n5 += e5 * e5
+        n3 += e3 * e3
+    n5, n3 = math.sqrt(n5) ** 2, math.sqrt(n3) ** 2      # scipy squares np.linalg.norm
+    if n5 == 0.0 and n3 == 0.0:
+        return 0.0
+    return abs(h) * n5 / math.sqrt((n5 + 0.01 * n3) * n)
+
+
+@njit(cache=True, error_model="numpy")
+def _interpolant(K, D, y_old, y, f, h, F):
+    """F of scipy's ``Dop853DenseOutput`` for the step (all 16 stages in K)."""
+    for i in range(y.size):
+        delta = y[i] - y_old[i]
+        F[0, i] = delta
+        F[1, i] = h * K[0, i] - delta
+        F[2, i] = 2.0 * delta - h * (f[i] + K[0, i])
+        for r in range(4):
+            acc = 0.0
+            for j in range(16):
+                acc += D[r, j] * K[j, i]
+            F[3 + r, i] = h * acc
+
+
+@njit(cache=True, error_model="numpy")
+def _interpolated(F, x, y_old, out):
+    """The dense output at x = (t − t_old)/h (Horner in x and 1 − x, as scipy)."""
+    for i in range(y_old.size):
+        v = 0.0
+        for r in range(7):
+            v += F[6 - r, i]
+            v *= x if r % 2 == 0 else 1.0 - x
+        out[i] = v + y_old[i]
+
+
+@njit(cache=True, error_model="numpy")
+def _doubled(ts, ys):
+    """The step buffers, twice as long (the first half copied)."""
+    grown_t, grown_y = np.empty(2 * ts.size), np.empty((2 * ts.size, ys.shape[1]))
+    grown_t[:ts.size] = ts
+    grown_y[:ts.size] = ys
+    return grown_t, grown_y
+
+
 @njit(error_model="numpy")
 def _initial_step(rhs, args, t0, y0, f0, t_bound, max_step, rtol, atol):
     """scipy's ``common.select_initial_step`` for order 7; returns (h, one function call)."""
@@ -73,17 +129,18 @@ def _initial_step(rhs, args, t0, y0, f0, t_bound, max_step, rtol, atol):
 
 
 @njit(error_model="numpy")
-def dop853(rhs, args, t0, t_bound, y0, rtol, atol, max_step, first_step, t_eval, A, B, C, E3, E5, D, A_EX, C_EX):
-    """Integrate rhs(t, y, *args) from t0 to t_bound (> t0).
+def dop853(rhs, args, t0, t_bound, y0, rtol, atol, max_step, first_step, t_eval, tableau):
+    """Integrate rhs(t, y, *args) from t0 to t_bound (> t0); ``tableau`` is scipy's DOP853
+    (A, B, C, E3, E5, D, A_EXTRA, C_EXTRA).
 
     Returns (times, states (k, n), status (0 finished, −1 step too small), nfev): the
     states at ``t_eval``, or at every step end (from t0) when ``t_eval`` is empty.
     """
+    A, B, C, E3, E5, D, A_EX, C_EX = tableau
     n = y0.size
     every_step = t_eval.size == 0
-    cap = 64 if every_step else t_eval.size
-    ts = np.empty(cap)
-    ys = np.empty((cap, n))
+    ts = np.empty(64 if every_step else t_eval.size)
+    ys = np.empty((ts.size, n))
     count = 0
     if every_step:
         ts[0] = t0
@@ -92,9 +149,6 @@ def dop853(rhs, args, t0, t_bound, y0, rtol, atol, max_step, first_step, t_eval,
     K = np.empty((16, n))
     F = np.empty((7, n))
     stage = np.empty(n)
-    scale = np.empty(n)
-    err5 = np.empty(n)
-    err3 = np.empty(n)
     t = t0
     y = y0.copy()
     f = rhs(t, y, *args)
@@ -137,23 +191,7 @@ def dop853(rhs, args, t0, t_bound, y0, rtol, atol, max_step, first_step, t_eval,
             f_new = rhs(t + h, y_new, *args)
             K[N_STAGES] = f_new
             nfev += N_STAGES
-            for i in range(n):
-                scale[i] = atol + max(abs(y[i]), abs(y_new[i])) * rtol
-                e5, e3 = 0.0, 0.0
-                for j in range(N_STAGES + 1):
-                    e5 += K[j, i] * E5[j]
-                    e3 += K[j, i] * E3[j]
-                err5[i], err3[i] = e5 / scale[i], e3 / scale[i]
-            n5 = 0.0
-            n3 = 0.0
-            for i in range(n):
-                n5 += err5[i] * err5[i]
-                n3 += err3[i] * err3[i]
-            n5, n3 = math.sqrt(n5) ** 2, math.sqrt(n3) ** 2
-            if n5 == 0.0 and n3 == 0.0:
-                error_norm = 0.0
-            else:
-                error_norm = abs(h) * n5 / math.sqrt((n5 + 0.01 * n3) * n)
+            error_norm = _error_norm(K, E5, E3, y, y_new, rtol, atol, h)
             if error_norm < 1.0:
                 factor = MAX_FACTOR if error_norm == 0.0 else min(MAX_FACTOR, SAFETY * error_norm ** ERROR_EXPONENT)
                 if rejected:
@@ -165,17 +203,13 @@ def dop853(rhs, args, t0, t_bound, y0, rtol, atol, max_step, first_step, t_eval,
                 rejected = True
         if status == -1:
             break
-        t_old, y_old, f_old = t, y, f
+        t_old, y_old = t, y
         t, y, f = t_new, y_new, f_new
         if t - t_bound >= 0:
             status = 0
         if every_step:
-            if count == cap:
-                cap *= 2
-                grown_t, grown_y = np.empty(cap), np.empty((cap, n))
-                grown_t[:count] = ts[:count]
-                grown_y[:count] = ys[:count]
-                ts, ys = grown_t, grown_y
+            if count == ts.size:
+                ts, ys = _doubled(ts, ys)
             ts[count] = t
             ys[count] = y
             count += 1
@@ -185,24 +219,9 @@ def dop853(rhs, args, t0, t_bound, y0, rtol, atol, max_step, first_step, t_eval,
                 _stage_sum(K, A_EX[s - N_STAGES - 1], s, h, y_old, stage)
                 K[s] = rhs(t_old + C_EX[s - N_STAGES - 1] * h, stage, *args)
             nfev += 3
-            for i in range(n):
-                delta = y[i] - y_old[i]
-                F[0, i] = delta
-                F[1, i] = h * K[0, i] - delta
-                F[2, i] = 2.0 * delta - h * (f[i] + K[0, i])
-                for r in range(4):
-                    acc = 0.0
-                    for j in range(16):
-                        acc += D[r, j] * K[j, i]
-                    F[3 + r, i] = h * acc
+            _interpolant(K, D, y_old, y, f, h, F)
             while next_eval < t_eval.size and t_eval[next_eval] <= t:
-                x = (t_eval[next_eval] - t_old) / h
-                for i in range(n):
-                    v = 0.0
-                    for r in range(7):
-                        v += F[6 - r, i]
-                        v *= x if r % 2 == 0 else 1.0 - x
-                    ys[next_eval, i] = v + y_old[i]
+                _interpolated(F, (t_eval[next_eval] - t_old) / h, y_old, ys[next_eval])
                 ts[next_eval] = t_eval[next_eval]
                 next_eval += 1
             count = next_eval

@@ -158,8 +158,8 @@ def _solve_compiled(rhs, span, initial_state, args, method, rtol, atol, options)
     y0 = np.array(initial_state, dtype=float)
     times, states, status, reached, nfev = dop853(
         rhs, tuple(args), t0, t1, y0, float(rtol), float(atol), float(options.get("max_step", np.inf)),
-        float(options.get("first_step") or 0.0), t_eval, DOP853.A, DOP853.B, DOP853.C, DOP853.E3, DOP853.E5,
-        DOP853.D, DOP853.A_EXTRA, DOP853.C_EXTRA)
+        float(options.get("first_step") or 0.0), t_eval,
+        (DOP853.A, DOP853.B, DOP853.C, DOP853.E3, DOP853.E5, DOP853.D, DOP853.A_EXTRA, DOP853.C_EXTRA))
     message = ("The solver successfully reached the end of the integration interval." if status == 0 else
                f"Required step size is less than spacing between numbers (at t = {reached:g}).")
     return OptimizeResult(t=times, y=states.T, sol=None, t_events=None, y_events=None, nfev=int(nfev), njev=0,

@@ -16,8 +16,6 @@ input), so nothing that depends on the input escapes the sweep.
 
 import dataclasses
 import inspect
-import math
-import re
 
 import matplotlib.pyplot as plt
 
@@ -25,8 +23,7 @@ import magbench.io as _io
 from magbench import chapters, figures, result_cache
 from magbench.chapters import _base, _figures
 
-__all__ = ["chapter_figures", "figure_dependencies", "figure_texts", "row_dependencies", "run_scaled", "shown_values",
-           "stale_texts"]
+__all__ = ["chapter_figures", "figure_dependencies", "row_dependencies", "run_scaled"]
 
 
 class _Tracking(dict):
@@ -153,87 +150,3 @@ def run_scaled(key, name, factor):
             ran.append(fid)
     return ran
 
-
-
-# --- Labels from what was computed ------------------------------------------------------
-# A label, title or legend that types a parameter's default ("16 s on") shows a researcher
-# who changed it a wrong number. After a scaled render, every text of the default render
-# that shows a changed parameter's default value must have changed too.
-
-#: How a label may show an SI value: (factor, the unit symbols that may follow the number).
-_SHOWN_AS = {
-    "rad": ((180.0 / math.pi, ("°", "deg")), (1.0, ("rad",))),
-    "rad/s": ((180.0 / math.pi, ("°/s", "deg/s")), (30.0 / math.pi, ("rpm",)), (1.0, ("rad/s",))),
-    "s": ((1.0, ("s",)), (1 / 60.0, ("min",)), (1 / 3600.0, ("h",)), (1 / 86400.0, ("d",)), (1e3, ("ms",))),
-    "m": ((1.0, ("m",)), (1e2, ("cm",)), (1e3, ("mm",)), (1e-3, ("km",))),
-}
-_DIMENSIONLESS = ((1.0, ("",)), (1e2, ("%",)))
-#: What follows a number that is not dimensionless (an angle, a length, a time …).
-_UNIT_START = re.compile(r"[°%]|(?:s|ms|min|h|d|m|cm|mm|km|rad|rpm|A|T|nT|µT|W|V|Hz|kg)\b")
-_NUMBER = re.compile(r"(?<![\w.^{])[-−]?\d+(?:\.\d+)?(?:[eE][-+−]?\d+)?(?!\w)")
-# References, not values: figure, table, equation, section and row numbers.
-_REFERENCE = re.compile(r"(?:Figs?\.|Table|[Ee]qs?\.|§|row|slide|ch\.|member)\s*\(?\d+(?:\.\d+)?\)?|\(\d+(?:\.\d+)?\)")
-
-
-def figure_texts(fig, data):
-    """Every text a reader sees in a figure: the spec's title, the series labels, the axes'
-    titles, axis labels, texts and legends, the figure's texts, suptitle and legends."""
-    texts = [data.title] + [s.label for s in data.series]
-    for ax in fig.axes:
-        texts += [ax.get_title(loc) for loc in ("left", "center", "right")]
-        texts += [ax.get_xlabel(), ax.get_ylabel()] + [t.get_text() for t in ax.texts]
-        if ax.get_legend() is not None:
-            texts += [t.get_text() for t in ax.get_legend().get_texts()]
-    texts += [t.get_text() for t in fig.texts]
-    for legend in fig.legends:
-        texts += [t.get_text() for t in legend.get_texts()]
-    if getattr(fig, "_suptitle", None) is not None:
-        texts.append(fig._suptitle.get_text())
-    return {t for t in texts if t}
-
-
-def shown_values(text, value, unit):
-    """The number tokens of ``text`` that show ``value`` (SI, in ``unit``) to the token's
-    printed digits, followed by the symbol of a display unit of ``unit`` (:data:`_SHOWN_AS`;
-    a dimensionless value may stand alone); single-digit whole numbers are left out (axis
-    indices and counts coincide with them too often to mean the value)."""
-    dimensionless = unit in ("", "1", "-")
-    ways = _DIMENSIONLESS if dimensionless else _SHOWN_AS.get(unit, ((1.0, (unit,)),))
-    text = _REFERENCE.sub(" ", text)
-    found = []
-    for match in _NUMBER.finditer(text):
-        token = match.group()
-        after = text[match.end():].lstrip(" \u202f\u00a0$")
-        plain = token.replace("−", "-")
-        number = float(plain)
-        mantissa = plain.lower().split("e")[0]
-        if number == 0.0 or ("." not in mantissa and "e" not in plain.lower() and abs(number) < 10):
-            continue
-        digits = len(mantissa.split(".")[1]) if "." in mantissa else 0
-        exponent = int(plain.lower().split("e")[1]) if "e" in plain.lower() else 0
-        half = 0.5 * 10.0 ** (exponent - digits)
-        if dimensionless and _unit_follows(after):
-            continue
-        if any(value * c != 0 and abs(number - value * c) <= half * (1 + 1e-9)
-               and any(after.startswith(symbol) for symbol in symbols) for c, symbols in ways):
-            found.append(token)
-    return found
-
-
-def _unit_follows(after):
-    """Whether a unit symbol follows a number (``after`` is the text after it)."""
-    return _UNIT_START.match(after) is not None
-
-
-def stale_texts(default_texts, scaled_texts, changed):
-    """Texts unchanged by the scaling that still show a changed parameter's default value.
-
-    ``changed`` maps a parameter's name to (default, scaled, unit) [SI]; returns (name, text)
-    pairs.
-    """
-    stale = []
-    for text in sorted(default_texts & scaled_texts):
-        for name, (default, scaled, unit) in changed.items():
-            if shown_values(text, default, unit) and not shown_values(text, scaled, unit):
-                stale.append((name, text))
-    return stale

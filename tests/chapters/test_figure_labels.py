@@ -14,13 +14,102 @@ and a half on one core in ``make test``). The detector itself is tested first, o
 samsat-fig2 once typed.
 """
 
+import math
+import re
+
 import matplotlib.pyplot as plt
 import pytest
 
 from magbench import figures
 from magbench.chapters._figures import WHOLE_NUMBER_INPUTS
 
-from tests.chapters.input_sweep import figure_texts, shown_values, stale_texts
+
+#: How a label may show an SI value: (factor, the unit symbols that may follow the number).
+_SHOWN_AS = {
+    "rad": ((180.0 / math.pi, ("°", "deg")), (1.0, ("rad",))),
+    "rad/s": ((180.0 / math.pi, ("°/s", "deg/s")), (30.0 / math.pi, ("rpm",)), (1.0, ("rad/s",))),
+    "s": ((1.0, ("s",)), (1 / 60.0, ("min",)), (1 / 3600.0, ("h",)), (1 / 86400.0, ("d",)), (1e3, ("ms",))),
+    "m": ((1.0, ("m",)), (1e2, ("cm",)), (1e3, ("mm",)), (1e-3, ("km",))),
+}
+_DIMENSIONLESS = ((1.0, ("",)), (1e2, ("%",)))
+#: What follows a number that is not dimensionless (an angle, a length, a time …).
+_UNIT_START = re.compile(r"[°%]|(?:s|ms|min|h|d|m|cm|mm|km|rad|rpm|A|T|nT|µT|W|V|Hz|kg)\b")
+_NUMBER = re.compile(r"(?<![\w.^{])[-−]?\d+(?:\.\d+)?(?:[eE][-+−]?\d+)?(?!\w)")
+# References, not values: figure, table, equation, section and row numbers.
+_REFERENCE = re.compile(r"(?:Figs?\.|Table|[Ee]qs?\.|§|row|slide|ch\.|member)\s*\(?\d+(?:\.\d+)?\)?|\(\d+(?:\.\d+)?\)")
+
+
+def figure_texts(fig, data):
+    """Every text a reader sees in a figure: the spec's title, the series labels, the axes'
+    titles, axis labels, texts and legends, the figure's texts, suptitle and legends."""
+    texts = [data.title] + [s.label for s in data.series]
+    for ax in fig.axes:
+        texts += [ax.get_title(loc) for loc in ("left", "center", "right")]
+        texts += [ax.get_xlabel(), ax.get_ylabel()] + [t.get_text() for t in ax.texts]
+        if ax.get_legend() is not None:
+            texts += [t.get_text() for t in ax.get_legend().get_texts()]
+    texts += [t.get_text() for t in fig.texts]
+    for legend in fig.legends:
+        texts += [t.get_text() for t in legend.get_texts()]
+    if getattr(fig, "_suptitle", None) is not None:
+        texts.append(fig._suptitle.get_text())
+    return {t for t in texts if t}
+
+
+def shown_values(text, value, unit):
+    """The number tokens of ``text`` that show ``value`` (SI, in ``unit``) to the token's
+    printed digits, followed by the symbol of a display unit of ``unit`` (:data:`_SHOWN_AS`;
+    a dimensionless value may stand alone); single-digit whole numbers are left out (axis
+    indices and counts coincide with them too often to mean the value)."""
+    dimensionless = unit in ("", "1", "-")
+    ways = _DIMENSIONLESS if dimensionless else _SHOWN_AS.get(unit, ((1.0, (unit,)),))
+    text = _REFERENCE.sub(" ", text)
+    found = []
+    for match in _NUMBER.finditer(text):
+        token = match.group()
+        after = text[match.end():].lstrip(" \u202f\u00a0$")
+        plain = token.replace("−", "-")
+        number = float(plain)
+        mantissa = plain.lower().split("e")[0]
+        if number == 0.0 or ("." not in mantissa and "e" not in plain.lower() and abs(number) < 10):
+            continue
+        digits = len(mantissa.split(".")[1]) if "." in mantissa else 0
+        exponent = int(plain.lower().split("e")[1]) if "e" in plain.lower() else 0
+        half = 0.5 * 10.0 ** (exponent - digits)
+        if dimensionless and _unit_follows(after):
+            continue
+        if any(value * c != 0 and abs(number - value * c) <= half * (1 + 1e-9)
+               and any(after.startswith(symbol) for symbol in symbols) for c, symbols in ways):
+            found.append(token)
+    return found
+
+
+def _unit_follows(after):
+    """Whether a unit symbol follows a number (``after`` is the text after it)."""
+    return _UNIT_START.match(after) is not None
+
+
+def stale_texts(default_texts, scaled_texts, changed):
+    """Texts unchanged by the scaling that still show a changed parameter's default value.
+
+    ``changed`` maps a parameter's name to (default, scaled, unit) [SI]; returns (name, text)
+    pairs.
+    """
+    stale = []
+    for text in sorted(default_texts & scaled_texts):
+        for name, (default, scaled, unit) in changed.items():
+            if shown_values(text, default, unit) and not shown_values(text, scaled, unit):
+                stale.append((name, text))
+    return stale
+
+
+#: (figure, parameter, text): why the text shows a fixed value that equals the parameter's default.
+FIXED_VALUES = {
+    ("tns0-rod-loops", "rod_coercivity", "Ha = 12 A/m"):
+        "a loop at the fixed amplitude 12 A/m (figures.AMPLITUDES), equal to Hc by coincidence",
+    ("ch05-gain-sweep", "detumble_threshold", r"decay rate of $|\boldsymbol{\omega}|$, 2 → 0.5 °/s [10$^{-3}$/s]"):
+        "the decay rate's fixed band (study.decay_rate_sweep, 2 → 0.5 °/s), not the detumbling threshold",
+}
 
 
 def test_the_fixed_values_are_shown_by_their_figures():
@@ -53,15 +142,6 @@ def test_a_typed_default_is_found_and_a_computed_label_is_not():
 ])
 def test_shown_values(text, value, unit, shown):
     assert shown_values(text, value, unit) == shown
-
-
-#: (figure, parameter, text): why the text shows a fixed value that equals the parameter's default.
-FIXED_VALUES = {
-    ("tns0-rod-loops", "rod_coercivity", "Ha = 12 A/m"):
-        "a loop at the fixed amplitude 12 A/m (figures.AMPLITUDES), equal to Hc by coincidence",
-    ("ch05-gain-sweep", "detumble_threshold", r"decay rate of $|\boldsymbol{\omega}|$, 2 → 0.5 °/s [10$^{-3}$/s]"):
-        "the decay rate's fixed band (study.decay_rate_sweep, 2 → 0.5 °/s), not the detumbling threshold",
-}
 
 
 def _changed_render(figure_id, name, default):
