@@ -84,13 +84,17 @@ def peer_rows(params=None):
     env = study.envelope_distribution(p)
     held = env["held"]
     n = CP557["runs"]
+    # the values the model ran with (a parameter file may change them), not the defaults' text
+    threshold = f"{p['detumble_threshold'] / DEG:g} °/s"
+    envelope = f"{p['envelope_rate_low'] / DEG:g}–{p['envelope_rate_high'] / DEG:g} °/s"
     for stat, fn, label in (("median", np.median, "Median of"),
                             ("p95", lambda x, axis=None: np.percentile(x, 95, axis=axis), "95th percentile of")):
         rows.append(make_row(
             f"ch05-cp557-{stat}", f"{label} the 3U detumble time, 5–15 °/s envelope",
             f"Cp557/detumble README ({n} runs; unreviewed repository)", CP557[stat], float(fn(held)),
             _bootstrap_sd(held, n, fn), unit="s",
-            note=(f"model: {held.size} members, continuous B-dot, exact Ḃ, a turning tilted dipole, 0.5 °/s held "
+            note=(f"model: {held.size} members from {envelope}, continuous B-dot, exact Ḃ, a turning tilted dipole, "
+                  f"{threshold} held "
                   f"{env['dwell']:.0f} s; tolerance: twice the spread of a {n}-run {stat} drawn from the model's runs. "
                   "The README describes runs with magnetometer noise and bias, a Ḃ filter, 10 % blanking and "
                   "IGRF-14, none of which the model has; blanking alone explains part of the difference (the "
@@ -101,7 +105,7 @@ def peer_rows(params=None):
     estimate = study.kovalenko_650_time(j, p["envelope_gain"], mean_square, env["initial_rate"],
                                         p["detumble_threshold"])
     rows.append(make_row(
-        "ch05-kovalenko-650-median", "Median 3U detumble time (first crossing of 0.5 °/s), 5–15 °/s envelope",
+        "ch05-kovalenko-650-median", f"Median 3U detumble time (first crossing of {threshold}), {envelope} envelope",
         "Kovalenko (1975) eq. (6.50), k_d = (2/3)k⟨B²⟩", float(np.median(estimate)), float(np.median(first)),
         _bootstrap_sd(first, first.size, np.median), unit="s",
         note=(f"reference: (J/k_d) ln(ω_i/ω_f) per member with J = {j:.4g} kg·m², ⟨B²⟩ = {mean_square:.4g} T² "
@@ -118,7 +122,8 @@ def peer_rows(params=None):
     k_star = decay["k_star"]["cube"]
     rows.append(make_row(
         "ch05-kstar-decay-optimum",
-        "Projected-law gain of the fastest unsaturated decay of |ω| (2 → 0.5 °/s), body with equal moments",
+        "Projected-law gain of the fastest unsaturated decay of |ω| ({:g} → {:g} °/s), body with equal "
+        "moments".format(*(b / DEG for b in decay["band"])),
         "Avanzini & Giulietti (2012), k* = 2ω0(1 + sin i)J_min", k_star, best * k_star,
         k_star * (np.exp(step / 2) - 1.0), unit="N m s",
         note=("model: the median decay rate over 8 attitudes from 3 °/s, coils unlimited, J = J_max on every axis, "
