@@ -6,15 +6,12 @@ envelope case (the set-up in the file's header and in ``shared/reference/bdot_tr
 tests take them from :func:`load_basilisk_detumble_runs` instead of typing them.
 """
 
-import csv
-import io
-import math
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from .data import DATA_DIR, DataError, verify_checksum
+from .data import DATA_DIR, _csv_records, _number, verify_checksum
 
 __all__ = ["BasiliskDetumbleRuns", "load_basilisk_detumble_runs"]
 
@@ -67,29 +64,13 @@ def load_basilisk_detumble_runs(data_dir=None):
     Raises
     ------
     DataError
-        When the file fails its checksum, lacks a column or holds a cell that is not a
-        finite number (the message names the file, line and column).
+        When the file fails its checksum, its header is not the expected columns or a cell
+        is not a finite number (the message names the file, line and column).
     """
     path = Path(data_dir or DATA_DIR) / "peers" / "basilisk_detumble.csv"
-    text = verify_checksum(path, data_dir).decode("utf-8")
-    lines = [line for line in text.splitlines() if line and not line.startswith("#")]
-    reader = csv.DictReader(io.StringIO("\n".join(lines)))
-    missing = [c for c in _COLUMNS if c not in (reader.fieldnames or ())]
-    if missing:
-        raise DataError(f"{path}: missing columns {', '.join(missing)}")
-    rows = []
-    for lineno, rec in enumerate(reader, start=2):
-        row = []
-        for column in _COLUMNS[1:]:
-            try:
-                value = float(rec[column])
-            except (TypeError, ValueError):
-                value = math.nan
-            if not math.isfinite(value):
-                raise DataError(f"{path}: data row {lineno - 1}: column {column!r} must be a finite number, "
-                                f"got {rec[column]!r}")
-            row.append(value)
-        rows.append(row)
+    lines = verify_checksum(path, data_dir).decode("utf-8").splitlines()
+    rows = [[_number(rec[column], path, lineno, column) for column in _COLUMNS[1:]]
+            for lineno, rec in _csv_records(lines, list(_COLUMNS), path)]
     table = np.array(rows)
     return BasiliskDetumbleRuns(attitude_mrp=table[:, 0:3], initial_rate=table[:, 3:6], detumble_time=table[:, 6],
                                 late_rate=np.radians(table[:, 7]), path=path)
