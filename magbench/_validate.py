@@ -133,3 +133,46 @@ def check_member_steps(members, steps):
         raise ValueError(f"members × steps = {int(members)} × {int(steps)} = {work:.3g} exceeds "
                          f"{MAX_MEMBER_STEPS:.0e} member-steps (hours on one core): split the run into "
                          "smaller seeded runs")
+
+
+def as_quaternions(name, value):
+    """Return ``value`` as quaternions, shape (..., 4), scalar first, none of them zero.
+
+    Not normalised: the rotations normalise (a quaternion of any non-zero length is read as
+    its direction).
+    """
+    q = as_finite(name, value)
+    if q.ndim == 0 or q.shape[-1] != 4:
+        raise ValueError(f"{name} must have shape (..., 4) (scalar-first quaternions), got shape {q.shape}")
+    norm = np.linalg.norm(q, axis=-1)
+    if np.any(norm == 0):
+        raise ValueError(f"{name} must not contain the zero quaternion")
+    return q
+
+
+def as_inertia(name, inertia):
+    """Return ``inertia`` as positive principal moments (..., 3) or a symmetric positive-definite
+    tensor (3, 3) [kg·m²]; a (3, 3) array is always read as a tensor."""
+    j = as_finite(name, inertia)
+    if j.shape == (3, 3):
+        if not np.allclose(j, j.T, rtol=1e-12, atol=0.0):
+            raise ValueError(f"{name} must be symmetric, got {j.tolist()}")
+        if np.any(np.linalg.eigvalsh(j) <= 0):
+            raise ValueError(f"{name} must be positive definite [kg·m²], got eigenvalues {np.linalg.eigvalsh(j)}")
+        return j
+    if j.ndim >= 1 and j.shape[-1] == 3:
+        as_positive(name, j, unit="kg·m²")
+        return j
+    raise ValueError(f"{name} must have shape (..., 3) (principal moments) or (3, 3) (tensor) [kg·m²], "
+                     f"got shape {j.shape}")
+
+
+def as_axisymmetric_inertias(transverse_inertia, axial_inertia):
+    """Return the transverse and axial moments (A, C) of an axisymmetric body [kg·m²], positive
+    and meeting the triangle inequality C ≤ 2A."""
+    a = as_positive("transverse_inertia", transverse_inertia, unit="kg·m²")
+    c = as_positive("axial_inertia", axial_inertia, unit="kg·m²")
+    if np.any(c > 2.0 * a):
+        raise ValueError(f"axial_inertia must be <= 2 × transverse_inertia (triangle inequality), got C = "
+                         f"{shown(np.max(c))} kg·m² with A = {shown(np.min(a))} kg·m²")
+    return a, c

@@ -2,6 +2,7 @@
 every parameter documented with its unit in brackets, and a source line."""
 
 import importlib
+import importlib.util
 import inspect
 import re
 import subprocess
@@ -18,20 +19,25 @@ _BASE = ("magbench.rotations", "magbench.units", "magbench.integrate")
 
 def _walk():
     """Every public module of the library's packages, found by walking them (a new module
-    cannot escape these rules by being left off a list). Compiled kernels are private
-    modules (``_..._kernel``) or ``kernels``: numba dispatchers, documented by their twins."""
+    cannot escape these rules by being left off a list): the checked modules, and the
+    families' ``kernels`` modules (unchecked array kernels and compiled twins, each documented
+    by the checked function it names). Private modules (``_..._kernel``) are neither."""
     import pkgutil
 
-    names = list(_BASE)
+    names, kernels = list(_BASE), []
     for package in _LIBRARY:
         names.append(package)
         module = importlib.import_module(package)
-        names += [m.name for m in pkgutil.iter_modules(module.__path__, package + ".")
-                  if not m.name.rsplit(".", 1)[1].startswith("_")]
-    return names
+        for m in pkgutil.iter_modules(module.__path__, package + "."):
+            short = m.name.rsplit(".", 1)[1]
+            if short == "kernels":
+                kernels.append(m.name)
+            elif not short.startswith("_"):
+                names.append(m.name)
+    return names, kernels
 
 
-PHYSICS = _walk()
+PHYSICS, KERNELS = _walk()
 #: A line a reader can look up, in any of the five sources (the thesis, Kovalenko, the
 #: SamSat-218D paper, the rotor slides, the TNS-0 preprint), or an explicit "not in".
 SOURCE_LINE = re.compile(r"Thesis (eqs?\.|§)|Not in the (thesis|sources)|Kovalenko \(1975\)"
@@ -86,7 +92,7 @@ def test_the_source_rule_takes_the_five_sources(line, cites):
 #: ``t`` stays allowed as the first argument of a ``solve_ivp`` right-hand side.
 GLOSSARY_BANNED = {"centre": "center", "circle": "round", "psi0": "initial_angle", "omega0": "initial_rate",
                    "t_end": "duration", "omega": "rate"}
-FAMILIES = PHYSICS
+FAMILIES = PHYSICS + KERNELS
 #: Exceptions to the glossary, each a name fixed by a contract other tools use: chapter 5's
 #: contract (shared/reference/bdot_triad.md §9) calls the angular-velocity *vector* ``omega``
 #: (``rate`` is its magnitude there, as elsewhere in the book). Only these exact places.
@@ -131,3 +137,38 @@ def test_the_glossary_exceptions_are_still_needed():
     """An exception outlives its reason only if the name it excuses is gone: each must match."""
     found = {where for where, _ in _public_words()}
     assert GLOSSARY_CONTRACT <= found, sorted(GLOSSARY_CONTRACT - found)
+
+
+def _is_module(name):
+    try:
+        return importlib.util.find_spec(name) is not None
+    except ModuleNotFoundError:  # a parent that is not a package (a class, a function)
+        return False
+
+
+def _kernel_functions():
+    for name in KERNELS:
+        module = importlib.import_module(name)
+        for fname in module.__all__:
+            yield pytest.param(name, fname, id=f"{name}.{fname}")
+
+
+def test_the_kernels_are_found():
+    assert {"magbench.dynamics.kernels", "magbench.earth.kernels", "magbench.hardware.kernels"} <= set(KERNELS)
+
+
+@pytest.mark.parametrize("module_name, fname", list(_kernel_functions()))
+def test_each_kernel_names_the_checked_function_that_documents_it(module_name, fname):
+    """A kernel skips the checks, not the documentation: its docstring names the checked
+    function (or the twin) whose numpydoc gives the physics, units and source, and that name
+    resolves."""
+    doc = inspect.getdoc(getattr(importlib.import_module(module_name), fname)) or ""
+    refs = re.findall(r":(?:func|meth):`~?([\w.]+)`", doc)
+    assert refs, f"{module_name}.{fname}: the docstring names no checked function (:func:`...`)"
+    for ref in refs:
+        parts = ref.split(".")
+        cut = max(i for i in range(1, len(parts) + 1) if _is_module(".".join(parts[:i])))
+        obj = importlib.import_module(".".join(parts[:cut]))
+        for attr in parts[cut:]:
+            assert hasattr(obj, attr), f"{module_name}.{fname}: {ref} does not exist"
+            obj = getattr(obj, attr)

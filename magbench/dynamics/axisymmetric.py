@@ -10,20 +10,11 @@ symmetry axis, A = B the transverse and C the axial moment of inertia. Euler ang
 
 import numpy as np
 
-from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, as_vectors, shown
+from .._validate import as_axisymmetric_inertias, as_finite, as_in_range, as_nonnegative, as_positive, as_vectors, shown
 from .pendulum import euler_313_matrix
 
 __all__ = ["euler_case_rates", "euler_case_angles", "euler_case_matrix", "body_rate_from_momentum",
            "momentum_and_nutation", "conical_rotation_angle", "conical_rotation_rate"]
-
-
-def _inertias(transverse_inertia, axial_inertia):
-    a = as_positive("transverse_inertia", transverse_inertia, unit="kg·m²")
-    c = as_positive("axial_inertia", axial_inertia, unit="kg·m²")
-    if np.any(c > 2.0 * a):
-        raise ValueError(f"axial_inertia must be <= 2 × transverse_inertia (triangle inequality), got C = "
-                         f"{shown(np.max(c))} kg·m² with A = {shown(np.min(a))} kg·m²")
-    return a, c
 
 
 def euler_case_rates(angular_momentum, nutation, transverse_inertia, axial_inertia):
@@ -54,7 +45,7 @@ def euler_case_rates(angular_momentum, nutation, transverse_inertia, axial_inert
     """
     big_l = as_nonnegative("angular_momentum", angular_momentum, unit="kg·m²/s")
     theta = as_in_range("nutation", nutation, 0.0, np.pi, unit="rad")
-    a, c = _inertias(transverse_inertia, axial_inertia)
+    a, c = as_axisymmetric_inertias(transverse_inertia, axial_inertia)
     return big_l / a, big_l * np.cos(theta) * (1.0 / c - 1.0 / a)
 
 
@@ -166,7 +157,7 @@ def body_rate_from_momentum(angular_momentum, nutation, transverse_inertia, axia
     """
     big_l = as_nonnegative("angular_momentum", angular_momentum, unit="kg·m²/s")
     theta = as_in_range("nutation", nutation, 0.0, np.pi, unit="rad")
-    a, c = _inertias(transverse_inertia, axial_inertia)
+    a, c = as_axisymmetric_inertias(transverse_inertia, axial_inertia)
     phi = as_finite("proper_rotation", proper_rotation)
     st = np.sin(theta)
     return np.stack(np.broadcast_arrays(big_l * st * np.sin(phi) / a, big_l * st * np.cos(phi) / a,
@@ -197,7 +188,7 @@ def momentum_and_nutation(body_rate, transverse_inertia, axial_inertia):
     TNS-0 preprint §2 (L141–L157; Fig. 14's L). Not in the sources: L = Jω (Beletsky 1965).
     """
     w = as_vectors("body_rate", body_rate)
-    a, c = _inertias(transverse_inertia, axial_inertia)
+    a, c = as_axisymmetric_inertias(transverse_inertia, axial_inertia)
     a, c = np.asarray(a)[..., None], np.asarray(c)
     lx, ly, lz = a[..., 0] * w[..., 0], a[..., 0] * w[..., 1], c * w[..., 2]
     big_l = np.sqrt(lx**2 + ly**2 + lz**2)
@@ -244,7 +235,7 @@ def conical_rotation_angle(rotation_rate, field, magnet_moment, transverse_inert
         raise ValueError("rotation_rate must be non-zero [rad/s] (no conical rotation at rest)")
     b = as_nonnegative("field", field, unit="T")
     m = as_finite("magnet_moment", magnet_moment)
-    a, c = _inertias(transverse_inertia, axial_inertia)
+    a, c = as_axisymmetric_inertias(transverse_inertia, axial_inertia)
     if np.any(a == c):
         raise ValueError("transverse_inertia must differ from axial_inertia (a spherical body has no conical rotation)")
     ratio = m * b / (rate**2 * (a - c))
@@ -281,7 +272,7 @@ def conical_rotation_rate(angle, field, magnet_moment, transverse_inertia, axial
     theta = as_in_range("angle", angle, 0.0, np.pi, unit="rad")
     b = as_nonnegative("field", field, unit="T")
     m = as_nonnegative("magnet_moment", magnet_moment, unit="A·m²")
-    a, c = _inertias(transverse_inertia, axial_inertia)
+    a, c = as_axisymmetric_inertias(transverse_inertia, axial_inertia)
     value = m * b / ((a - c) * np.cos(theta))
     with np.errstate(invalid="ignore"):
         return np.where(value >= 0, np.sqrt(np.abs(value)), np.nan)

@@ -15,9 +15,8 @@ divided by ω0²), which say so.
 
 import numpy as np
 
-from .._validate import as_finite, as_positive, as_vectors, shown
-from .rigid_body import (_as_quaternions, _cross, _euler_rates, _gravity_gradient_torque, _inertia_matrix,
-                         _quaternion_rate, _rotate)
+from .._validate import as_finite, as_inertia, as_positive, as_quaternions, as_vectors, shown
+from . import kernels
 
 __all__ = ["airplane_231_matrix", "airplane_231_angles", "semi_body_axes", "semi_body_field",
            "gyrostat_rates", "gyrostat_rhs", "gyrostat_turning_field_rhs", "gyrostat_kinetic_energy", "gyrostat_momentum",
@@ -128,12 +127,12 @@ def semi_body_axes(matrix):
         raise ValueError(f"matrix must have shape (..., 3, 3), got shape {c.shape}")
     o2 = c[..., :, 1]
     s1 = np.broadcast_to(np.array([1.0, 0.0, 0.0]), o2.shape)
-    s3 = _cross(s1, o2)
+    s3 = kernels.cross(s1, o2)
     norm = np.linalg.norm(s3, axis=-1, keepdims=True)
     if np.any(norm < 1e-12):
         raise ValueError("matrix puts the rotor axis along the orbit normal (β = ±90°): the semi-body frame is singular")
     s3 = s3 / norm
-    return np.stack([s1, _cross(s3, s1), s3], axis=-2)
+    return np.stack([s1, kernels.cross(s3, s1), s3], axis=-2)
 
 
 def semi_body_field(field_orbital, alpha, beta):
@@ -165,11 +164,6 @@ def semi_body_field(field_orbital, alpha, beta):
     return np.einsum("...ij,...j->...i", m, b)
 
 
-def _gyrostat_rates(rate, torque, j, rotor_momentum):
-    h = np.asarray(rotor_momentum, dtype=float)[..., None] * np.array([1.0, 0.0, 0.0])
-    return _euler_rates(rate, torque - _cross(rate, h), j)
-
-
 def gyrostat_rates(rate, torque, inertia, rotor_momentum):
     r"""Angular acceleration of a body carrying a constant-speed rotor along body axis 1.
 
@@ -197,17 +191,7 @@ def gyrostat_rates(rate, torque, inertia, rotor_momentum):
     """
     w = as_vectors("rate", rate)
     tau = as_vectors("torque", torque)
-    return _gyrostat_rates(w, tau, _inertia_matrix("inertia", inertia), as_finite("rotor_momentum", rotor_momentum))
-
-
-def _gyrostat_rhs(state, dipole, field_orbital, j, rotor_momentum, mean_motion):
-    q, w = state[..., :4], state[..., 4:]
-    normal = _rotate(q, np.broadcast_to(np.array([0.0, 1.0, 0.0]), w.shape), -1.0)
-    radial = _rotate(q, np.broadcast_to(np.array([0.0, 0.0, 1.0]), w.shape), -1.0)
-    field = _rotate(q, field_orbital, -1.0)
-    torque = _cross(dipole, field) + _gravity_gradient_torque(radial, j, mean_motion)
-    q_rate = _quaternion_rate(q, w - mean_motion * normal)
-    return np.concatenate([q_rate, _gyrostat_rates(w, torque, j, rotor_momentum)], axis=-1)
+    return kernels.gyrostat_rates(w, tau, as_inertia("inertia", inertia), as_finite("rotor_momentum", rotor_momentum))
 
 
 def gyrostat_rhs(time, state, dipole, field_orbital, inertia, rotor_momentum, mean_motion):
@@ -247,10 +231,10 @@ def gyrostat_rhs(time, state, dipole, field_orbital, inertia, rotor_momentum, me
     x = as_finite("state", state)
     if x.ndim == 0 or x.shape[-1] != 7:
         raise ValueError(f"state must have shape (..., 7) (quaternion, rate), got shape {x.shape}")
-    _as_quaternions("state[..., :4]", x[..., :4])
+    as_quaternions("state[..., :4]", x[..., :4])
     n = as_positive("mean_motion", mean_motion, unit="rad/s")
-    return _gyrostat_rhs(x, as_vectors("dipole", dipole), as_vectors("field_orbital", field_orbital),
-                         _inertia_matrix("inertia", inertia), as_finite("rotor_momentum", rotor_momentum), n)
+    return kernels.gyrostat_rhs(x, as_vectors("dipole", dipole), as_vectors("field_orbital", field_orbital),
+                                as_inertia("inertia", inertia), as_finite("rotor_momentum", rotor_momentum), n)
 
 
 def gyrostat_turning_field_rhs(time, state, principal_inertia, rotor_momentum, damping_gain, field_rate):
@@ -326,7 +310,7 @@ def gyrostat_momentum(rate, inertia, rotor_momentum):
     component); Kovalenko (1975) eq. (7.5) uses K as the controlled quantity.
     """
     w = as_vectors("rate", rate)
-    j = _inertia_matrix("inertia", inertia)
+    j = as_inertia("inertia", inertia)
     k = w @ j.T if j.shape == (3, 3) else j * w
     return k + np.asarray(as_finite("rotor_momentum", rotor_momentum))[..., None] * np.array([1.0, 0.0, 0.0])
 
@@ -358,7 +342,7 @@ def gyrostat_kinetic_energy(rate, inertia, rotor_momentum, rotor_inertia):
     torque-free gyrostat is E − J_f ν ω1 − ½ J_f ν² = ½ ωᵀIω (see the tests).
     """
     w = as_vectors("rate", rate)
-    j = _inertia_matrix("inertia", inertia)
+    j = as_inertia("inertia", inertia)
     iw = w @ j.T if j.shape == (3, 3) else j * w
     h = np.asarray(as_finite("rotor_momentum", rotor_momentum))
     jf = float(as_positive("rotor_inertia", rotor_inertia, unit="kg·m²"))

@@ -8,6 +8,7 @@ import numpy as np
 
 from .._validate import as_finite, as_nonnegative, as_vectors
 from ..constants import MU_0
+from . import kernels
 
 __all__ = ["magnetic_torque", "magnetic_torque_from_h", "perpendicular_moment", "hysteresis_rod_moment",
            "axial_magnet_torque"]
@@ -93,11 +94,6 @@ def perpendicular_moment(moment, b):
     return m - np.sum(m * bhat, axis=-1, keepdims=True) * bhat
 
 
-def _rod_moment(induction, rod_axes, volume):
-    """Σ_k V_k B_k/μ0 r̂_k; no checks."""
-    return np.einsum("...k,kj->...j", induction * volume / MU_0, rod_axes)
-
-
 def hysteresis_rod_moment(induction, rod_axes, volume):
     r"""Magnetic moment of a set of hysteresis rods in body axes.
 
@@ -129,7 +125,7 @@ def hysteresis_rod_moment(induction, rod_axes, volume):
     if np.any(norm == 0):
         raise ValueError("rod_axes must not contain a zero vector")
     v = as_nonnegative("volume", volume, unit="m³")
-    return _rod_moment(b, axes / norm, v)
+    return kernels.rod_moment(b, axes / norm, v)
 
 
 def axial_magnet_torque(magnet_moment, b):

@@ -23,7 +23,9 @@ __all__ = ["orbit_geometry", "dipole_field_rate_radial", "field_table"]
 
 
 def orbit_geometry(orbit):
-    """The float64 vector ``geo`` the kernels read, for a circular orbit.
+    """The float64 vector ``geo`` the kernels read, for a circular orbit (a checked
+    :class:`~magbench.earth.CircularOrbit`; the kernels repeat
+    :meth:`magbench.earth.CircularOrbit.field_rate_and_position`).
 
     Parameters
     ----------
@@ -52,7 +54,8 @@ def orbit_geometry(orbit):
 
 @njit(cache=True, error_model="numpy")
 def dipole_field_rate_radial(cu, su, cl, sl, geo):
-    """Inertial B [T], dB/dt [T/s] and r̂ [-] (nine floats), given cos/sin of u and λ."""
+    """Inertial B [T], dB/dt [T/s] and r̂ [-] (nine floats), given cos/sin of u and λ: one
+    instant of :meth:`magbench.earth.CircularOrbit.field_rate_and_position`."""
     n, scale = geo[0], geo[1]
     r0 = cu * geo[2] + su * geo[5]
     r1 = cu * geo[3] + su * geo[6]
@@ -74,7 +77,8 @@ def dipole_field_rate_radial(cu, su, cl, sl, geo):
 
 @njit(cache=True, error_model="numpy")
 def field_table(cos_u, sin_u, cos_lam, sin_lam, geo, radius, b, b_rate, radial):
-    """Fill b, b_rate and radial, each (3, T, M), for times T and members M.
+    """Fill b, b_rate and radial, each (3, T, M), for times T and members M: the values of
+    :meth:`magbench.earth.CircularOrbit.field_rate_and_position` at every instant.
 
     cos_u, sin_u (T, M): the argument of latitude's; cos_lam, sin_lam (T,): the pole
     longitude's. ``radial`` is the position divided by ``radius``, as the simulator forms

@@ -20,13 +20,41 @@ H_from being the field on the limb the state comes from; on a limb the slope is 
 import numpy as np
 
 from ..integrate import rk4_step
+from . import kernels
 from .._validate import as_finite, as_nonnegative, as_positive, as_positive_scalar, shown
 
-__all__ = ["limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
+__all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
            "rod_cycle_energy", "limiting_loop_energy", "hysteresis_damping_torque"]
 
 
-def _material(coercivity, remanence, saturation):
+def limb_constants(coercivity, remanence, saturation):
+    r"""The checked constants of a rod's limiting loop.
+
+    Parameters
+    ----------
+    coercivity : float
+        Coercive field Hc, > 0 [A/m].
+    remanence : float
+        Remanent induction Br, 0 < Br < Bs [T].
+    saturation : float
+        Saturation induction Bs, > 0 [T].
+
+    Returns
+    -------
+    tuple of float
+        (Hc [A/m], Br [T], Bs [T], k [m/A]), k = tan(πBr/2Bs)/Hc the limbs' shape factor.
+
+    Notes
+    -----
+    Not in the sources: Flatley & Henretty, NASA CP-3299 (1995); the limbs are
+    B±(H) = (2Bs/π) arctan[k(H ∓ Hc)] (:func:`limb_induction`).
+
+    Examples
+    --------
+    >>> hc, br, bs, k = limb_constants(12.0, 0.35, 0.7)
+    >>> round(k * hc, 12)
+    1.0
+    """
     hc = as_positive_scalar("coercivity", coercivity, unit="A/m")
     bs = as_positive_scalar("saturation", saturation, unit="T")
     br = as_positive_scalar("remanence", remanence, unit="T")
@@ -62,21 +90,14 @@ def limb_induction(field, coercivity, remanence, saturation, *, ascending=True):
     B+(Hc) = 0.
     """
     h = as_finite("field", field)
-    hc, _, bs, k = _material(coercivity, remanence, saturation)
+    hc, _, bs, k = limb_constants(coercivity, remanence, saturation)
     shift = hc if ascending else -hc
     return 2.0 * bs / np.pi * np.arctan(k * (h - shift))
 
 
 def _slope_along_h(h, b, direction, hc, bs, k):
     """dB/dH with H first, as an integrator takes a right-hand side."""
-    return _slope(b, h, direction, hc, bs, k)
-
-
-def _slope(b, h, direction, hc, bs, k):
-    """dB/dH of the Flatley–Henretty state equation; no checks."""
-    x = 0.5 * np.pi * b / bs
-    h_from = np.tan(x) / k - direction * hc
-    return 2.0 * bs / np.pi * k * np.cos(x) ** 2 * ((h - h_from) / (2.0 * hc)) ** 2
+    return kernels.hysteresis_slope(b, h, direction, hc, bs, k)
 
 
 def hysteresis_slope(induction, field, field_rate, coercivity, remanence, saturation):
@@ -112,11 +133,11 @@ def hysteresis_slope(induction, field, field_rate, coercivity, remanence, satura
     b = as_finite("induction", induction)
     h = as_finite("field", field)
     rate = as_finite("field_rate", field_rate)
-    hc, _, bs, k = _material(coercivity, remanence, saturation)
+    hc, _, bs, k = limb_constants(coercivity, remanence, saturation)
     if np.any(np.abs(b) >= bs):
         raise ValueError(f"induction must lie in (-{shown(bs)}, {shown(bs)}) T (below saturation), got "
                          f"{shown(b[np.abs(b) >= bs].ravel()[0])}")
-    slope = _slope(b, h, np.sign(rate), hc, bs, k)
+    slope = kernels.hysteresis_slope(b, h, np.sign(rate), hc, bs, k)
     return slope, slope * rate
 
 
@@ -158,7 +179,7 @@ def hysteresis_response(field, coercivity, remanence, saturation, *, initial_ind
     h = as_finite("field", field)
     if h.ndim == 0 or h.shape[-1] < 2:
         raise ValueError(f"field must have n >= 2 samples on its trailing axis [A/m], got shape {h.shape}")
-    hc, _, bs, k = _material(coercivity, remanence, saturation)
+    hc, _, bs, k = limb_constants(coercivity, remanence, saturation)
     b0 = as_finite("initial_induction", initial_induction)
     if np.any(np.abs(b0) >= bs):
         raise ValueError(f"initial_induction must lie in (-{shown(bs)}, {shown(bs)}) T, got {shown(b0.ravel()[0])}")
@@ -292,7 +313,7 @@ def limiting_loop_energy(field_amplitude, coercivity, remanence, saturation):
     1.0
     """
     ha = as_positive("field_amplitude", field_amplitude, unit="A/m")
-    hc, _, bs, k = _material(coercivity, remanence, saturation)
+    hc, _, bs, k = limb_constants(coercivity, remanence, saturation)
     return 4.0 * bs / (np.pi * k) * (_primitive(k * (ha + hc)) - _primitive(k * (ha - hc)))
 
 

@@ -57,7 +57,7 @@ def _to_body(w, x, y, z, v0, v1, v2):
 @njit(cache=True, error_model="numpy")
 def _rhs(x, f, inertia, magnet, axes, volume, hc, bs, kk, dx):
     q0, q1, q2, q3 = x[0], x[1], x[2], x[3]
-    # normalised for the rotation, as magbench.dynamics.rigid_body._rotate does
+    # normalised for the rotation, as magbench.dynamics.kernels.rotate does
     norm = math.sqrt(q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
     nw, nx, ny, nz = q0 / norm, -q1 / norm, -q2 / norm, -q3 / norm
     w0, w1, w2 = x[4], x[5], x[6]

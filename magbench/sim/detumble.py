@@ -20,9 +20,8 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from .._validate import (as_choice, as_finite, as_nonnegative, as_positive, as_positive_or_infinite,
-                         as_positive_scalar, as_vectors, check_member_steps, shown)
-from ..dynamics.rigid_body import _as_quaternions, _inertia_matrix
+from .._validate import (as_choice, as_finite, as_inertia, as_nonnegative, as_positive, as_positive_or_infinite,
+                         as_positive_scalar, as_quaternions, as_vectors, check_member_steps, shown)
 from ..earth.circular_orbit import CircularOrbit
 from .result import SimulationResult
 
@@ -290,10 +289,10 @@ class _Body:
 
 def _initial_members(inertia, orbit, attitude, rate, gain):
     """Checked inertia matrix, initial quaternions (M, 4), rates (M, 3) and M."""
-    j = _inertia_matrix("inertia", inertia)
+    j = as_inertia("inertia", inertia)
     if not isinstance(orbit, CircularOrbit):
         raise ValueError(f"orbit must be a magbench.earth.CircularOrbit, got {type(orbit).__name__}")
-    q0 = _as_quaternions("attitude", attitude)
+    q0 = as_quaternions("attitude", attitude)
     w0 = as_vectors("rate", rate)
     if q0.ndim > 2 or w0.ndim > 2:
         raise ValueError(f"attitude and rate must be (M, 4) or (4,) and (M, 3) or (3,), got {q0.shape} and {w0.shape}")

@@ -16,13 +16,14 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, as_positive_scalar, as_vectors, shown
+from .._validate import (as_axisymmetric_inertias, as_finite, as_in_range, as_nonnegative, as_positive,
+                         as_positive_scalar, as_vectors, shown)
 from ..constants import MU_0
-from ..dynamics.axisymmetric import _inertias, body_rate_from_momentum
-from ..dynamics.rigid_body import _cross, _euler_rates, _quaternion_rate, _rotate
-from ..dynamics.torques import _rod_moment
+from ..dynamics import kernels as dynamics_kernels
+from ..dynamics.axisymmetric import body_rate_from_momentum
 from ..earth.circular_orbit import CircularOrbit
-from ..hardware.hysteresis import _material, _slope, rod_cycle_energy
+from ..hardware import kernels as hardware_kernels
+from ..hardware.hysteresis import limb_constants, rod_cycle_energy
 from .detumble import _Field
 from ..integrate import rk4_step
 from .result import SimulationResult
@@ -69,7 +70,7 @@ class PassiveSatellite:
     rod_saturation: float = 0.025
 
     def __post_init__(self):
-        a, c = _inertias(self.transverse_inertia, self.axial_inertia)
+        a, c = as_axisymmetric_inertias(self.transverse_inertia, self.axial_inertia)
         if a.ndim or c.ndim:
             raise ValueError("transverse_inertia and axial_inertia must be scalars [kg·m²]")
         m = as_finite("magnet_moment", self.magnet_moment)
@@ -84,7 +85,7 @@ class PassiveSatellite:
         volume = as_nonnegative("rod_volume", self.rod_volume, unit="m³")
         if volume.ndim:
             raise ValueError(f"rod_volume must be a scalar (per rod) [m³], got shape {volume.shape}")
-        _material(self.rod_coercivity, self.rod_remanence, self.rod_saturation)
+        limb_constants(self.rod_coercivity, self.rod_remanence, self.rod_saturation)
         object.__setattr__(self, "rod_axes", tuple(tuple(float(x) for x in r / n) for r, n in zip(axes, norm)))
         for name, value in (("transverse_inertia", a), ("axial_inertia", c), ("magnet_moment", m),
                             ("rod_volume", volume)):
@@ -213,19 +214,19 @@ def initial_passive_state(satellite, angular_momentum, nutation, momentum_direct
 def _rhs(time, state, fields, inertia, magnet, axes, volume, material):
     q, w, rods = state[:, :4], state[:, 4:7], state[:, 7:]
     b_n, b_rate_n, _ = fields(time)
-    b = _rotate(q, b_n, -1.0)
+    b = dynamics_kernels.rotate(q, b_n, -1.0)
     moment = np.zeros_like(w)
     moment[:, 2] = magnet
     rods_rate = np.zeros_like(rods)
     if volume > 0:
-        b_rate = _rotate(q, b_rate_n, -1.0) - _cross(w, b)
+        b_rate = dynamics_kernels.rotate(q, b_rate_n, -1.0) - dynamics_kernels.cross(w, b)
         h = b @ axes.T / MU_0
         h_rate = b_rate @ axes.T / MU_0
         hc, bs, k = material
-        rods_rate = _slope(rods, h, np.sign(h_rate), hc, bs, k) * h_rate
-        moment = moment + _rod_moment(rods, axes, volume)
-    w_rate = _euler_rates(w, _cross(moment, b), inertia)
-    return np.concatenate([_quaternion_rate(q, w), w_rate, rods_rate], axis=-1)
+        rods_rate = hardware_kernels.hysteresis_slope(rods, h, np.sign(h_rate), hc, bs, k) * h_rate
+        moment = moment + dynamics_kernels.rod_moment(rods, axes, volume)
+    w_rate = dynamics_kernels.euler_rates(w, dynamics_kernels.cross(moment, b), inertia)
+    return np.concatenate([dynamics_kernels.quaternion_rate(q, w), w_rate, rods_rate], axis=-1)
 
 
 def simulate_passive(satellite, orbit, angular_momentum, nutation, momentum_direction, duration, *,
@@ -303,7 +304,7 @@ def simulate_passive(satellite, orbit, angular_momentum, nutation, momentum_dire
     axes = np.array(satellite.rod_axes)
     state = np.concatenate([np.broadcast_to(q0, (members, 4)), np.broadcast_to(w0, (members, 3)),
                             np.zeros((members, axes.shape[0]))], axis=-1)
-    hc, _, bs, k = _material(satellite.rod_coercivity, satellite.rod_remanence, satellite.rod_saturation)
+    hc, _, bs, k = limb_constants(satellite.rod_coercivity, satellite.rod_remanence, satellite.rod_saturation)
     inertia = satellite.inertia
     a, c = satellite.transverse_inertia, satellite.axial_inertia
     args = (_Field(orbit), inertia, satellite.magnet_moment, axes, satellite.rod_volume, (hc, bs, k))
@@ -315,7 +316,7 @@ def simulate_passive(satellite, orbit, angular_momentum, nutation, momentum_dire
         q, w = x[:, :4], x[:, 4:7]
         momentum = inertia * w
         big_l = np.linalg.norm(momentum, axis=-1)
-        b = _rotate(q, np.broadcast_to(orbit.field(t), (members, 3)), -1.0)
+        b = dynamics_kernels.rotate(q, np.broadcast_to(orbit.field(t), (members, 3)), -1.0)
         b_norm = np.linalg.norm(b, axis=-1)
         safe = np.where(big_l > 0, big_l, 1.0)
         records[j] = [big_l, np.arccos(np.clip(momentum[:, 2] / safe, -1.0, 1.0)),

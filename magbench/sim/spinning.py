@@ -26,11 +26,11 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from .._validate import as_choice, as_finite, as_in_range, as_positive, as_positive_or_infinite, as_positive_scalar, shown
+from .._validate import (as_choice, as_finite, as_in_range, as_inertia, as_positive, as_positive_or_infinite,
+                         as_positive_scalar, shown)
 from ..control.floquet import finite_difference_monodromy, floquet_multipliers
 from ..control.spin import _program_field, _projected
 from ..dynamics.gyrostat import _reduced, airplane_231_angles, airplane_231_matrix, rotor_dimensionless_numbers
-from ..dynamics.rigid_body import _inertia_matrix
 from ..earth.circular_orbit import CircularOrbit
 from ..earth.dipole import dipole_equatorial_b
 from ..earth.orbit import orbital_dipole_b
@@ -83,7 +83,7 @@ class RotorSatellite:
     moment_limit: float = math.inf
 
     def __post_init__(self):
-        j = _inertia_matrix("inertia", self.inertia)
+        j = as_inertia("inertia", self.inertia)
         if j.shape not in ((3,), (3, 3)):
             raise ValueError(f"inertia must have shape (3,) or (3, 3) [kg·m²], got shape {j.shape}")
         object.__setattr__(self, "inertia", j)
@@ -256,7 +256,7 @@ def rotor_satellite_from_dimensionless(inertia, rotor_inertia, spin_rate, orbit,
     :func:`rotor_dimensionless`); B = (I22 + I33)/2.
     """
     _check_orbit(orbit)
-    j = _inertia_matrix("inertia", inertia)
+    j = as_inertia("inertia", inertia)
     j = j if j.shape == (3, 3) else np.diag(j)
     b = 0.5 * float(j[1, 1] + j[2, 2])
     w0 = orbit.mean_motion
