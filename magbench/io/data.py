@@ -146,6 +146,11 @@ class Parameter:
         """The parameter in SI units."""
         return to_si(self.value, self.unit)[0]
 
+    @property
+    def unit_si(self):
+        """The SI unit of :attr:`value_si` (``"rad/s"`` for a parameter printed in deg/s)."""
+        return to_si(self.value, self.unit)[1]
+
 
 @lru_cache(maxsize=16)
 def _manifest(folder):

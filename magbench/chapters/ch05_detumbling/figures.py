@@ -18,20 +18,6 @@ from . import parameter_key, study
 SOURCE = "Kramlikh & Melnik (2016), SamSat-218D"
 ESTIMATORS = ("model", "hold", "propagate")
 
-_UNITS = {"inertia_x": "kg m^2", "inertia_y": "kg m^2", "inertia_z": "kg m^2", "orbit_altitude": "m",
-          "orbit_inclination": "rad", "epoch": "year", "earth_radius": "m", "dipole_g10": "T", "dipole_g11": "T",
-          "dipole_h11": "T", "earth_rotation_rate": "rad/s", "max_dipole": "A m^2", "initial_rate_x": "rad/s",
-          "initial_rate_y": "rad/s", "initial_rate_z": "rad/s", "fig2_rate_min": "rad/s", "fig2_rate_max": "rad/s",
-          "fig2_rate_step": "rad/s", "on_time": "s", "off_time": "s", "detumble_threshold": "rad/s",
-          "fig2_members": "1", "fig2_seed": "1", "rejection_margin": "1", "magnetometer_noise": "T",
-          "field_model_error": "T", "field_sigma": "rad", "sun_sigma": "rad", "envelope_rate_low": "rad/s",
-          "envelope_rate_high": "rad/s", "envelope_altitude": "m", "envelope_inclination": "rad",
-          "envelope_dipole_field": "T", "envelope_dipole_tilt": "rad", "envelope_gain": "A m^2 s/T",
-          "envelope_members": "1", "envelope_seed": "1", "envelope_duration": "s", "integration_step": "s",
-          "air_density": "kg/m^3", "drag_coefficient": "1", "cross_section_area": "m^2",
-          "pressure_center_offset": "m"}
-
-
 def _defaults():
     return chapter_parameters("ch05", overrides="")
 
@@ -40,7 +26,7 @@ def _parameters(*names, **extra):
     from ...io import load_parameter_set
 
     p, sources = _defaults(), load_parameter_set("samsat")
-    out = {name: FigureParameter(p[name], _UNITS[name], f"{name.replace('_', ' ')} ({sources[name].source})")
+    out = {name: FigureParameter(p[name], sources[name].unit_si, f"{name.replace('_', ' ')} ({sources[name].source})")
            for name in names}
     out.update(extra)
     return out
