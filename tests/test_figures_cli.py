@@ -84,13 +84,14 @@ def test_cli_figures_and_compare(capsys):
 
 
 def test_listing_figures_reads_no_file():
-    """Registering and listing every figure opens no data file: defaults are read on first use."""
+    """Registering and listing every figure opens no data file: defaults are read on first use.
+    (Code caches are not data: numba looks for its compiled kernels in ``__pycache__``.)"""
     code = (
         "import sys\n"
         "opened = []\n"
         "def hook(event, args):\n"
         "    if event == 'open' and isinstance(args[0], str) and '/magbench/' in args[0] \\\n"
-        "            and not args[0].endswith(('.py', '.pyc', '.so')):\n"
+        "            and not args[0].endswith(('.py', '.pyc', '.so')) and '/__pycache__' not in args[0]:\n"
         "        opened.append(args[0])\n"
         "sys.addaudithook(hook)\n"
         "from magbench import figures\n"
