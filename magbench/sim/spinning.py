@@ -28,8 +28,9 @@ from scipy.spatial.transform import Rotation
 
 from .._validate import as_choice, as_finite, as_in_range, as_positive, as_positive_or_infinite, as_positive_scalar, shown
 from ..control.floquet import finite_difference_monodromy, floquet_multipliers
-from ..control.spin import _program_field, _projected
-from ..dynamics.gyrostat import _reduced, airplane_231_angles, airplane_231_matrix, rotor_dimensionless_numbers
+from ..control.kernels import program_field, projected_dipole
+from ..dynamics.gyrostat import airplane_231_angles, airplane_231_matrix, rotor_dimensionless_numbers
+from ..dynamics.kernels import rotor_reduced_rates
 from ..dynamics.rigid_body import _inertia_matrix
 from ..earth.circular_orbit import CircularOrbit
 from ..earth.dipole import dipole_equatorial_b
@@ -280,7 +281,7 @@ def _check_numbers(axial_ratio, momentum, inclination):
 
 def _closed_loop(tau, x, a, c1, kappa, kappa_w, i, real=None):
     alpha, beta, h, w2, w3 = x
-    bo = _program_field(np.asarray(tau, dtype=float), np.asarray(i), np.asarray(1.0))
+    bo = program_field(np.asarray(tau, dtype=float), np.asarray(i), np.asarray(1.0))
     # the real field (units of B0): the program field, or a tilted dipole (tilt, node phase)
     br = bo if real is None else (orbital_dipole_b(tau, i, 1.0, 1.0, tilt=real[0], node_phase=real[1])
                                   / dipole_equatorial_b(1.0, 1.0))
@@ -290,10 +291,10 @@ def _closed_loop(tau, x, a, c1, kappa, kappa_w, i, real=None):
     b = np.stack(np.broadcast_arrays(cb * x1 + sb * br[..., 1], -sb * x1 + cb * br[..., 1],
                                      sa * br[..., 0] + ca * br[..., 2]), axis=-1)
     w = np.stack(np.broadcast_arrays((h - c1 * np.cos(tau) ** 2) / a - sb, w2 - cb, w3), axis=-1)
-    m = np.asarray(kappa)[..., None] * bo + _projected(b, w, kappa_w)
+    m = np.asarray(kappa)[..., None] * bo + projected_dipole(b, w, kappa_w)
     m = m + np.stack(np.broadcast_arrays(0.0, c1 * np.cos(tau) / math.sin(i), 0.0), axis=-1)
     t = np.cross(m, b)
-    return _reduced(x, t[..., 0], t[..., 1], t[..., 2], a)
+    return rotor_reduced_rates(x, t[..., 0], t[..., 1], t[..., 2], a)
 
 
 def rotor_normalised_rhs(tau, state, axial_ratio, momentum, restoring, damping, inclination):
