@@ -9,12 +9,13 @@ import math
 
 import numpy as np
 
+from ...control.rotor_stability import rotor_floquet_multipliers, rotor_stability_map
 from ...control.spin import (rotor_equilibrium_dipole, rotor_program_field,
                              rotor_spin_reference)
 from ...earth.dipole import dipole_equatorial_b
 from ...io import load_printed
 from ...result_cache import cached_result
-from ...sim.spinning import rotor_dimensionless, rotor_stability_map
+from ...sim.spinning import rotor_dimensionless
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 from . import CHAPTER, default_rotor_orbit, default_rotor_satellite, default_run, orbit_maxima
@@ -77,8 +78,6 @@ def compute_stability_map(axial_ratio, momentum, inclination, restoring, damping
     kappa_w = np.linspace(damping_max / n, damping_max, n)
     rho = rotor_stability_map(kappa, kappa_w, axial_ratio=axial_ratio, momentum=momentum, inclination=inclination,
                               steps=int(steps))
-    from ...sim.spinning import rotor_floquet_multipliers
-
     chosen = rotor_floquet_multipliers(axial_ratio, momentum, restoring, damping, inclination, steps=int(steps))
     k_per, kw_per = _si_factors()
     return FigureData("", "", "", {}, [
