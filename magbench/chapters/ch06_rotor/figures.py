@@ -10,8 +10,7 @@ import math
 import numpy as np
 
 from ...control.rotor_stability import rotor_floquet_multipliers, rotor_stability_map
-from ...control.spin import (rotor_equilibrium_dipole, rotor_program_field,
-                             rotor_spin_reference)
+from ...control.spin import relay_spin_dipole, rotor_equilibrium_dipole, rotor_program_field, rotor_spin_reference
 from ...earth.dipole import dipole_equatorial_b
 from ...io import load_printed
 from ...result_cache import cached_result
@@ -541,9 +540,9 @@ def compute_spin_relay(samples):
     if n < 8:
         raise ValueError(f"samples must be >= 8, got {shown(samples)}")
     alpha = (np.arange(n) + 0.5) * (2.0 * math.pi / n)
-    bx, by = np.cos(alpha), np.sin(alpha)
-    lx, ly = -np.sign(by), np.sign(bx)
-    torque = lx * by - ly * bx
+    # the transverse field over one turn, in units of B⊥; the law with L0 = 1, sign Δω = +1
+    field = np.stack([np.cos(alpha), np.sin(alpha), np.zeros_like(alpha)], axis=-1)
+    torque = np.cross(relay_spin_dipole(field, 1.0, 1.0), field)[:, 2]
     return FigureData("", "", "", {}, [Series("relay (7.12)", {"angle": ("deg", np.degrees(alpha)),
                                                                "torque": ("1", torque)})],
                       extra={"mean": float(np.mean(np.abs(torque)))})
