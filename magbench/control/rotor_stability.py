@@ -103,7 +103,7 @@ def rotor_linearised_matrices(tau, axial_ratio, momentum, inclination):
     Returns
     -------
     a0, a1, a2 : ndarray, shape (..., 5, 5)
-        Jacobians [-] of :func:`rotor_normalised_rhs` on the reference (0, 0, c1 cos²τ, 1, 0)
+        Jacobians [-] of :func:`magbench.sim.rotor_normalised_rhs` on the reference (0, 0, c1 cos²τ, 1, 0)
         in x = (α, β, δh, δΩ2, δΩ3); with h* = c1 cos²τ, b = b_o(τ), P = I − bbᵀ/|b|² and
         δw = (δh/a − β, δΩ2, δΩ3): the rows of ``rotor_spin.md`` §7.
 
@@ -111,7 +111,7 @@ def rotor_linearised_matrices(tau, axial_ratio, momentum, inclination):
     -----
     Rotor slides, slide "Ensuring stability" (seed line 80: the linearised system with
     periodic coefficients); period 2π in τ. A test checks these against a numerical
-    Jacobian of :func:`rotor_normalised_rhs`.
+    Jacobian of :func:`magbench.sim.rotor_normalised_rhs`.
     """
     a, c1, i = rotor_model_numbers(axial_ratio, momentum, inclination)
     return _linearised(as_finite("tau", tau), a, c1, i)

@@ -406,7 +406,7 @@ def rotor_finite_difference_monodromy(axial_ratio, momentum, restoring, damping,
     Returns
     -------
     ndarray, shape (5, 5)
-        Φ(2π) [-], independent of :func:`rotor_linearised_matrices`.
+        Φ(2π) [-], independent of :func:`magbench.control.rotor_linearised_matrices`.
 
     Notes
     -----

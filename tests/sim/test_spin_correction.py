@@ -25,7 +25,8 @@ def test_right_hand_side_is_euler_under_the_relay_torque_and_keeps_the_momentum_
         d = _relay_body_rhs(0.0, state, moment, field, inertia)
         w = state[4:]
         torque = inertia * d[4:] + np.cross(w, inertia * w)
-        b = rotate_to_body(q, field)        # the relay torque (7.12): along the spin axis −L0 (|B_x| + |B_y|), across B (rounding only)
+        b = rotate_to_body(q, field)                           # the field in body axes
+        # the relay torque (7.12): along the spin axis −L0 (|B_x| + |B_y|), across B (rounding only)
         assert_allclose(torque[2], -moment * (abs(b[0]) + abs(b[1])), rtol=1e-12)
         assert_allclose(torque @ b, 0.0, atol=1e-15)
         # quaternion kinematics keeps |q| (q·q̇ = 0), rounding only
