@@ -4,9 +4,11 @@ Thesis §4.1, eqs. (37)–(38): the PID law (:mod:`.pid`), the dipole allocation
 L = m × B (:mod:`.allocation`), the loop's poles and limits (:mod:`.linear`) and the
 readings of the thesis's unit-less gains (:mod:`.gain_readings`), and B-dot detumbling
 (:mod:`.bdot`, SamSat-218D and Kovalenko ch. 6), the rotor spacecraft's spin laws (:mod:`.spin`,
-rotor slides) and Floquet analysis of periodic systems (:mod:`.floquet`). Re-exports the public
-names of its modules. The simulated loop moved to :mod:`magbench.sim.pid_loop`; its names
-are still served from here, imported on use.
+rotor slides, and Kovalenko's relay spin law), Floquet analysis of periodic systems
+(:mod:`.floquet`) and the rotor's stability map (:mod:`.rotor_stability`); their unchecked
+array kernels are in :mod:`.kernels`. Re-exports the public names of its modules. The
+simulated loop moved to :mod:`magbench.sim.pid_loop`; its names are still served from here,
+imported on use.
 """
 
 from .allocation import ALLOCATIONS, body_field_exact, body_field_small_angle, dipole_allocation
@@ -17,9 +19,11 @@ from .gain_readings import GAIN_READINGS, gain_reading_scale
 from .linear import (closed_loop_poles, closed_loop_polynomial, critical_gain_scale,
                      double_integrator_ultimate_gain, integral_gain_limit)
 from .pid import pid_gains_for_triple_pole, pid_step, ziegler_nichols_pid
-from .spin import (momentum_damping_dipole, projected_damping_dipole, rotor_equilibrium_axial_momentum,
-                   rotor_equilibrium_dipole, rotor_program_field, rotor_reference_momentum, rotor_spin_reference,
-                   slides_printed_damping_torque)
+from .rotor_stability import (rotor_floquet_multipliers, rotor_linearised_matrices, rotor_model_numbers,
+                              rotor_stability_map)
+from .spin import (momentum_damping_dipole, projected_damping_dipole, relay_spin_dipole,
+                   rotor_equilibrium_axial_momentum, rotor_equilibrium_dipole, rotor_program_field,
+                   rotor_reference_momentum, rotor_spin_reference, slides_printed_damping_torque)
 
 __all__ = ["pid_step", "pid_gains_for_triple_pole", "ALLOCATIONS", "body_field_exact", "body_field_small_angle",
            "dipole_allocation", "closed_loop_polynomial", "closed_loop_poles",
@@ -28,5 +32,6 @@ __all__ = ["pid_step", "pid_gains_for_triple_pole", "ALLOCATIONS", "body_field_e
            "bdot_dipole_projected", "avanzini_giulietti_gain", "samsat_gain", "held_bdot_rate_limit",
            "rotor_program_field", "rotor_equilibrium_dipole", "rotor_equilibrium_axial_momentum",
            "rotor_spin_reference", "projected_damping_dipole", "slides_printed_damping_torque",
-           "rotor_reference_momentum", "momentum_damping_dipole", "floquet_multipliers",
-           "finite_difference_monodromy", "degree_of_stability"]
+           "rotor_reference_momentum", "momentum_damping_dipole", "relay_spin_dipole", "floquet_multipliers",
+           "finite_difference_monodromy", "degree_of_stability", "rotor_model_numbers", "rotor_linearised_matrices",
+           "rotor_floquet_multipliers", "rotor_stability_map"]

@@ -4,9 +4,8 @@ finite-difference monodromy of a nonlinear flow, the degree of stability.
 Rotor slides, slide "Ensuring stability" (seed line 80: "considering the linearised
 system with periodic coefficients one can choose gains that make the required motion
 asymptotically stable") and the lost slide "Stability and choice of control parameters"
-(seed lines 90–92). The rotor's own linearisation, monodromy and stability map compose the
-gyrostat, the law and the integrator and live in :mod:`magbench.sim.spinning`. Pure
-linear algebra.
+(seed lines 90–92). The rotor's own linearisation, monodromy and stability map are in
+:mod:`magbench.control.rotor_stability`. Pure linear algebra.
 """
 
 import numpy as np

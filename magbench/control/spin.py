@@ -8,21 +8,18 @@ eqs. (4.30)–(4.32) and (7.3)–(7.5) for the projection law. Frames as in
 program field is the direct dipole in orbital axes (velocity, orbit normal, radial out),
 B_o(u) = B0 (sin i cos u, cos i, −2 sin i sin u), which equals
 :func:`magbench.earth.orbital_dipole_b` with tilt 0. The law works for the slides'
-normalised quantities as well as SI (see each function). Pure functions.
+normalised quantities as well as SI (see each function). Kovalenko's relay spin law (7.12)
+closes the module. Pure functions; their unchecked kernels are in :mod:`magbench.control.kernels`.
 """
 
 import numpy as np
 
 from .._validate import as_finite, as_in_range, as_positive, as_vectors, shown
+from .kernels import program_field, projected_dipole, relay_dipole
 
 __all__ = ["rotor_program_field", "rotor_equilibrium_dipole", "rotor_equilibrium_axial_momentum",
            "rotor_spin_reference", "projected_damping_dipole", "slides_printed_damping_torque",
-           "rotor_reference_momentum", "momentum_damping_dipole"]
-
-
-def _program_field(u, i, b0):
-    su, cu, si, ci = np.sin(u), np.cos(u), np.sin(i), np.cos(i)
-    return b0[..., None] * np.stack(np.broadcast_arrays(si * cu, ci + 0.0 * u, -2.0 * si * su), axis=-1)
+           "rotor_reference_momentum", "momentum_damping_dipole", "relay_spin_dipole"]
 
 
 def rotor_program_field(argument_of_latitude, inclination, equatorial_b):
@@ -52,7 +49,7 @@ def rotor_program_field(argument_of_latitude, inclination, equatorial_b):
     u = as_finite("argument_of_latitude", argument_of_latitude)
     i = as_in_range("inclination", inclination, 0.0, np.pi, unit="rad")
     b0 = as_positive("equatorial_b", equatorial_b, unit="T")
-    return _program_field(u, i, b0)
+    return program_field(u, i, b0)
 
 
 def rotor_equilibrium_dipole(argument_of_latitude, inclination, equatorial_b, gain, axial_momentum, orbital_rate):
@@ -99,7 +96,7 @@ def rotor_equilibrium_dipole(argument_of_latitude, inclination, equatorial_b, ga
     k = as_finite("gain", gain)
     h0 = as_finite("axial_momentum", axial_momentum)
     w0 = as_positive("orbital_rate", orbital_rate, unit="rad/s")
-    m = k[..., None] * _program_field(u, i, b0)
+    m = k[..., None] * program_field(u, i, b0)
     m2 = h0 * w0 * np.cos(u) / (b0 * si)
     return m + np.stack(np.broadcast_arrays(0.0 * m2, m2, 0.0 * m2), axis=-1)
 
@@ -159,12 +156,6 @@ def rotor_spin_reference(argument_of_latitude, axial_momentum, rotor_momentum, a
     return (h - as_finite("rotor_momentum", rotor_momentum)) / a
 
 
-def _projected(field, error, gain):
-    b2 = np.sum(field * field, axis=-1, keepdims=True)
-    c = np.cross(error, field)
-    return np.asarray(gain)[..., None] * c / b2
-
-
 def projected_damping_dipole(field, rate_error, gain):
     r"""The damping dipole that damps: m = k_w (w × B)/|B|².
 
@@ -197,7 +188,7 @@ def projected_damping_dipole(field, rate_error, gain):
     k = as_finite("gain", gain)
     if np.any(k < 0):
         raise ValueError(f"gain must be >= 0 N·m·s, got {shown(float(k[k < 0].ravel()[0]))}")
-    return _projected(b, as_vectors("rate_error", rate_error), k)
+    return projected_dipole(b, as_vectors("rate_error", rate_error), k)
 
 
 def slides_printed_damping_torque(field, rate_error, gain):
@@ -232,7 +223,7 @@ def slides_printed_damping_torque(field, rate_error, gain):
     if np.any(k < 0):
         raise ValueError(f"gain must be >= 0 N·m·s, got {shown(float(k[k < 0].ravel()[0]))}")
     w = as_vectors("rate_error", rate_error)
-    return -np.cross(_projected(b, w, k), b)
+    return -np.cross(projected_dipole(b, w, k), b)
 
 
 def rotor_reference_momentum(spin_axis_momentum, orbit_normal, transverse_inertia, orbital_rate):
@@ -296,3 +287,40 @@ def momentum_damping_dipole(field, momentum_error, gain, transverse_inertia):
     """
     b = float(as_positive("transverse_inertia", transverse_inertia, unit="kg·m²"))
     return projected_damping_dipole(field, as_vectors("momentum_error", momentum_error) / b, gain)
+
+
+def relay_spin_dipole(field, moment, spin_error):
+    r"""Kovalenko's relay spin law: the full dipole across the spin axis, switched by the field's signs.
+
+    Parameters
+    ----------
+    field : array_like, shape (..., 3)
+        B in body axes, axis 3 the spin axis [T].
+    moment : float or array_like
+        L0 > 0, the coils' dipole [A·m²].
+    spin_error : float or array_like
+        Δω = ω3 − ω3,required, the spin error; only its sign is used [rad/s].
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+        L = (−L0 sign Δω sign B_y, L0 sign Δω sign B_x, 0) [A·m²]; its spin-axis torque
+        (L × B)_z = −L0 sign Δω (|B_x| + |B_y|) drives Δω toward zero (spin about +z),
+        (4/π) L0 B⊥ on average over a turn of the transverse field (his (7.26)). Δω = 0
+        gives L = 0 (nothing to correct).
+
+    Notes
+    -----
+    Kovalenko (1975) §7.3, eq. (7.12), the spin correction of spin-stabilised satellites
+    (Tiros, ESSA); its mean moment (7.26) and the spin-axis turn (7.27)–(7.30) are the
+    chapter's checks. Unchecked kernel :func:`magbench.control.kernels.relay_dipole`.
+
+    Examples
+    --------
+    >>> relay_spin_dipole([1.0, 1.0, 0.5], 2.0, 0.1).tolist()
+    [-2.0, 2.0, 0.0]
+    """
+    b = as_vectors("field", field)
+    m0 = as_positive("moment", moment, unit="A·m²")
+    direction = np.sign(as_finite("spin_error", spin_error))
+    return relay_dipole(b, m0, direction)

@@ -434,24 +434,15 @@ def rotor_reduced_rhs(tau, state, torque, axial_ratio):
     -----
     Rotor slides, slide "Equations of motion in the semi-body frame" (seed lines 29–38)
     divided by B with H = ĀΩ1 + J_fΩ_f: the body spin enters only through H
-    (``rotor_spin.md`` §4), which is why the rotor lets the body spin fast.
+    (``rotor_spin.md`` §4), which is why the rotor lets the body spin fast. Unchecked kernel
+    :func:`magbench.dynamics.kernels.rotor_reduced_rates`.
     """
     x = as_finite("state", state)
     if x.shape[:1] != (5,):
         raise ValueError(f"state must have shape (5, ...) (α, β, h, Ω2, Ω3), got shape {x.shape}")
     t = as_vectors("torque", torque)
     a = as_positive("axial_ratio", axial_ratio)
-    return _reduced(x, t[..., 0], t[..., 1], t[..., 2], a)
-
-
-def _reduced(x, t1, t2, t3, a):
-    alpha, beta, h, w2, w3 = x
-    sa, ca, sb, cb = np.sin(alpha), np.cos(alpha), np.sin(beta), np.cos(beta)
-    tb = sb / cb
-    return np.stack(np.broadcast_arrays(
-        w2 / cb - 1.0, w3, t1,
-        -h * w3 + w2 * w3 * tb + t2 - 3.0 * (a - 1.0) * sa * ca * cb,
-        h * w2 - w2**2 * tb + t3 + 3.0 * (a - 1.0) * sa**2 * sb * cb))
+    return kernels.rotor_reduced_rates(x, t[..., 0], t[..., 1], t[..., 2], a)
 
 
 def rotor_dimensionless_numbers(axial_inertia, transverse_inertia, axial_momentum, restoring_gain, damping_gain,

@@ -117,3 +117,40 @@ def gyrostat_turning_field_rhs(time, state, principal_inertia, rotor_momentum, d
     out[5] = -(w1 * b2 - w2 * b1) + field_rate * (n1 * b2 - n2 * b1)
     out[6], out[7], out[8] = -(w2 * n3 - w3 * n2), -(w3 * n1 - w1 * n3), -(w1 * n2 - w2 * n1)
     return out
+
+
+# Listed here, beside its function, so that other kernels added to this module merge cleanly.
+__all__ += ["rotor_reduced_rates"]
+
+
+def rotor_reduced_rates(x, t1, t2, t3, a):
+    r"""The symmetric gyrostat's 5-state dimensionless model, numpy kernel; no checks.
+
+    Parameters
+    ----------
+    x : ndarray, shape (5, ...)
+        α, β [rad], h = H/(ω0 B), Ω2, Ω3 [-].
+    t1, t2, t3 : ndarray
+        Non-gravity torque in the semi-body frame divided by ω0² B, per axis [-].
+    a : float or ndarray
+        a = A/B [-].
+
+    Returns
+    -------
+    ndarray, shape (5, ...)
+        (α', β', h', Ω2', Ω3') [-] of :func:`magbench.dynamics.rotor_reduced_rhs`, its
+        checked form.
+
+    Notes
+    -----
+    Rotor slides, slide "Equations of motion in the semi-body frame" (seed lines 29–38)
+    divided by B (``rotor_spin.md`` §4). A numpy kernel beside the compiled twins: the
+    normalised simulations call it on (5, members) arrays, which vectorise.
+    """
+    alpha, beta, h, w2, w3 = x
+    sa, ca, sb, cb = np.sin(alpha), np.cos(alpha), np.sin(beta), np.cos(beta)
+    tb = sb / cb
+    return np.stack(np.broadcast_arrays(
+        w2 / cb - 1.0, w3, t1,
+        -h * w3 + w2 * w3 * tb + t2 - 3.0 * (a - 1.0) * sa * ca * cb,
+        h * w2 - w2**2 * tb + t3 + 3.0 * (a - 1.0) * sa**2 * sb * cb))

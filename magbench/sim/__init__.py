@@ -1,7 +1,8 @@
 """Simulations composed from the physics families: one integrator (:func:`rk4_step`), one
 result type (:class:`SimulationResult`), the mock-up's PID loop (:mod:`.pid_loop`) and the
 bench loop (:mod:`.bench`), B-dot detumbling on orbit (:mod:`.detumble`), the spinning spacecraft with a
-coaxial rotor (:mod:`.spinning`) and the passive magnetic satellite (:mod:`.passive`).
+coaxial rotor (:mod:`.spinning`), Kovalenko's relay spin correction (:mod:`.spin_correction`)
+and the passive magnetic satellite (:mod:`.passive`).
 
 Re-exports the integrator, the result type, the mock-up's PID loop, detumbling, the spinning
 spacecraft and the passive satellite; the bench loop is imported from its module.
@@ -15,7 +16,8 @@ from .result import SimulationResult
 from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimensionless, rotor_finite_difference_monodromy,
                        rotor_floquet_multipliers, rotor_linearised_matrices, rotor_normalised_rhs,
                        rotor_satellite_from_dimensionless, rotor_stability_map, simulate_rotor,
-                       simulate_rotor_normalised)
+                       simulate_rotor_normalised, simulate_turning_field_gyrostat)
+from .spin_correction import relay_spin_correction
 
 __all__ = ["rk4_step", "SimulationResult", "PidLoop", "loop_torque", "pid_continuous_rhs", "simulate_pid", "DetumbleRun", "simulate_detumble", "detumble_time",
            "detumble_monte_carlo",
@@ -23,4 +25,5 @@ __all__ = ["rk4_step", "SimulationResult", "PidLoop", "loop_torque", "pid_contin
            "RotorSatellite", "RotorRun", "rotor_dimensionless",
            "rotor_satellite_from_dimensionless", "rotor_normalised_rhs", "rotor_linearised_matrices",
            "rotor_floquet_multipliers", "rotor_stability_map", "rotor_finite_difference_monodromy",
-           "simulate_rotor_normalised", "rotor_body_rhs", "simulate_rotor"]
+           "simulate_rotor_normalised", "rotor_body_rhs", "simulate_rotor", "simulate_turning_field_gyrostat",
+           "relay_spin_correction"]

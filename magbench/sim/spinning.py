@@ -1,11 +1,14 @@
 r"""The spinning spacecraft with a coaxial rotor under magnetic control: the closed-loop
-normalised model, its linearisation and Floquet stability map, and the SI simulation.
+normalised model and its finite-difference monodromy, and the SI simulation.
 
 Rotor slides (seed lines 11–102) with ``shared/reference/rotor_spin.md`` §4–§8. Composes
 the gyrostat of :mod:`magbench.dynamics.gyrostat`, the laws of
 :mod:`magbench.control.spin`, the Floquet tools of :mod:`magbench.control.floquet`, the
 orbit of :class:`magbench.earth.CircularOrbit` and the one fixed-step
-:func:`magbench.sim.rk4_step` (the Floquet monodromy and the normalised runs); the SI
+:func:`magbench.integrate.rk4_step` (the normalised runs and the monodromy that checks the
+linearisation); the linearisation itself, the Floquet multipliers and the stability map are
+control analysis, in :mod:`magbench.control.rotor_stability`, and are served from here
+under their old names. The SI
 simulation is adaptive (DOP853 through :func:`magbench.integrate.solve_adaptive`, in its compiled
 twin of :func:`scipy.integrate.solve_ivp`'s): the spin period is 1/2800 of the orbit and a fixed
 step fine enough would cost more than the error control.
@@ -26,11 +29,15 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from .._validate import (as_choice, as_finite, as_in_range, as_inertia, as_positive, as_positive_or_infinite,
-                         as_positive_scalar, shown)
-from ..control.floquet import finite_difference_monodromy, floquet_multipliers
-from ..control.spin import _program_field, _projected
-from ..dynamics.gyrostat import _reduced, airplane_231_angles, airplane_231_matrix, rotor_dimensionless_numbers
+from .._validate import (as_choice, as_count, as_finite, as_in_range, as_inertia, as_positive,
+                         as_positive_or_infinite, as_positive_scalar, shown)
+from ..control.floquet import finite_difference_monodromy
+# the linearisation and its Floquet map moved to the control family; served from here as before
+from ..control.rotor_stability import (rotor_floquet_multipliers, rotor_linearised_matrices, rotor_model_numbers,
+                                       rotor_stability_map)
+from ..control.kernels import program_field, projected_dipole
+from ..dynamics.gyrostat import airplane_231_angles, airplane_231_matrix, rotor_dimensionless_numbers
+from ..dynamics.kernels import rotor_reduced_rates
 from ..earth.circular_orbit import CircularOrbit
 from ..earth.dipole import dipole_equatorial_b
 from ..earth.orbit import orbital_dipole_b
@@ -40,7 +47,7 @@ from .result import SimulationResult
 __all__ = ["RotorSatellite", "RotorRun", "rotor_dimensionless", "rotor_satellite_from_dimensionless", "rotor_normalised_rhs",
            "rotor_linearised_matrices", "rotor_floquet_multipliers", "rotor_stability_map",
            "rotor_finite_difference_monodromy", "simulate_rotor_normalised", "rotor_body_rhs",
-           "simulate_rotor"]
+           "simulate_rotor", "simulate_turning_field_gyrostat"]
 
 DAMPING = ("rate", "momentum")
 
@@ -269,18 +276,9 @@ def rotor_satellite_from_dimensionless(inertia, rotor_inertia, spin_rate, orbit,
                           damping_gain=kappa_w * w0 * b, moment_limit=moment_limit)
 
 
-def _check_numbers(axial_ratio, momentum, inclination):
-    a = float(as_positive("axial_ratio", axial_ratio))
-    c1 = float(as_finite("momentum", momentum))
-    i = float(as_in_range("inclination", inclination, 0.0, math.pi, unit="rad"))
-    if abs(math.sin(i)) < 1e-12:
-        raise ValueError(f"inclination must have sin i != 0 (the law divides by sin i), got {shown(i)}")
-    return a, c1, i
-
-
 def _closed_loop(tau, x, a, c1, kappa, kappa_w, i, real=None):
     alpha, beta, h, w2, w3 = x
-    bo = _program_field(np.asarray(tau, dtype=float), np.asarray(i), np.asarray(1.0))
+    bo = program_field(np.asarray(tau, dtype=float), np.asarray(i), np.asarray(1.0))
     # the real field (units of B0): the program field, or a tilted dipole (tilt, node phase)
     br = bo if real is None else (orbital_dipole_b(tau, i, 1.0, 1.0, tilt=real[0], node_phase=real[1])
                                   / dipole_equatorial_b(1.0, 1.0))
@@ -290,10 +288,10 @@ def _closed_loop(tau, x, a, c1, kappa, kappa_w, i, real=None):
     b = np.stack(np.broadcast_arrays(cb * x1 + sb * br[..., 1], -sb * x1 + cb * br[..., 1],
                                      sa * br[..., 0] + ca * br[..., 2]), axis=-1)
     w = np.stack(np.broadcast_arrays((h - c1 * np.cos(tau) ** 2) / a - sb, w2 - cb, w3), axis=-1)
-    m = np.asarray(kappa)[..., None] * bo + _projected(b, w, kappa_w)
+    m = np.asarray(kappa)[..., None] * bo + projected_dipole(b, w, kappa_w)
     m = m + np.stack(np.broadcast_arrays(0.0, c1 * np.cos(tau) / math.sin(i), 0.0), axis=-1)
     t = np.cross(m, b)
-    return _reduced(x, t[..., 0], t[..., 1], t[..., 2], a)
+    return rotor_reduced_rates(x, t[..., 0], t[..., 1], t[..., 2], a)
 
 
 def rotor_normalised_rhs(tau, state, axial_ratio, momentum, restoring, damping, inclination):
@@ -334,169 +332,10 @@ def rotor_normalised_rhs(tau, state, axial_ratio, momentum, restoring, damping, 
     x = as_finite("state", state)
     if x.shape[:1] != (5,):
         raise ValueError(f"state must have shape (5, ...) (α, β, h, Ω2, Ω3), got shape {x.shape}")
-    a, c1, i = _check_numbers(axial_ratio, momentum, inclination)
+    a, c1, i = rotor_model_numbers(axial_ratio, momentum, inclination)
     kappa = as_finite("restoring", restoring)
     kappa_w = as_in_range("damping", damping, 0.0, math.inf)
     return _closed_loop(float(as_finite("tau", tau)), x, a, c1, kappa, kappa_w, i)
-
-
-def _linearised(tau, a, c1, i):
-    tau = np.asarray(tau, dtype=float)
-    b1, b2, b3 = (np.sin(i) * np.cos(tau), np.cos(i) + 0.0 * tau, -2.0 * np.sin(i) * np.sin(tau))
-    h = c1 * np.cos(tau) ** 2
-    shape = tau.shape + (5, 5)
-    a0, a1, a2 = np.zeros(shape), np.zeros(shape), np.zeros(shape)
-    a0[..., 0, 3] = a0[..., 1, 4] = 1.0
-    a0[..., 2, 0] = h
-    a0[..., 3, 0] = -3.0 * (a - 1.0)
-    a0[..., 3, 4] = -h
-    a0[..., 4, 0] = -c1 * np.sin(2.0 * tau)
-    a0[..., 4, 1] = -1.0 - c1 * np.cos(tau) / np.tan(i)
-    a0[..., 4, 2] = 1.0
-    a0[..., 4, 3] = h
-    a1[..., 2, 0], a1[..., 2, 1] = b1 * b2, b1 * b3
-    a1[..., 3, 0], a1[..., 3, 1] = -(b1**2 + b3**2), b2 * b3
-    a1[..., 4, 0], a1[..., 4, 1] = b2 * b3, -(b1**2 + b2**2)
-    b = np.stack([b1, b2, b3], axis=-1)
-    p = np.eye(3) - b[..., :, None] * b[..., None, :] / np.sum(b * b, axis=-1)[..., None, None]
-    d = np.zeros((3, 5))
-    d[0, 1], d[0, 2], d[1, 3], d[2, 4] = -1.0, 1.0 / a, 1.0, 1.0
-    a2[..., 2:, :] = -p @ d
-    return a0, a1, a2
-
-
-def rotor_linearised_matrices(tau, axial_ratio, momentum, inclination):
-    r"""The linearised closed loop about the reference, split by gain: A = A0 + κ A1 + κ_w A2.
-
-    Parameters
-    ----------
-    tau : float or array_like
-        τ = u [-].
-    axial_ratio : float
-        a = A/B [-].
-    momentum : float
-        c1 [-].
-    inclination : float
-        i, sin i ≠ 0 [rad].
-
-    Returns
-    -------
-    a0, a1, a2 : ndarray, shape (..., 5, 5)
-        Jacobians [-] of :func:`rotor_normalised_rhs` on the reference (0, 0, c1 cos²τ, 1, 0)
-        in x = (α, β, δh, δΩ2, δΩ3); with h* = c1 cos²τ, b = b_o(τ), P = I − bbᵀ/|b|² and
-        δw = (δh/a − β, δΩ2, δΩ3): the rows of ``rotor_spin.md`` §7.
-
-    Notes
-    -----
-    Rotor slides, slide "Ensuring stability" (seed line 80: the linearised system with
-    periodic coefficients); period 2π in τ. A test checks these against a numerical
-    Jacobian of :func:`rotor_normalised_rhs`.
-    """
-    a, c1, i = _check_numbers(axial_ratio, momentum, inclination)
-    return _linearised(as_finite("tau", tau), a, c1, i)
-
-
-def _monodromy(a, c1, i, kappa, kappa_w, steps):
-    kappa, kappa_w = np.broadcast_arrays(np.asarray(kappa, float), np.asarray(kappa_w, float))
-    shape = kappa.shape
-    k, kw = kappa.ravel(), kappa_w.ravel()
-    h = 2.0 * math.pi / steps
-    # A0, A1, A2 are the same for every gain pair: tabulate them once on the RK4 stage
-    # times (half steps). Rows 0 and 1 of A are α' = δΩ2, β' = δΩ3 for every member, so
-    # only rows 2-4 are multiplied out, with the members on the last axis (x[r, j, p] is
-    # element (r, j) of Φ of member p) — several times faster than a batched
-    # (m, 5, 5) @ (m, 5, 5) product.
-    a0, a1, a2 = _linearised(np.arange(2 * steps + 1) * (0.5 * h), a, c1, i)
-    # rows 2-4 of A0, A1, A2 side by side: table[n] @ (1, κ, κ_w) gives every member's rows
-    table = np.ascontiguousarray(np.stack([a0[:, 2:, :], a1[:, 2:, :], a2[:, 2:, :]], axis=-1).reshape(-1, 15, 3))
-    gains = np.stack([np.ones_like(k), k, kw])                # (3, m)
-
-    def rhs(tau, x):
-        c = (table[int(round(tau / (0.5 * h)))] @ gains).reshape(3, 5, -1)
-        out = np.empty_like(x)
-        out[0], out[1] = x[3], x[4]
-        out[2:] = np.einsum("rjp,jcp->rcp", c, x)
-        return out
-
-    x = np.repeat(np.eye(5)[:, :, None], k.size, axis=2)
-    for n in range(steps):
-        x = rk4_step(rhs, n * h, x, h)
-    return np.moveaxis(x, 2, 0).reshape(shape + (5, 5))
-
-
-def rotor_floquet_multipliers(axial_ratio, momentum, restoring, damping, inclination, *, steps=1000):
-    r"""Floquet multipliers of the linearised closed loop over one orbit.
-
-    Parameters
-    ----------
-    axial_ratio : float
-        a = A/B [-].
-    momentum : float
-        c1 [-].
-    restoring : float or array_like
-        κ [-]; broadcasts with ``damping``.
-    damping : float or array_like
-        κ_w ≥ 0 [-].
-    inclination : float
-        i, sin i ≠ 0 [rad].
-    steps : int, optional
-        RK4 steps per orbit [-] (1000: max|ρ| to about 1e-7 relative).
-
-    Returns
-    -------
-    ndarray, complex, shape (..., 5)
-        ρ sorted by decreasing modulus [-]; stable when max|ρ| < 1, and max|ρ| is the
-        slowest per-orbit contraction.
-
-    Notes
-    -----
-    Rotor slides, slide "Ensuring stability" (seed line 80) and the lost slide "Stability
-    and choice of control parameters" (seed lines 90–92): the monodromy Φ(2π) of
-    Φ' = A(τ)Φ with :func:`rotor_linearised_matrices`, all gain pairs integrated together
-    as one batched matrix equation by :func:`magbench.sim.rk4_step`.
-    """
-    a, c1, i = _check_numbers(axial_ratio, momentum, inclination)
-    kappa = as_finite("restoring", restoring)
-    kappa_w = as_in_range("damping", damping, 0.0, math.inf)
-    n = int(as_positive_scalar("steps", steps))
-    return floquet_multipliers(_monodromy(a, c1, i, kappa, kappa_w, n))
-
-
-def rotor_stability_map(restoring, damping, *, axial_ratio, momentum, inclination, steps=1000):
-    r"""The stability map: max|ρ| over a grid of (restoring, damping) gains.
-
-    Parameters
-    ----------
-    restoring : array_like, shape (n_restoring,)
-        κ values [-].
-    damping : array_like, shape (n_damping,)
-        κ_w values, ≥ 0 [-].
-    axial_ratio : float
-        a = A/B [-].
-    momentum : float
-        c1 [-].
-    inclination : float
-        i [rad].
-    steps : int, optional
-        RK4 steps per orbit [-].
-
-    Returns
-    -------
-    ndarray, shape (n_damping, n_restoring)
-        max|ρ| [-]; < 1 is asymptotically stable.
-
-    Notes
-    -----
-    Rotor slides, slide "Stability and choice of control parameters" (lost) (seed lines
-    90–92), recomputed with :func:`rotor_floquet_multipliers` (``rotor_spin.md`` §7).
-    """
-    k = as_finite("restoring", restoring)
-    kw = as_in_range("damping", damping, 0.0, math.inf)
-    if k.ndim != 1 or kw.ndim != 1:
-        raise ValueError(f"restoring and damping must be 1-D grids, got shapes {k.shape}, {kw.shape}")
-    grid_k, grid_kw = np.meshgrid(k, kw)
-    rho = rotor_floquet_multipliers(axial_ratio, momentum, grid_k, grid_kw, inclination, steps=steps)
-    return np.abs(rho[..., 0])
 
 
 #: The normalised loop: "compiled" (:mod:`magbench.sim._normalised_rotor_kernel`) or
@@ -567,7 +406,7 @@ def rotor_finite_difference_monodromy(axial_ratio, momentum, restoring, damping,
     Returns
     -------
     ndarray, shape (5, 5)
-        Φ(2π) [-], independent of :func:`rotor_linearised_matrices`.
+        Φ(2π) [-], independent of :func:`magbench.control.rotor_linearised_matrices`.
 
     Notes
     -----
@@ -575,7 +414,7 @@ def rotor_finite_difference_monodromy(axial_ratio, momentum, restoring, damping,
     with :func:`magbench.control.finite_difference_monodromy` on
     :func:`rotor_normalised_rhs` started at (0, 0, c1, 1, 0), τ = 0.
     """
-    a, c1, i = _check_numbers(axial_ratio, momentum, inclination)
+    a, c1, i = rotor_model_numbers(axial_ratio, momentum, inclination)
     kappa = float(as_finite("restoring", restoring))
     kappa_w = float(as_in_range("damping", damping, 0.0, math.inf))
     n = int(as_positive_scalar("steps", steps))
@@ -625,7 +464,7 @@ def simulate_rotor_normalised(axial_ratio, momentum, restoring, damping, inclina
     Rotor slides, slides "Equations of motion" to "Control implementation" (seed lines 29–87), in the normalised form of ``rotor_spin.md`` §4, Monte
     Carlo members on the trailing axis of the state (the model's (5, ...) layout).
     """
-    a, c1, i = _check_numbers(axial_ratio, momentum, inclination)
+    a, c1, i = rotor_model_numbers(axial_ratio, momentum, inclination)
     kappa = as_finite("restoring", restoring)
     kappa_w = as_in_range("damping", damping, 0.0, math.inf)
     x0 = as_finite("initial_state", initial_state)
@@ -787,3 +626,80 @@ def simulate_rotor(satellite, orbit, duration, *, initial_angles=(0.0, 0.0, 0.0)
                     inputs={"duration": t_end, "initial_angles": tuple(angles0.tolist()),
                             "initial_rate_error": tuple(dw.tolist()), "sample_interval": dt, "rtol": rtol,
                             "atol": atol, "damping": damping, "method": method, "nfev": int(sol.nfev)})
+
+
+def simulate_turning_field_gyrostat(inertia, rotor_momentum, damping_gain, field_rate, initial_rate, initial_field,
+                                    field_axis, duration, *, samples=301):
+    r"""Simulate a damped gyrostat in a field that turns about a fixed inertial axis (no attitude needed).
+
+    Parameters
+    ----------
+    inertia : array_like, shape (3,) or (3, 3)
+        Principal moments of body + rotor (rotor counted as rigid), axis 1 the rotor axis;
+        a (3, 3) tensor must be diagonal [kg·m²].
+    rotor_momentum : float
+        J_f ν along body axis 1 [N·m·s].
+    damping_gain : float
+        k in the torque −k w⊥ [N·m·s]: k > 0 is the damping of
+        :func:`magbench.control.projected_damping_dipole`, k < 0 the slides' printed sign
+        read as a torque (:func:`magbench.control.slides_printed_damping_torque`).
+    field_rate : float
+        Ω_f, the field's turning rate in inertial space [rad/s].
+    initial_rate : array_like, shape (3,)
+        ω at t = 0, body axes [rad/s].
+    initial_field : array_like, shape (3,)
+        B at t = 0, body axes, not zero [T].
+    field_axis : array_like, shape (3,)
+        The unit axis the field turns about, body axes at t = 0 [-].
+    duration : float
+        Simulated time [s].
+    samples : int, optional
+        Number of equally spaced samples from 0 to ``duration``, ≥ 2 [-].
+
+    Returns
+    -------
+    SimulationResult
+        ``time`` [s]; states ``rate_x`` … ``rate_z`` [rad/s], ``field_x`` … ``field_z`` [T],
+        ``axis_x`` … ``axis_z`` [-], body axes, one row each.
+
+    Notes
+    -----
+    Rotor slides, slide "Control implementation" (seed lines 85–87): the damping and its
+    printed sign on the gyrostat of :func:`magbench.dynamics.gyrostat_turning_field_rhs`
+    (its compiled twin), the field turning as a circular orbit's does at Ω_f = ω0
+    (``rotor_spin.md`` §9). DOP853 through :func:`magbench.integrate.solve_adaptive` in
+    scipy, rtol 1e-9, atol 1e-12: the power −k |w⊥|² is then resolved to well below the
+    energy's change over the run.
+    """
+    j = as_finite("inertia", inertia)
+    if j.shape == (3, 3):
+        if np.any(j != np.diag(np.diag(j))):
+            raise ValueError(f"inertia must be diagonal (principal axes) [kg·m²], got {j.tolist()}")
+        j = np.diag(j).copy()
+    if j.shape != (3,) or np.any(j <= 0):
+        raise ValueError(f"inertia must be three positive principal moments [kg·m²], got {j.tolist()}")
+    h = float(as_finite("rotor_momentum", rotor_momentum))
+    k = float(as_finite("damping_gain", damping_gain))
+    rate = float(as_finite("field_rate", field_rate))
+    vectors = []
+    for name, value in (("initial_rate", initial_rate), ("initial_field", initial_field), ("field_axis", field_axis)):
+        v = as_finite(name, value)
+        if v.shape != (3,):
+            raise ValueError(f"{name} must have shape (3,), got shape {v.shape}")
+        vectors.append(v)
+    if not np.any(vectors[1]):
+        raise ValueError("initial_field must not be zero (the damping divides by |B|²)")
+    norm = float(np.linalg.norm(vectors[2]))
+    if abs(norm - 1.0) > 1e-9:
+        raise ValueError(f"field_axis must be a unit vector, got |field_axis| = {shown(norm)}")
+    t_end = as_positive_scalar("duration", duration, unit="s")
+    n = int(as_count("samples", samples, minimum=2))
+    from ..dynamics.kernels import gyrostat_turning_field_rhs
+
+    time = np.linspace(0.0, t_end, n)
+    sol = solve_adaptive(gyrostat_turning_field_rhs, (0.0, t_end), np.concatenate(vectors), t_eval=time, rtol=1e-9,
+                         atol=1e-12, method="DOP853", args=(j, h, k, rate))
+    labels = tuple(f"{kind}_{axis}" for kind in ("rate", "field", "axis") for axis in "xyz")
+    return SimulationResult(time, sol.y, np.empty((0, n)), np.empty((0, n)), labels, (), (),
+                            params={"inertia": j, "rotor_momentum": h, "damping_gain": k, "field_rate": rate,
+                                    "duration": t_end, "nfev": int(sol.nfev)})

@@ -277,3 +277,18 @@ def test_turning_field_rhs_power_invariants_and_torque():
         for rate_of in (np.sum(b * d[:, 3:6], -1) / np.sum(b * b, -1), np.sum(n * d[:, 6:], -1),
                         (np.sum(n * d[:, 3:6], -1) + np.sum(b * d[:, 6:], -1)) / np.linalg.norm(b, axis=-1)):
             assert_allclose(rate_of, 0.0, atol=1e-15)   # relative to rates of order 0.3 rad/s
+
+
+def test_reduced_rates_kernel_is_the_checked_model_and_keeps_the_spin_reference():
+    from magbench.dynamics.kernels import rotor_reduced_rates
+
+    x = np.vstack([RNG.uniform(-0.5, 0.5, (2, 30)), RNG.uniform(-3.0, 3.0, (3, 30))])
+    t = RNG.normal(size=(30, 3))
+    # the checked function only adds checks: equal to the last bit
+    np.testing.assert_array_equal(rotor_reduced_rates(x, t[:, 0], t[:, 1], t[:, 2], 1.4),
+                                  rotor_reduced_rhs(0.0, x, t, 1.4))
+    # on α = β = 0, Ω2 = 1, Ω3 = 0 without torque only Ω3 moves, at h (the rotor's gyroscopic
+    # term h Ω2): exact in floating point (products with 0 and 1)
+    h = np.linspace(-2.0, 2.0, 5)
+    ref = np.stack([0.0 * h, 0.0 * h, h, 1.0 + 0.0 * h, 0.0 * h])
+    np.testing.assert_array_equal(rotor_reduced_rates(ref, 0.0, 0.0, 0.0, 1.4), np.stack([0 * h, 0 * h, 0 * h, 0 * h, h]))

@@ -284,3 +284,46 @@ def test_normalised_run_with_the_dipole_untilted_is_the_program_field_run():
     b = simulate_rotor_normalised(0.8, 1.0, 4.0, 2.0, 0.9, x0, 1, steps_per_orbit=200, real_dipole_tilt=1e-300,
                                   real_node_phase=0.7).states
     np.testing.assert_allclose(b, a, rtol=0, atol=1e-12)
+
+
+def test_turning_field_gyrostat_keeps_its_invariants_and_the_damping_drains_energy():
+    from magbench.sim import simulate_turning_field_gyrostat
+
+    j = np.array([0.9, 1.2, 1.35])
+    w0, b0, n0 = [0.2, -0.1, 0.15], [2.5e-5, 0.0, 1e-5], [0.0, 0.6, 0.8]
+    free = simulate_turning_field_gyrostat(j, 0.05, 0.0, 1.1e-3, w0, b0, n0, 600.0, samples=61)
+    w = free.states[:3].T
+    energy = 0.5 * np.sum(j * w * w, axis=1)
+    # no torque: ½ωᵀIω is conserved with the rotor at constant speed (ω·(ω × K) = 0), and the
+    # field and its axis only turn: |B|, |n|, n·B constant; DOP853 at rtol 1e-9 over ~100 spin
+    # turns keeps them to ~1e-8
+    assert_allclose(energy, energy[0], rtol=1e-8)
+    b, n = free.states[3:6].T, free.states[6:].T
+    assert_allclose(np.linalg.norm(b, axis=1), np.linalg.norm(b0), rtol=1e-8)
+    assert_allclose(np.linalg.norm(n, axis=1), 1.0, rtol=1e-8)
+    assert_allclose(np.sum(n * b, axis=1), 0.8e-5, rtol=1e-7)
+    # the corrected damping (k > 0) never raises the energy, the printed sign (k < 0) never lowers it
+    for k, sign in ((0.01, -1.0), (-0.01, 1.0)):
+        run = simulate_turning_field_gyrostat(np.diag(j), 0.05, k, 1.1e-3, w0, b0, n0, 600.0, samples=61)
+        w = run.states[:3].T
+        assert np.all(sign * np.diff(0.5 * np.sum(j * w * w, axis=1)) > 0)
+
+
+@pytest.mark.parametrize("change, name", [
+    ({"inertia": [[1.0, 0.1, 0.0], [0.1, 1.0, 0.0], [0.0, 0.0, 1.0]]}, "inertia"),
+    ({"inertia": [1.0, -1.0, 1.0]}, "inertia"),
+    ({"initial_field": [0.0, 0.0, 0.0]}, "initial_field"),
+    ({"field_axis": [0.0, 2.0, 0.0]}, "field_axis"),
+    ({"initial_rate": [0.1, 0.2]}, "initial_rate"),
+    ({"duration": 0.0}, "duration"),
+    ({"samples": 1}, "samples"),
+    ({"damping_gain": np.nan}, "damping_gain"),
+])
+def test_turning_field_gyrostat_rejects_bad_input(change, name):
+    from magbench.sim import simulate_turning_field_gyrostat
+
+    args = {"inertia": [1.0, 1.2, 1.3], "rotor_momentum": 0.05, "damping_gain": 0.01, "field_rate": 1e-3,
+            "initial_rate": [0.1, 0.1, 0.1], "initial_field": [2e-5, 0.0, 0.0], "field_axis": [0.0, 1.0, 0.0],
+            "duration": 10.0, **change}
+    with pytest.raises(ValueError, match=name):
+        simulate_turning_field_gyrostat(**args)

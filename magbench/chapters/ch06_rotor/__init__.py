@@ -13,15 +13,15 @@ import math
 import numpy as np
 
 from ...compare import make_row
-from ...control.spin import rotor_program_field, slides_printed_damping_torque
+from ...control.spin import relay_spin_dipole, rotor_program_field, slides_printed_damping_torque
 from ...errata import kovalenko_page, printed_check
 from ...io import load_printed
 from ...result_cache import cached_result
+from ...sim.spin_correction import relay_spin_correction     # served from here too: claim_rows and the tests call it
 from ...sim.spinning import simulate_rotor
 from ..._format import format_number
 from .._base import Chapter, chapter_parameters
 from .defaults import default_rotor_orbit, default_rotor_satellite, rotor_parameters
-from ..._validate import shown
 from ...units import DEG
 
 __all__ = ["CHAPTER", "INPUTS", "default_rotor_orbit", "default_rotor_satellite", "rotor_parameters",
@@ -100,8 +100,8 @@ def claim_rows(params=None):
     * Kovalenko's 1–2 % spin accuracy beside the run's largest |s − mean s|/|mean s|
       (not the same spacecraft: the contrast the rotor buys);
     * Kovalenko's (7.30) spin-axis turn during a spin correction, "much less than 1°",
-      beside :func:`relay_spin_correction` (a rigid spinning body under the relay law
-      (7.12)) for his δω = 2 % and a field ratio B∥/B⊥ = 0.5 (ours: his condition on
+      beside :func:`magbench.sim.spin_correction.relay_spin_correction` (a rigid spinning
+      body under the relay law (7.12)) for his δω = 2 % and a field ratio B∥/B⊥ = 0.5 (ours: his condition on
       the arcs is lost in the transcription).
     """
     p = {**rotor_parameters(), **(params or chapter_parameters("ch06"))}
@@ -166,64 +166,6 @@ def claim_rows(params=None):
 FIELD_RATIO = 0.5
 
 
-def relay_spin_correction(relative_change, field_ratio, *, torque_number=2e-4, axial_ratio=1.5):
-    """Turn of the spin axis while Kovalenko's relay law (7.12) corrects the spin (his (7.27)–(7.30)).
-
-    A rigid axisymmetric body (transverse inertia 1, axial ``axial_ratio``, spin 1) in a
-    constant field with transverse part B⊥ = 1 and axial part ``field_ratio``; the relay
-    dipole L_x = −L0 sign B_y, L_y = L0 sign B_x in body axes (sign Δω = +1, L0 B⊥ =
-    ``torque_number`` J3 ω3², small so that the correction lasts many spin turns) acts
-    until the spin has changed by ``relative_change``.
-
-    Parameters
-    ----------
-    relative_change : float
-        δω = Δω3/ω3 the correction makes, in (0, 0.5) [-].
-    field_ratio : float
-        B∥/B⊥ during the correction, in [0, 10] [-].
-    torque_number : float, optional
-        L0 B⊥/(J3 ω3²) [-].
-    axial_ratio : float, optional
-        J3 over the transverse inertia [-].
-
-    Returns
-    -------
-    turn : float
-        Angle between the angular momentum's initial and final directions [rad].
-    achieved : float
-        The spin's relative change at the end [-].
-    """
-    from ...integrate import solve_adaptive
-
-    if not 0.0 < relative_change < 0.5:
-        raise ValueError(f"relative_change must be in (0, 0.5), got {shown(relative_change)}")
-    if not 0.0 <= field_ratio <= 10.0:
-        raise ValueError(f"field_ratio must be in [0, 10], got {shown(field_ratio)}")
-    j1, j3, l0 = 1.0, float(axial_ratio), float(torque_number) * float(axial_ratio)
-    b_inertial = np.array([1.0, 0.0, float(field_ratio)])
-
-    def rhs(t, y):
-        r = y[:9].reshape(3, 3)                      # body -> inertial
-        w = y[9:]
-        b = r.T @ b_inertial
-        lx, ly = -l0 * math.copysign(1.0, b[1]), l0 * math.copysign(1.0, b[0])
-        torque = np.array([ly * b[2], -lx * b[2], lx * b[1] - ly * b[0]])
-        jw = np.array([j1 * w[0], j1 * w[1], j3 * w[2]])
-        wdot = (torque - np.cross(w, jw)) / np.array([j1, j1, j3])
-        skew = np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
-        return np.concatenate([(r @ skew).ravel(), wdot])
-
-    # Kovalenko (7.26)-(7.29): mean moment (4/π) L0, so t0 = δω J3 ω3 / ((4/π) L0 B⊥)
-    duration = relative_change * j3 / (4.0 / math.pi * l0)
-    y0 = np.concatenate([np.eye(3).ravel(), [0.0, 0.0, 1.0]])
-    sol = solve_adaptive(rhs, (0.0, duration), y0, method="DOP853", rtol=1e-10, atol=1e-12, max_step=0.05)
-    r_end, w_end = sol.y[:9, -1].reshape(3, 3), sol.y[9:, -1]
-    k0 = np.array([0.0, 0.0, j3])
-    k1 = r_end @ np.array([j1 * w_end[0], j1 * w_end[1], j3 * w_end[2]])
-    cos = float(k0 @ k1 / (np.linalg.norm(k0) * np.linalg.norm(k1)))
-    return math.acos(min(1.0, cos)), abs(1.0 - w_end[2])
-
-
 def printed_damping_power(params=None, samples=64):
     """Power of the slides' printed damping torque per k_w |w⊥|², along one orbit [-].
 
@@ -270,14 +212,15 @@ def damping_checks():
 def relay_mean_moment(samples=100_000):
     """Kovalenko's relay spin law (7.12) averaged over a spin turn: mean |(L × B)_z|/(L0 B⊥) [-].
 
-    L_x = −L0 sign Δω sign B_y, L_y = L0 sign Δω sign B_x with the transverse field of
-    magnitude B⊥ at angle α in the spin plane; the mean of the spin-axis torque over α is
-    Kovalenko's effective moment (7.26).
+    The law of :func:`magbench.control.relay_spin_dipole`, L_x = −L0 sign Δω sign B_y,
+    L_y = L0 sign Δω sign B_x, with the transverse field of magnitude B⊥ at angle α in the
+    spin plane; the mean of the spin-axis torque over α is Kovalenko's effective moment (7.26).
     """
     alpha = (np.arange(samples) + 0.5) * (2.0 * math.pi / samples)
-    bx, by = np.cos(alpha), np.sin(alpha)
-    lx, ly = -np.sign(by), np.sign(bx)               # sign Δω = +1, L0 = 1
-    return float(np.mean(np.abs(lx * by - ly * bx)))
+    # the transverse field over one turn, in units of B⊥; the law with L0 = 1, sign Δω = +1
+    field = np.stack([np.cos(alpha), np.sin(alpha), np.zeros_like(alpha)], axis=-1)
+    torque = np.cross(relay_spin_dipole(field, 1.0, 1.0), field)[:, 2]
+    return float(np.mean(np.abs(torque)))
 
 
 def kovalenko_checks():

@@ -9,12 +9,12 @@ import math
 
 import numpy as np
 
-from ...control.spin import (rotor_equilibrium_dipole, rotor_program_field,
-                             rotor_spin_reference)
+from ...control.rotor_stability import rotor_floquet_multipliers, rotor_stability_map
+from ...control.spin import relay_spin_dipole, rotor_equilibrium_dipole, rotor_program_field, rotor_spin_reference
 from ...earth.dipole import dipole_equatorial_b
 from ...io import load_printed
 from ...result_cache import cached_result
-from ...sim.spinning import rotor_dimensionless, rotor_stability_map
+from ...sim.spinning import rotor_dimensionless, simulate_turning_field_gyrostat
 from .._base import chapter_parameters
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 from . import CHAPTER, default_rotor_orbit, default_rotor_satellite, default_run, orbit_maxima
@@ -77,8 +77,6 @@ def compute_stability_map(axial_ratio, momentum, inclination, restoring, damping
     kappa_w = np.linspace(damping_max / n, damping_max, n)
     rho = rotor_stability_map(kappa, kappa_w, axial_ratio=axial_ratio, momentum=momentum, inclination=inclination,
                               steps=int(steps))
-    from ...sim.spinning import rotor_floquet_multipliers
-
     chosen = rotor_floquet_multipliers(axial_ratio, momentum, restoring, damping, inclination, steps=int(steps))
     k_per, kw_per = _si_factors()
     return FigureData("", "", "", {}, [
@@ -295,28 +293,20 @@ def _damping_parameters():
 
 
 def _energy_run(law, gain, rotor_momentum, initial_rate, field_rate, b0, duration):
-    """Gyrostat (default inertia, diagonal) in a field turning about an inertial axis.
+    """½ωᵀIω of the chapter's gyrostat (default inertia) in a field turning about an inertial axis.
 
-    :func:`magbench.dynamics.gyrostat_turning_field_rhs` (its compiled twin): the field and
-    that axis carried in body axes, so no attitude is needed (``rotor_spin.md`` §9). The
-    torques are those of :func:`magbench.control.spin.projected_damping_dipole` (corrected)
-    and :func:`magbench.control.spin.slides_printed_damping_torque` (printed): −k_w w⊥ and
+    The run is :func:`magbench.sim.spinning.simulate_turning_field_gyrostat`; the torques are
+    those of :func:`magbench.control.spin.projected_damping_dipole` (corrected) and
+    :func:`magbench.control.spin.slides_printed_damping_torque` (printed): −k_w w⊥ and
     +k_w w⊥ with w = ω (the tests hold the kernel's torque to both).
     """
-    from ...dynamics.kernels import gyrostat_turning_field_rhs
-    from ...integrate import solve_adaptive
-
     inertia = default_rotor_satellite(_defaults()).inertia_matrix
-    if np.any(np.abs(inertia - np.diag(np.diag(inertia))) > 0):
-        raise ValueError("the damping-sign figure needs a principal-axes inertia")
     # the printed projection, read as a torque, is the damping torque with the sign reversed
     k = float(gain) * (1.0 if law == "corrected" else -1.0)
-    t = np.linspace(0.0, duration, 301)
-    y0 = [initial_rate] * 3 + [b0, 0.0, 0.0] + [0.0, 1.0, 0.0]
-    sol = solve_adaptive(gyrostat_turning_field_rhs, (0.0, duration), y0, t_eval=t, rtol=1e-9, atol=1e-12,
-                         method="DOP853", args=(np.diag(inertia).copy(), float(rotor_momentum), k, float(field_rate)))
-    w = sol.y[:3].T
-    return t, 0.5 * np.einsum("ni,ij,nj->n", w, inertia, w)
+    run = simulate_turning_field_gyrostat(inertia, rotor_momentum, k, field_rate, [initial_rate] * 3,
+                                          [b0, 0.0, 0.0], [0.0, 1.0, 0.0], duration)
+    w = run.states[:3].T
+    return run.time, 0.5 * np.einsum("ni,ij,nj->n", w, inertia, w)
 
 
 def compute_damping_sign(damping_gain, rotor_momentum, initial_rate, field_rate, equatorial_b, duration):
@@ -542,9 +532,9 @@ def compute_spin_relay(samples):
     if n < 8:
         raise ValueError(f"samples must be >= 8, got {shown(samples)}")
     alpha = (np.arange(n) + 0.5) * (2.0 * math.pi / n)
-    bx, by = np.cos(alpha), np.sin(alpha)
-    lx, ly = -np.sign(by), np.sign(bx)
-    torque = lx * by - ly * bx
+    # the transverse field over one turn, in units of B⊥; the law with L0 = 1, sign Δω = +1
+    field = np.stack([np.cos(alpha), np.sin(alpha), np.zeros_like(alpha)], axis=-1)
+    torque = np.cross(relay_spin_dipole(field, 1.0, 1.0), field)[:, 2]
     return FigureData("", "", "", {}, [Series("relay (7.12)", {"angle": ("deg", np.degrees(alpha)),
                                                                "torque": ("1", torque)})],
                       extra={"mean": float(np.mean(np.abs(torque)))})
