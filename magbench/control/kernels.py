@@ -94,7 +94,7 @@ def relay_dipole(field, moment, direction):
     -----
     Kovalenko (1975) §7.3, eq. (7.12). A relay without a dead zone: sign 0 is taken as
     +1 (``copysign``), so that the law commands the full dipole at every instant as the
-    source's relay does.
+    source's relay does. The checked form is :func:`magbench.control.relay_spin_dipole`.
     """
     level = np.asarray(moment) * np.asarray(direction)
     bx, by = field[..., 0], field[..., 1]
