@@ -13,7 +13,7 @@ imported on use.
 
 from .allocation import ALLOCATIONS, body_field_exact, body_field_small_angle, dipole_allocation
 from .bdot import (avanzini_giulietti_gain, bdot_dipole, bdot_dipole_projected, held_bdot_rate_limit,
-                   samsat_gain)
+                   kovalenko_detumble_time, samsat_gain)
 from .floquet import degree_of_stability, finite_difference_monodromy, floquet_multipliers
 from .gain_readings import GAIN_READINGS, gain_reading_scale
 from .linear import (closed_loop_poles, closed_loop_polynomial, critical_gain_scale,
@@ -29,7 +29,8 @@ __all__ = ["pid_step", "pid_gains_for_triple_pole", "ALLOCATIONS", "body_field_e
            "dipole_allocation", "closed_loop_polynomial", "closed_loop_poles",
            "integral_gain_limit", "critical_gain_scale", "ziegler_nichols_pid",
            "double_integrator_ultimate_gain", "GAIN_READINGS", "gain_reading_scale", "bdot_dipole",
-           "bdot_dipole_projected", "avanzini_giulietti_gain", "samsat_gain", "held_bdot_rate_limit",
+           "bdot_dipole_projected", "avanzini_giulietti_gain", "samsat_gain", "kovalenko_detumble_time",
+           "held_bdot_rate_limit",
            "rotor_program_field", "rotor_equilibrium_dipole", "rotor_equilibrium_axial_momentum",
            "rotor_spin_reference", "projected_damping_dipole", "slides_printed_damping_torque",
            "rotor_reference_momentum", "momentum_damping_dipole", "relay_spin_dipole", "floquet_multipliers",

@@ -10,7 +10,7 @@ import numpy as np
 
 from .._validate import as_finite, as_in_range, as_positive, as_positive_or_infinite, as_vectors
 
-__all__ = ["bdot_dipole", "bdot_dipole_projected", "avanzini_giulietti_gain", "samsat_gain",
+__all__ = ["bdot_dipole", "bdot_dipole_projected", "avanzini_giulietti_gain", "samsat_gain", "kovalenko_detumble_time",
            "held_bdot_rate_limit"]
 
 
@@ -139,6 +139,48 @@ def avanzini_giulietti_gain(mean_motion, geomagnetic_inclination, min_inertia):
     xi = as_in_range("geomagnetic_inclination", geomagnetic_inclination, 0.0, np.pi, unit="rad")
     j = as_positive("min_inertia", min_inertia, unit="kg·m²")
     return 2.0 * n * (1.0 + np.sin(xi)) * j
+
+
+def kovalenko_detumble_time(inertia, gain, mean_square_field, initial_rate, final_rate):
+    r"""Kovalenko's estimate of the B-dot detumbling time.
+
+    Parameters
+    ----------
+    inertia : array_like
+        Moment of inertia J about the axes being damped, > 0 [kg·m²].
+    gain : array_like
+        B-dot gain k, > 0 [A·m²·s/T].
+    mean_square_field : array_like
+        Time mean of |B|² along the orbit, > 0 [T²]
+        (:func:`magbench.earth.mean_square_field`).
+    initial_rate : array_like
+        Rate at the start ω_н, > 0 [rad/s].
+    final_rate : array_like
+        Rate to reach ω_к, > 0 [rad/s].
+
+    Returns
+    -------
+    ndarray
+        t = (J/k_д) ln(ω_н/ω_к) [s], with the damping coefficient k_д = (2/3) k ⟨B²⟩.
+
+    Notes
+    -----
+    Kovalenko (1975) eq. (6.50). The 2/3 is the mean of sin² of the angle between ω and B
+    over their relative directions (his averaging). It is unsaturated: a limited dipole
+    lengthens the time (chapter 5 sets it beside the simulated envelope).
+
+    Examples
+    --------
+    >>> round(float(kovalenko_detumble_time(0.04, 5e4, 1.2e-9, 0.1, 0.01)), 1)
+    2302.6
+    """
+    j = as_positive("inertia", inertia, unit="kg·m²")
+    k = as_positive("gain", gain, unit="A·m²·s/T")
+    b2 = as_positive("mean_square_field", mean_square_field, unit="T²")
+    w0 = as_positive("initial_rate", initial_rate, unit="rad/s")
+    w1 = as_positive("final_rate", final_rate, unit="rad/s")
+    damping = 2.0 / 3.0 * k * b2
+    return j / damping * np.log(w0 / w1)
 
 
 def samsat_gain(max_dipole, initial_rate, max_field):

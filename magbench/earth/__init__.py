@@ -10,6 +10,7 @@ from .dipole import (dipole_b, dipole_equatorial_b, dipole_from_gauss_coefficien
                      dipole_inclination, dipole_mean_surface_b, dipole_rms_surface_b, dipole_total_b,
                      dipole_vertical_b, earth_dipole_moment_vector, lowes_spectrum)
 from .orbit import orbital_dipole_b
+from .field_statistics import dipole_max_field, field_direction_rate_range, field_square_ratio, mean_square_field
 from .field_cone import (cone_field_direction, field_cone_axis, field_cone_deviation, field_cone_half_angle,
                          orbit_field_direction)
 from .igrf import (IgrfDipole, IgrfField, decimal_year_to_datetime, igrf_dipole, igrf_field,
@@ -21,4 +22,5 @@ __all__ = ["geomagnetic_latitude", "geomagnetic_longitude", "dipole_equatorial_b
            "dipole_rms_surface_b", "lowes_spectrum", "orbital_dipole_b", "IgrfDipole", "IgrfField",
            "decimal_year_to_datetime", "igrf_dipole", "igrf_field", "igrf_mean_surface_b",
            "igrf_gauss_coefficients", "CircularOrbit", "field_cone_half_angle", "field_cone_axis",
-           "orbit_field_direction", "cone_field_direction", "field_cone_deviation"]
+           "orbit_field_direction", "cone_field_direction", "field_cone_deviation", "dipole_max_field",
+           "mean_square_field", "field_square_ratio", "field_direction_rate_range"]

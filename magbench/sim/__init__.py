@@ -1,6 +1,7 @@
 """Simulations composed from the physics families: one integrator (:func:`rk4_step`), one
 result type (:class:`SimulationResult`), the mock-up's PID loop (:mod:`.pid_loop`) and the
-bench loop (:mod:`.bench`), B-dot detumbling on orbit (:mod:`.detumble`), the spinning spacecraft with a
+bench loop (:mod:`.bench`), B-dot detumbling on orbit (:mod:`.detumble`, in segments
+whose step follows the rate: :mod:`.detumble_segments`), the spinning spacecraft with a
 coaxial rotor (:mod:`.spinning`), Kovalenko's relay spin correction (:mod:`.spin_correction`)
 and the passive magnetic satellite (:mod:`.passive`).
 
@@ -9,6 +10,7 @@ spacecraft and the passive satellite; the bench loop is imported from its module
 """
 
 from .detumble import DetumbleRun, detumble_monte_carlo, detumble_time, simulate_detumble
+from .detumble_segments import DETUMBLE_STEPS, detumble_step, simulate_detumble_segments
 from ..integrate import rk4_step
 from .pid_loop import PidLoop, loop_torque, pid_continuous_rhs, simulate_pid
 from .passive import PassiveRun, PassiveSatellite, flat_spin_decay_rate, initial_passive_state, simulate_passive
@@ -20,7 +22,7 @@ from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimension
 from .spin_correction import relay_spin_correction
 
 __all__ = ["rk4_step", "SimulationResult", "PidLoop", "loop_torque", "pid_continuous_rhs", "simulate_pid", "DetumbleRun", "simulate_detumble", "detumble_time",
-           "detumble_monte_carlo",
+           "detumble_monte_carlo", "DETUMBLE_STEPS", "detumble_step", "simulate_detumble_segments",
            "PassiveSatellite", "PassiveRun", "simulate_passive", "initial_passive_state", "flat_spin_decay_rate",
            "RotorSatellite", "RotorRun", "rotor_dimensionless",
            "rotor_satellite_from_dimensionless", "rotor_normalised_rhs", "rotor_linearised_matrices",

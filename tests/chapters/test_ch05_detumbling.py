@@ -9,7 +9,10 @@ from numpy.testing import assert_allclose
 from magbench import figures
 from magbench.chapters import chapter_parameters, errata
 from magbench.chapters.ch05_detumbling import INPUTS, parameter_key, study
+from magbench.control import kovalenko_detumble_time
+from magbench.earth import dipole_max_field, mean_square_field
 from magbench.io import load_parameter_set
+from magbench.sim import simulate_detumble_segments
 
 DEG = np.pi / 180.0
 KEY = parameter_key(chapter_parameters("ch05", overrides=""))
@@ -33,7 +36,7 @@ def test_gain_rule_reproduces_the_reference_table():
     (printed to four digits: rtol 5e-4 covers their last digit)."""
     p = dict(KEY)
     orbit = study.samsat_orbit(p)
-    b_max = study.max_field(orbit)
+    b_max = dipole_max_field(orbit)
     assert_allclose(b_max * 1e6, 47.9, atol=0.05)
     data = figures.compute("samsat-fig1")
     ticks = data.series[1].columns
@@ -129,13 +132,13 @@ def test_step_of_the_envelope_runs():
 def test_kovalenko_650():
     """Shared reference §6.2: (6.50) with k_д = (2/3)k⟨B²⟩, ⟨B²⟩ = 1.188e-9 T², J = 0.0418667,
     k = 5e4 gives 2434 s from 5 °/s and 3167 s from 10 °/s (to the second)."""
-    t = study.kovalenko_650_time(0.0418667, 5e4, 1.188e-9, np.array([5.0, 10.0]) * DEG, 0.5 * DEG)
+    t = kovalenko_detumble_time(0.0418667, 5e4, 1.188e-9, np.array([5.0, 10.0]) * DEG, 0.5 * DEG)
     assert_allclose(t, [2434, 3167], atol=0.5)
     # ⟨B²⟩ along the orbit over a day, tilt and rotation included, against the closed form
     # B0²(1 + 1.5 sin² i) of a direct dipole: the tilt adds under 1 %.
     orbit = study.envelope_orbit(dict(KEY))
     b0 = 31.2e-6 * (6371 / 6871) ** 3
-    assert_allclose(study.mean_square_field(orbit), b0**2 * (1 + 1.5 * np.sin(51.6 * DEG) ** 2), rtol=0.01)
+    assert_allclose(mean_square_field(orbit), b0**2 * (1 + 1.5 * np.sin(51.6 * DEG) ** 2), rtol=0.01)
 
 
 def test_gain_sweep_against_kstar():
@@ -247,7 +250,7 @@ def test_chained_runs_continue_one_run(mode):
     q = np.array([[1.0, 0.0, 0.0, 0.0], [0.5, 0.5, 0.5, 0.5]])
     w = np.radians([[0.1, 10.0, 10.0], [3.0, -4.0, 2.0]])
     kw = dict(gain=1.7e4, max_dipole=0.2, mode=mode)
-    t, r = study.chained_detumble(study.inertia(p), orbit, q, w, 3400.0, segment=1700.0, largest_step=1.0,
+    t, r = simulate_detumble_segments(study.inertia(p), orbit, q, w, 3400.0, segment=1700.0, largest_step=1.0,
                                   rotation_per_step=10.0, **kw)
     one = study.simulate_detumble(study.inertia(p), orbit, q, w, 3400.0, step=1.0, **kw)
     assert_allclose(t, one.time)

@@ -13,6 +13,8 @@ import numpy as np
 from ..._format import format_number
 from ...compare import make_row
 from ...constants import MU_0
+from ...control import kovalenko_detumble_time
+from ...earth import dipole_max_field, mean_square_field
 from ...errata import printed_check, source_check
 from ...io import load_parameter_set, load_printed
 from .._base import Chapter, chapter_parameters
@@ -100,9 +102,9 @@ def peer_rows(params=None):
                   "IGRF-14, none of which the model has; blanking alone explains part of the difference (the "
                   "chapter runs it), that the others explain the rest is not tested")))
     first = env["first"]
-    mean_square = study.mean_square_field(env["orbit"])
+    mean_square = mean_square_field(env["orbit"])
     j = max(p["inertia_y"], p["inertia_z"])
-    estimate = study.kovalenko_650_time(j, p["envelope_gain"], mean_square, env["initial_rate"],
+    estimate = kovalenko_detumble_time(j, p["envelope_gain"], mean_square, env["initial_rate"],
                                         p["detumble_threshold"])
     rows.append(make_row(
         "ch05-kovalenko-650-median", f"Median 3U detumble time (first crossing of {threshold}), {envelope} envelope",
@@ -193,7 +195,7 @@ def formula_checks():
     kin = study.kinematics_test_state(p)
     printed_w, true_w = kin["printed"], kin["true"]
     w0 = np.array([p["initial_rate_x"], p["initial_rate_y"], p["initial_rate_z"]])
-    k = float(samsat_gain(p["max_dipole"], w0, study.max_field(orbit)))
+    k = float(samsat_gain(p["max_dipole"], w0, dipole_max_field(orbit)))
     h = orbit.field(0.0) / MU_0                       # body = inertial axes at this instant
     h_rate = -np.cross(w0, h)
     k_h = MU_0 * k

@@ -11,6 +11,8 @@ from functools import partial
 import numpy as np
 
 from .._base import chapter_parameters
+from ...control import kovalenko_detumble_time
+from ...earth import dipole_max_field, field_direction_rate_range, mean_square_field
 from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
 from ...units import DEG
 from . import parameter_key, study
@@ -62,7 +64,7 @@ def compute_fig1(**params):
     """k = L_max/(|ω₀| B_max) for ω₀ = (ωx, w, w), w over Fig. 2's axis (SS L245–253)."""
     p = {**_defaults(), **params}
     orbit = study.samsat_orbit(p)
-    b_max = study.max_field(orbit)
+    b_max = dipole_max_field(orbit)
     w = np.linspace(p["fig2_rate_min"], p["fig2_rate_max"], 81)
     ticks = study.rate_grid(p["fig2_rate_min"], p["fig2_rate_max"], p["fig2_rate_step"])
     default = study.fig1_gains(p["max_dipole"], p["initial_rate_x"], p["initial_rate_y"], b_max)
@@ -143,7 +145,7 @@ def compute_rate_decay(**params):
     for name, label in (("continuous", "continuous"), ("model", f"{_duty_label(p)}, 'model'")):
         t = d["time"][name]
         series.append(Series(label, {"time": ("s", t), "rate": ("deg/s", d["rate"][name][index, 0] / DEG)}))
-    low, mean, high = study.field_direction_rate(study.samsat_orbit(p))
+    low, mean, high = field_direction_rate_range(study.samsat_orbit(p))
     return FigureData("", "", "", {}, series, extra={"threshold": p["detumble_threshold"] / DEG,
                                                       "w": d["rates"][index] / DEG,
                                                       "field_rate": (low / DEG, mean / DEG, high / DEG)})
@@ -205,8 +207,8 @@ def compute_distribution(**params):
     p = dict(key)
     env = study.envelope_distribution(key)
     blanked = study.envelope_distribution(key, blanking=(9.0, 1.0))["held"]
-    estimate = study.kovalenko_650_time(max(p["inertia_y"], p["inertia_z"]), p["envelope_gain"],
-                                        study.mean_square_field(env["orbit"]), env["initial_rate"],
+    estimate = kovalenko_detumble_time(max(p["inertia_y"], p["inertia_z"]), p["envelope_gain"],
+                                        mean_square_field(env["orbit"]), env["initial_rate"],
                                         p["detumble_threshold"])
     return FigureData("", "", "", {}, [
         Series("simulated (held 30 s)", {"detumble_time": ("s", env["held"][np.isfinite(env["held"])]),

@@ -14,16 +14,16 @@ from scipy.spatial.transform import Rotation
 from ...constants import MU_0
 from ...control import avanzini_giulietti_gain, held_bdot_rate_limit, samsat_gain
 from ...dynamics import aerodynamic_attitude_matrix
-from ...earth import CircularOrbit
+from ...earth import CircularOrbit, dipole_max_field, field_square_ratio
 from ...estimation import magnitude_consistent, triad_attitude, triad_covariance
 from ...result_cache import cached_result
-from ...sim import detumble_monte_carlo, detumble_time, simulate_detumble
+from ...sim import (detumble_monte_carlo, detumble_step, detumble_time, simulate_detumble,
+                   simulate_detumble_segments)
 from ...units import DEG
 
-__all__ = ["samsat_orbit", "envelope_orbit", "max_field", "field_direction_rate", "mean_square_field", "fig1_gains", "duty_study",
-           "envelope_distribution", "kovalenko_650_time", "gain_sweep", "decay_rate_sweep", "basilisk_peer",
-           "printed_kinematics_rates", "printed_dipole_projection", "triad_geometry", "triad_rejection",
-           "triad_vs_align_vectors", "geopolar_b2_range", "chained_detumble"]
+__all__ = ["samsat_orbit", "envelope_orbit", "fig1_gains", "duty_study", "envelope_distribution", "gain_sweep",
+           "decay_rate_sweep", "basilisk_peer", "printed_kinematics_rates", "printed_dipole_projection", "triad_geometry", "triad_rejection",
+           "triad_vs_align_vectors", "geopolar_b2_range"]
 
 
 #: The parameters each set-up reads (the studies declare theirs from these, so that a study
@@ -63,36 +63,9 @@ def envelope_orbit(p, rotating=True):
                          earth_rotation_rate=p["earth_rotation_rate"] if rotating else 0.0)
 
 
-def field_direction_rate(orbit, days=1.0, step=5.0):
-    """Smallest, mean and largest angular rate of the field's direction b̂ in inertial
-    space, |b̂ × db̂/dt| along ``orbit`` over ``days`` [rad/s]: the rotation B-dot damps to.
-
-    On a polar orbit of a direct dipole it lies between 1.5 and 3 times the orbital rate
-    (mean 2): b̂ turns once per orbit in the orbital frame, non-uniformly, and the frame
-    turns once more."""
-    t = np.arange(0.0, days * 86400.0, step)
-    b = orbit.field(t)
-    b_hat = b / np.linalg.norm(b, axis=-1, keepdims=True)
-    rate = np.linalg.norm(np.cross(b_hat, np.gradient(b_hat, t, axis=0)), axis=-1)
-    return float(np.min(rate)), float(np.mean(rate)), float(np.max(rate))
-
-
 def inertia(p):
     """Principal moments (x long) [kg·m²]."""
     return np.array([p["inertia_x"], p["inertia_y"], p["inertia_z"]])
-
-
-def max_field(orbit):
-    """Largest |B| a dipole gives at the orbit's radius, 2·μ0M/(4πr³) (over the magnetic
-    poles; SamSat's orbit, at 97.3°, passes within a few degrees of them) [T]."""
-    return 2.0 * MU_0 * orbit.earth_moment / (4.0 * np.pi * orbit.radius**3)
-
-
-def mean_square_field(orbit, days=1.0, samples=20000):
-    """Time mean of |B|² along the orbit over ``days`` (the Earth turning under it) [T²]."""
-    t = np.linspace(0.0, days * 86400.0, samples, endpoint=False)
-    b = orbit.field(t)
-    return float(np.mean(np.sum(b * b, axis=-1)))
 
 
 def rates_vector(rate_x, w):
@@ -110,49 +83,6 @@ def rate_grid(low, high, step):
 def fig1_gains(max_dipole, rate_x, rates, b_max):
     """SamSat's gain rule k = L_max/(|ω₀| B_max) for ω₀ = (ωx, w, w) [A·m²·s/T]."""
     return samsat_gain(max_dipole, rates_vector(rate_x, rates), b_max)
-
-
-# -- detumbling in segments with a step that follows the rate ----------------------------
-
-_STEPS = (1.0, 0.5, 0.25, 0.2, 0.125, 0.1, 0.0625, 0.05)
-
-
-def _step_for(speed, largest, rotation=0.2):
-    """Largest step of :data:`_STEPS` not above ``largest`` with ≤ ``rotation`` rad per step at ``speed``."""
-    for h in _STEPS:
-        if h <= largest + 1e-12 and h * speed <= rotation:
-            return h
-    return _STEPS[-1]
-
-
-def chained_detumble(inertia_, orbit, attitude, rate, duration, *, segment=1700.0, largest_step=1.0,
-                     threshold=None, rotation_per_step=0.2, **options):
-    """:func:`magbench.sim.simulate_detumble` in segments, each with the largest step that
-    keeps the rotation per RK4 step ≤ 0.2 rad at the current largest |ω| (the shared
-    reference §7), stopping once every member's |ω| has fallen to ``threshold``.
-
-    ``segment`` must be a whole number of duty cycles (1700 s = 100 × 17 s) so that a
-    duty-cycled run continues in phase; the orbit phase and the pole's longitude are
-    carried over. Returns (time (K,), rate (M, K)) at 1 s records.
-    """
-    q, w = np.atleast_2d(attitude), np.atleast_2d(rate)
-    times, rates = [np.zeros(1)], [np.linalg.norm(w, axis=-1)[:, None]]
-    elapsed = 0.0
-    while elapsed < duration - 1e-9:
-        span = min(segment, duration - elapsed)
-        speed = float(np.max(np.linalg.norm(w, axis=-1)))
-        h = _step_for(speed, largest_step, rotation_per_step)
-        run = simulate_detumble(inertia_, orbit, q, w, span, step=h, **options)
-        times.append(elapsed + run.time[1:])
-        rates.append(run.rate[:, 1:])
-        elapsed += run.time[-1]
-        q, w = run.attitude, run.omega
-        orbit = replace(orbit, argument_of_latitude0=orbit.argument_of_latitude0 + orbit.mean_motion * run.time[-1],
-                        dipole_longitude=orbit.dipole_longitude + orbit.earth_rotation_rate * run.time[-1])
-        if threshold is not None and np.all(np.any(rates[-1] <= threshold, axis=-1)
-                                            | np.any(np.concatenate(rates[:-1], axis=-1) <= threshold, axis=-1)):
-            break
-    return np.concatenate(times), np.concatenate(rates, axis=-1)
 
 
 def _members(members, seed, orbit):
@@ -183,7 +113,7 @@ def duty_study(params, estimators=("model",), rates=None, members=None, duration
             else np.asarray(rates, dtype=float))
     n = int(p["fig2_members"] if members is None else members)
     attitude, phase = _members(n, p["fig2_seed"], orbit)
-    k = float(fig1_gains(p["max_dipole"], p["initial_rate_x"], p["initial_rate_y"], max_field(orbit))[0])
+    k = float(fig1_gains(p["max_dipole"], p["initial_rate_x"], p["initial_rate_y"], dipole_max_field(orbit))[0])
     w0 = rates_vector(p["initial_rate_x"], np.repeat(grid, n))
     q0 = np.tile(attitude, (grid.size, 1))
     many = replace(orbit, argument_of_latitude0=np.tile(phase, grid.size))
@@ -196,7 +126,7 @@ def duty_study(params, estimators=("model",), rates=None, members=None, duration
         # printed 1 s off time, never more than the off time (0.5 s crashed: found by the sweep).
         largest = (1.0 if name == "continuous" else min(1.0, p["off_time"]) if name == "model"
                    else p["off_time"] / 4.0)
-        t, r = chained_detumble(inertia(p), many, q0, w0, duration, gain=k, max_dipole=p["max_dipole"],
+        t, r = simulate_detumble_segments(inertia(p), many, q0, w0, duration, gain=k, max_dipole=p["max_dipole"],
                                 largest_step=largest, threshold=threshold, rotation_per_step=rotation_per_step,
                                 **kw)
         times = detumble_time(t, r, threshold).reshape(grid.size, n)
@@ -237,13 +167,6 @@ def envelope_distribution(params, members=None, step=None, dwell=30.0, blanking=
             "first": detumble_time(run.time, run.rate, threshold),
             "held": detumble_time(run.time, run.rate, threshold, dwell), "dwell": dwell,
             "final_rate": run.rate[:, -1], "orbit": orbit, "step": run.inputs["step"]}
-
-
-def kovalenko_650_time(inertia_, gain, mean_square, initial_rate, final_rate):
-    """Kovalenko (1975) eq. (6.50), t = (J/k_д) ln(ω_н/ω_к), with the B-dot damping
-    coefficient k_д = (2/3) k ⟨B²⟩ (⟨sin²⟩ = 2/3 over relative directions of ω and B) [s]."""
-    damping = 2.0 / 3.0 * gain * mean_square
-    return inertia_ / damping * np.log(np.asarray(initial_rate) / final_rate)
 
 
 def _gain_runs(p, ratios, members, initial_rate, duration, max_dipole):
@@ -370,12 +293,9 @@ def printed_dipole_projection(gain_h, field_h, field_h_rate):
     return -gain_h * np.cross(field_h_rate, field_h)
 
 
-def geopolar_b2_range(orbit_radius, moment, samples=3601):
+def geopolar_b2_range(orbit_radius, moment):
     """max |B|²/min |B|² over one circular polar orbit of a direct dipole (Kovalenko p. 99)."""
-    orbit = CircularOrbit(orbit_radius, np.pi / 2, moment)
-    t = np.linspace(0.0, orbit.period, samples)
-    b2 = np.sum(orbit.field(t) ** 2, axis=-1)
-    return float(np.max(b2) / np.min(b2))
+    return field_square_ratio(CircularOrbit(orbit_radius, np.pi / 2, moment))
 
 
 # -- TRIAD ---------------------------------------------------------------------------------
@@ -503,10 +423,10 @@ def duty_damping(params, span=1020.0):
     grid = rate_grid(p["fig2_rate_min"], p["fig2_rate_max"], p["fig2_rate_step"])
     n = int(p["fig2_members"])
     attitude, phase = _members(n, p["fig2_seed"], orbit)
-    k = float(fig1_gains(p["max_dipole"], p["initial_rate_x"], p["initial_rate_y"], max_field(orbit))[0])
+    k = float(fig1_gains(p["max_dipole"], p["initial_rate_x"], p["initial_rate_y"], dipole_max_field(orbit))[0])
     w0 = rates_vector(p["initial_rate_x"], np.repeat(grid, n))
     many = replace(orbit, argument_of_latitude0=np.tile(phase, grid.size))
-    h = _step_for(float(np.max(np.linalg.norm(w0, axis=-1))), p["off_time"] / 4.0)
+    h = detumble_step(float(np.max(np.linalg.norm(w0, axis=-1))), p["off_time"] / 4.0)
     drops = {}
     for name in ("continuous", "model", "hold", "propagate"):
         kw = (dict(mode="continuous") if name == "continuous" else
