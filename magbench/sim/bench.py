@@ -29,14 +29,17 @@ members (every state is an array of shape ``(members,)``):
 6. **Plant**: J ψ̈ = τ_coils + τ_thread, with τ_coils from thesis eq. (36) held over
    the sample (zero-order hold) and the thread's torsion τ_thread = −κ(ψ − ψ_thread):
    :func:`magbench.dynamics.mockup_rhs` of the setup's :attr:`BenchSetup.plant`. One
-   :func:`magbench.sim.rk4_step` per sample; :func:`simulate_bench_reference` integrates
+   :func:`magbench.integrate.rk4_step` per sample; :func:`simulate_bench_reference` integrates
    the same plant after the same :func:`controller_step` with
    :func:`scipy.integrate.solve_ivp` instead, as an oracle.
 
 ψ is the angle from the horizontal field to coil 1's axis, counted positive in the
 sense of the gyro's vertical axis. The field B0 is the magnitude of the horizontal
 field the mock-up sees; :func:`horizontal_field` combines the simulator's field with a
-horizontal background (the Earth's) at a given azimuth.
+horizontal background (the Earth's) at a given azimuth. That function, the coils'
+full-scale moment, the PWM duty and the plant's step are physics and live in their
+families (:mod:`magbench.fields`, :mod:`magbench.hardware`, :mod:`magbench.dynamics`);
+they are re-exported here.
 
 The thesis's gains (K_p = 0.1, K_d = 0.5, K_i = 0.5, thesis §4.4) make the loop
 unstable when read in SI (the thesis states no units for them; see
@@ -49,10 +52,11 @@ from functools import cached_property
 
 import numpy as np
 
-from .. import control, estimation, hardware
+from .. import control, estimation
 from .._validate import as_count, as_finite, as_in_range, as_nonnegative, as_positive, check_member_steps, shown
-from ..constants import MU_0
-from ..dynamics.pendulum import Mockup, mockup_rhs
+from ..dynamics.pendulum import Mockup, mockup_rhs, plant_step
+from ..fields.systems import horizontal_field
+from ..hardware.driver import coil_full_scale_moment, quantise_duty
 from ..rotations import wrap_angle
 from ..integrate import rk4_step, solve_adaptive
 from .result import SimulationResult
@@ -161,164 +165,6 @@ class BenchSetup:
     def moment_limit(self):
         """Largest moment the controller commands: the weaker coil's full scale [A·m²]."""
         return float(np.min(self.full_scale_moments))
-
-
-def horizontal_field(simulator_h, background_h=0.0, background_azimuth=0.0):
-    r"""Magnitude of the horizontal flux density the mock-up sees.
-
-    Parameters
-    ----------
-    simulator_h : array_like
-        Field strength of the simulator at the centre [A/m] (the thesis measured 262 A/m,
-        designed for 250 A/m).
-    background_h : array_like, optional
-        Horizontal background field strength, e.g. the Earth's [A/m]; default 0.
-    background_azimuth : array_like, optional
-        Angle from the simulator's axis to the background's horizontal direction [rad].
-
-    Returns
-    -------
-    ndarray
-        :math:`B_0 = \mu_0\,|H_s\hat x + H_b(\cos\beta, \sin\beta)|` [T].
-
-    Notes
-    -----
-    Not in the thesis: it states neither how the simulator was oriented relative to the
-    Earth's field nor whether the measured 262 A/m includes it. The
-    angle ψ is then counted from this total horizontal field, which is also what the
-    magnetometer measures, so the background only changes the loop gain.
-
-    Examples
-    --------
-    >>> round(float(horizontal_field(262.0)) * 1e6, 2)
-    329.24
-    """
-    hs = as_positive("simulator_h", simulator_h, unit="A/m")
-    hb = as_nonnegative("background_h", background_h, unit="A/m")
-    beta = as_finite("background_azimuth", background_azimuth)
-    return MU_0 * np.hypot(hs + hb * np.cos(beta), hb * np.sin(beta))
-
-
-def coil_full_scale_moment(voltage, resistance, turns, side):
-    r"""Dipole moment of a square magnetorquer at full drive, from its measured resistance.
-
-    Parameters
-    ----------
-    voltage : array_like
-        Voltage across the coil [V].
-    resistance : array_like
-        The coil's measured resistance R [Ω] (the thesis: ≈ 55 Ω).
-    turns : array_like
-        Number of turns N [-].
-    side : array_like
-        Side of the square turn l [m].
-
-    Returns
-    -------
-    ndarray
-        m = N (U/R) l² [A·m²], through :func:`magbench.hardware.coil_current` and
-        :func:`magbench.hardware.dipole_moment`.
-
-    Notes
-    -----
-    Thesis eq. (17)–(18) with the measured resistance (thesis §3.3): 0.524 A·m² for
-    12 V, 55 Ω, N = 240, l = 0.1 m. If the extra 1.5 Ω were extra turns (the thesis's
-    explanation), eq. (20) would give 0.539 A·m² whatever N; the Monte Carlo's ±5 %
-    moment spread covers the difference.
-
-    Examples
-    --------
-    >>> round(float(coil_full_scale_moment(12.0, 55.0, 240, 0.1)), 4)
-    0.5236
-    """
-    r = as_positive("resistance", resistance, unit="Ω")
-    n = as_positive("turns", turns)
-    current = hardware.coil_current(voltage, r / n, n)
-    return hardware.dipole_moment(current, n, hardware.turn_area(side, "square"))
-
-
-def quantise_duty(duty, levels):
-    r"""Signed PWM duty as the Arduino's ``analogWrite`` and the L298 deliver it.
-
-    Parameters
-    ----------
-    duty : array_like
-        Requested duty in [−1, 1] [-]; the sign selects the L298's bridge direction.
-    levels : int
-        Duty steps each way [-]: 255 for ``analogWrite``'s 8 bits; 0 for no quantisation.
-
-    Returns
-    -------
-    ndarray
-        sign(d)·round(|d|·levels)/levels [-] (round half to even, as numpy rounds; the
-        firmware's rounding is not known).
-
-    Notes
-    -----
-    Not in the thesis: it names the L298 module (thesis §4.2) but not the resolution.
-
-    Examples
-    --------
-    >>> quantise_duty([0.5, -0.001, 0.003], 255).round(6).tolist()
-    [0.501961, -0.0, 0.003922]
-    """
-    d = np.asarray(duty, dtype=float)
-    if np.ndim(levels) == 0 and not levels:
-        return d
-    steps = np.asarray(levels, dtype=float)
-    if np.any(~np.isfinite(steps) | (steps < 1) | (steps != np.rint(steps))):
-        bad = steps[~np.isfinite(steps) | (steps < 1) | (steps != np.rint(steps))].ravel()[0]
-        raise ValueError(f"levels must be a whole number of duty steps >= 1, or 0 for none, got {shown(bad)}")
-    return np.rint(d * steps) / steps
-
-
-def plant_step(psi, rate, moment_1, moment_2, dt, *, field, inertia, thread_stiffness=0.0,
-               thread_neutral_angle=0.0):
-    r"""Advance the mock-up by one sample with the coil moments held (classical RK4).
-
-    Parameters
-    ----------
-    psi : array_like
-        Angle from the field to coil 1's axis [rad].
-    rate : array_like
-        Rate ω about the vertical [rad/s].
-    moment_1, moment_2 : array_like
-        Moments of coil 1 and coil 2, held over the step [A·m²].
-    dt : float
-        Step [s].
-    field : array_like
-        Horizontal field B0 [T].
-    inertia : array_like
-        Moment of inertia J about the vertical [kg·m²].
-    thread_stiffness : array_like, optional
-        Torsion constant κ of the thread [N·m/rad].
-    thread_neutral_angle : array_like, optional
-        Angle at which the thread is untwisted [rad].
-
-    Returns
-    -------
-    psi, rate : ndarray
-        State after the step [rad], [rad/s].
-
-    Notes
-    -----
-    Thesis eq. (36), J ω̇ = −B0(m1 sin ψ + m2 cos ψ), plus the torsion −κ(ψ − ψ_thread)
-    that the thesis names as a cause of the bench's error (thesis §4.4) but does not
-    quantify: :func:`magbench.dynamics.mockup_rhs` advanced by
-    :func:`magbench.sim.rk4_step`, the step :func:`simulate_bench` takes at every
-    sample. The local error is O((ω_n dt)⁵) with ω_n ≈ 0.2 rad/s: ~1e-14 rad per 10 ms
-    step.
-
-    Examples
-    --------
-    >>> p, w = plant_step(0.0, 0.0, 0.0, 0.4, 0.01, field=3e-4, inertia=0.005)
-    >>> round(float(w), 8)   # torque -B0 m2 = -1.2e-4 N m for 10 ms
-    -0.00024
-    """
-    plant = Mockup(inertia, field, thread_stiffness=thread_stiffness, thread_neutral_angle=thread_neutral_angle)
-    state = np.array(np.broadcast_arrays(psi, rate), dtype=float)
-    new = rk4_step(mockup_rhs, 0.0, state, dt, args=((moment_1, moment_2), plant))
-    return new[0], new[1]
 
 
 def draw_sensor_errors(setup, steps, members, rng):
