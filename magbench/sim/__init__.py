@@ -1,10 +1,10 @@
 """Simulations composed from the physics families: one integrator (:func:`rk4_step`), one
 result type (:class:`SimulationResult`), the mock-up's PID loop (:mod:`.pid_loop`) and the
-bench loop (:mod:`.bench`), B-dot detumbling on orbit (:mod:`.detumble`), the spinning spacecraft with a
+bench loop (the :mod:`.bench` package), B-dot detumbling on orbit (:mod:`.detumble`), the spinning spacecraft with a
 coaxial rotor (:mod:`.spinning`) and the passive magnetic satellite (:mod:`.passive`).
 
 Re-exports the integrator, the result type, the mock-up's PID loop, detumbling, the spinning
-spacecraft and the passive satellite; the bench loop is imported from its module.
+spacecraft and the passive satellite; the bench loop is imported from its package.
 """
 
 from .detumble import DetumbleRun, detumble_monte_carlo, detumble_time, simulate_detumble

@@ -1,4 +1,4 @@
-r"""Compiled (numba) twin of :func:`magbench.sim.simulate_bench`'s sample loop: sensors,
+r"""Compiled (numba) twin of :func:`magbench.sim.bench.simulate_bench`'s sample loop: sensors,
 filter, PID, allocation, PWM and the plant's RK4 step, members on the contiguous axis.
 
 Why compiled: a sample of the numpy loop is ~150 small array operations, and at the bench's
