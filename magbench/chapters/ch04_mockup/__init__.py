@@ -214,7 +214,10 @@ CHAPTER = Chapter(
     short_title="the mock-up and the bench",
     pages=("book/ch04-mockup", "book/ch04-estimation", "book/ch04-bench", "book/ch04-budget"), source="thesis",
     inputs=INPUTS,
-    figure_modules=("magbench.chapters.ch04_mockup.figures", "magbench.chapters.ch04_mockup.figures_estimation", "magbench.chapters.ch04_mockup.figures_bench",
+    # figures_pid right after figures: the concordance lists a chapter's figures module by
+    # module, and thesis Figs. 15–18 then keep their place after Fig. 14.
+    figure_modules=("magbench.chapters.ch04_mockup.figures", "magbench.chapters.ch04_mockup.figures_pid",
+                    "magbench.chapters.ch04_mockup.figures_estimation", "magbench.chapters.ch04_mockup.figures_bench",
                     "magbench.chapters.ch04_mockup.figures_budget"),
     comparisons=_rows,
     row_kinds=(("bench-error-", "measurement"), ("bench-budget-", "consistency")),
