@@ -221,8 +221,8 @@ class _CompiledLoop:
             # numpy's arctan2, not the C library's: they differ in the last bit (see the kernel)
             heading = np.arctan2(-self.bxy[1], self.bxy[0])
             control_and_step(k, heading, self.gyro, self.bxy, state, self.member, self.present, self.setup,
-                             self.estimate, self.integral, self.commanded, self.applied, r.band, r.band_est,
-                             r.first_in_window, r.every, r.states, r.moments, r.estimates)
+                             (self.estimate, self.integral, r.band, r.band_est), (self.commanded, self.applied),
+                             (r.states, r.moments, r.estimates), (r.first_in_window, r.every))
         return state
 
 
