@@ -31,26 +31,23 @@ from dataclasses import replace  # noqa: E402
 import numpy as np  # noqa: E402
 
 import magbench  # noqa: E402
-from magbench import bench  # noqa: E402
+from magbench.sim import bench  # noqa: E402
 from magbench.params import chapter_parameters  # noqa: E402
 
 
 def _mc(setup, p, members, seed):
     return bench.monte_carlo(setup, np.pi / 3, members=members, seed=seed, duration=p["bench_duration"],
-                             moment_tolerance=p["bench_moment_tolerance"],
-                             release_angle_spread=p["bench_release_angle_spread"],
-                             release_rate_std=p["bench_release_rate_std"],
-                             thread_stiffness_factor=p["bench_thread_stiffness_factor"],
+                             dispersion=bench.BenchDispersion.from_parameters(p),
                              record_interval=0.1, window=p["bench_error_window"])
 
 
 def _agreement(setup, p, duration):
     steps = int(round(duration / setup.sample_interval))
     g, m = bench.draw_sensor_errors(setup, steps, 1, np.random.default_rng(7))
-    kwargs = dict(duration=duration, release_angle=-0.3, release_rate=0.01, moment_scale=[1.03, 0.97],
-                  thread_stiffness=p["bench_thread_stiffness"])
-    vec = bench.simulate_bench(setup, np.pi / 3, sensor_errors=(g, m), **kwargs)
-    ref = bench.simulate_bench_reference(setup, np.pi / 3, sensor_errors=(g[:, 0], m[:, 0]), **kwargs)
+    kwargs = dict(duration=duration, release_angle=-0.3, release_rate=0.01)
+    spread = dict(moment_scale=[1.03, 0.97], thread_stiffness=p["bench_thread_stiffness"])
+    vec = bench.simulate_bench(setup, np.pi / 3, sensor_errors=(g, m), errors=bench.BenchErrors(**spread), **kwargs)
+    ref = bench.simulate_bench_reference(setup, np.pi / 3, sensor_errors=(g[:, 0], m[:, 0]), **kwargs, **spread)
     psi, omega = ref.psi, ref.rate
     return float(np.max(np.abs(vec.psi[:, 0] - psi))), float(np.max(np.abs(vec.rate[:, 0] - omega)))
 

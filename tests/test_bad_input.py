@@ -64,20 +64,22 @@ def _bench():
     return BenchSetup.from_parameters({k: p.value_si for k, p in load_parameter_set("thesis").items()})
 
 
-MC = dict(seed=1, duration=1.0, moment_tolerance=0.05, release_angle_spread=0.5, release_rate_std=0.01,
-          thread_stiffness_factor=3.0, window=0.5)
+MC = dict(seed=1, duration=1.0, window=0.5)
+SPREAD = dict(moment_tolerance=0.05, release_angle_spread=0.5, release_rate_std=0.01, thread_stiffness_factor=3.0)
 
 
 def test_monte_carlo_refuses_a_fractional_count_and_an_unbounded_run():
-    from magbench.sim.bench import monte_carlo
+    from magbench.sim.bench import BenchDispersion, monte_carlo
+
+    spread = BenchDispersion(**SPREAD)
 
     # (was) 1.5 members computed one member
     with pytest.raises(ValueError, match=r"members must be a whole number >= 1, got 1.5"):
-        monte_carlo(_bench(), 1.0, members=1.5, **MC)
+        monte_carlo(_bench(), 1.0, members=1.5, dispersion=spread, **MC)
     # (was) members=1e9 ran for minutes before running out of memory; now refused before any work
     with pytest.raises(ValueError, match=r"members × steps = 1000000000 × \d+ = .* exceeds 1e\+09 member-steps"):
-        monte_carlo(_bench(), 1.0, members=1e9, **MC)
-    assert monte_carlo(_bench(), 1.0, members=2, **MC).psi.shape[-1] == 2      # (time, members)
+        monte_carlo(_bench(), 1.0, members=1e9, dispersion=spread, **MC)
+    assert monte_carlo(_bench(), 1.0, members=2, dispersion=spread, **MC).psi.shape[-1] == 2      # (time, members)
 
 
 def test_detumble_refuses_an_unbounded_run():

@@ -1,7 +1,7 @@
 r"""The mock-up on a thread (thesis §4.1, eqs. 33–36): its geometry (3-1-3 Euler angles,
 centre of mass below the suspension point), the one-degree-of-freedom equations as
-``solve_ivp`` right-hand sides, and the exact period of the magnetic pendulum beside
-the small-angle thesis eq. (14). SI.
+``solve_ivp`` right-hand sides and one held-moment sample of the bench (:func:`plant_step`),
+and the exact period of the magnetic pendulum beside the small-angle thesis eq. (14). SI.
 """
 
 from dataclasses import dataclass
@@ -9,11 +9,13 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.special import ellipk
 
+from ..integrate import rk4_step
 from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, shown
 
 __all__ = ["two_coil_torque", "Mockup", "euler_313_matrix", "thread_center_of_mass", "body_rates_313",
            "pendulum_rhs", "two_coil_rhs", "mockup_rhs", "pendulum_energy", "natural_frequency",
-           "small_angle_period", "pendulum_period", "pendulum_peak_rate", "field_for_period", "amplitude_for_period"]
+           "small_angle_period", "pendulum_period", "pendulum_peak_rate", "field_for_period", "amplitude_for_period",
+           "plant_step"]
 
 
 def two_coil_torque(psi, moment_1, moment_2, field):
@@ -541,3 +543,52 @@ def amplitude_for_period(period, inertia, moment, field):
     # T grows monotonically from T0 at 0 to infinity at π: a bracketing root finder is safe.
     return brentq(lambda a: float(pendulum_period(a, inertia, moment, field)) - t,
                   0.0, np.nextafter(np.pi, 0.0), xtol=1e-14, rtol=1e-14)
+
+
+def plant_step(psi, rate, moment_1, moment_2, dt, *, field, inertia, thread_stiffness=0.0,
+               thread_neutral_angle=0.0):
+    r"""Advance the mock-up by one sample with the coil moments held (classical RK4).
+
+    Parameters
+    ----------
+    psi : array_like
+        Angle from the field to coil 1's axis [rad].
+    rate : array_like
+        Rate ω about the vertical [rad/s].
+    moment_1, moment_2 : array_like
+        Moments of coil 1 and coil 2, held over the step [A·m²].
+    dt : float
+        Step [s].
+    field : array_like
+        Horizontal field B0 [T].
+    inertia : array_like
+        Moment of inertia J about the vertical [kg·m²].
+    thread_stiffness : array_like, optional
+        Torsion constant κ of the thread [N·m/rad].
+    thread_neutral_angle : array_like, optional
+        Angle at which the thread is untwisted [rad].
+
+    Returns
+    -------
+    psi, rate : ndarray
+        State after the step [rad], [rad/s].
+
+    Notes
+    -----
+    Thesis eq. (36), J ω̇ = −B0(m1 sin ψ + m2 cos ψ), plus the torsion −κ(ψ − ψ_thread)
+    that the thesis names as a cause of the bench's error (thesis §4.4) but does not
+    quantify: :func:`magbench.dynamics.mockup_rhs` advanced by
+    :func:`magbench.integrate.rk4_step`, the step :func:`magbench.sim.bench.simulate_bench`
+    takes at every sample. The local error is O((ω_n dt)⁵) with ω_n ≈ 0.2 rad/s: ~1e-14 rad per 10 ms
+    step.
+
+    Examples
+    --------
+    >>> p, w = plant_step(0.0, 0.0, 0.0, 0.4, 0.01, field=3e-4, inertia=0.005)
+    >>> round(float(w), 8)   # torque -B0 m2 = -1.2e-4 N m for 10 ms
+    -0.00024
+    """
+    plant = Mockup(inertia, field, thread_stiffness=thread_stiffness, thread_neutral_angle=thread_neutral_angle)
+    state = np.array(np.broadcast_arrays(psi, rate), dtype=float)
+    new = rk4_step(mockup_rhs, 0.0, state, dt, args=((moment_1, moment_2), plant))
+    return new[0], new[1]

@@ -9,7 +9,8 @@ Re-exports the public functions of its modules.
 """
 
 from .decay_fit import DecayFit, corrected_aic, fit_exponential_decay, fit_linear_decay
-from .complementary import complementary_filter, complementary_filter_step, complementary_time_constant
+from .complementary import (complementary_filter, complementary_filter_step, complementary_time_constant,
+                            gyro_offset_error)
 from .heading import magnetometer_heading
 from .triad import (magnitude_consistent, samsat_triad_frame, triad_attitude, triad_covariance,
                     vectors_well_separated)
@@ -17,7 +18,7 @@ from .tilt import accelerometer_tilt, complementary_tilt, rest_gyro_bias, strapd
 from .offline import offline_tilt, two_sided_rest
 
 __all__ = [
-    "complementary_filter", "complementary_filter_step", "complementary_time_constant",
+    "complementary_filter", "complementary_filter_step", "complementary_time_constant", "gyro_offset_error",
     "accelerometer_tilt", "strapdown_orientation", "rest_gyro_bias", "complementary_tilt",
     "offline_tilt", "two_sided_rest",
     "magnetometer_heading", "triad_attitude", "samsat_triad_frame", "triad_covariance",

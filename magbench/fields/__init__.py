@@ -1,5 +1,6 @@
 """What produces a magnetic field: thin circular and square loops, coil pairs and
-systems of coils, and how uniform their field is. Pure functions of numpy arrays, SI.
+systems of coils, how uniform their field is, and the horizontal field at the bench.
+Pure functions of numpy arrays, SI.
 
 Re-exports the public functions of its modules: ``from magbench.fields import loop_b``.
 """
@@ -9,7 +10,8 @@ from .pair import (helmholtz_ampere_turns, helmholtz_b, helmholtz_center_h, pair
                    planar_pair_center_h)
 from .square import square_loop_axial_b, square_loop_b, square_pair_spacing
 from .systems import (SPHERE_DIRECTIONS, coaxial_system_b, coaxial_system_cylinder_nonuniformity, coaxial_system_sphere_nonuniformity,
-                      coaxial_system_uniform_radius, three_axis_pair_b, three_axis_pair_currents)
+                      coaxial_system_uniform_radius, horizontal_field, three_axis_pair_b,
+                      three_axis_pair_currents)
 from .uniformity import (cylinder_nonuniformity, optimal_separation, pair_distance_to_h, sphere_nonuniformity,
                          uniform_cylinder, uniform_sphere_radius, uniform_zone_length)
 
@@ -19,4 +21,4 @@ __all__ = ["SPHERE_DIRECTIONS", "loop_b", "loop_b_posed", "helmholtz_b", "helmho
            "coaxial_system_sphere_nonuniformity", "coaxial_system_cylinder_nonuniformity",
            "coaxial_system_uniform_radius", "sphere_nonuniformity", "cylinder_nonuniformity",
            "uniform_sphere_radius", "uniform_cylinder", "optimal_separation", "pair_distance_to_h",
-           "uniform_zone_length"]
+           "uniform_zone_length", "horizontal_field"]

@@ -1,20 +1,22 @@
 """Systems of coils: three orthogonal pairs, and coaxial systems of circles and squares.
 
 Kovalenko (1975) §3.4 (Maxwell's, Rubens' and the four-coil systems) and the thesis's
-ref. [1] (three-axis simulators). SI throughout.
+ref. [1] (three-axis simulators), and the horizontal field a simulator and a background
+make together at the bench (thesis §4.4). SI throughout.
 """
 
 import numpy as np
 from scipy import optimize
 
-from .._validate import as_finite, as_positive, as_vectors, shown
+from ..constants import MU_0
+from .._validate import as_finite, as_nonnegative, as_positive, as_vectors, shown
 from ._inputs import _center, _nonnegative_scalar, _positive_scalar
 from .loop import loop_b_posed
 from .square import square_loop_b
 
 __all__ = ["SPHERE_DIRECTIONS", "three_axis_pair_b", "three_axis_pair_currents", "coaxial_system_b",
            "coaxial_system_sphere_nonuniformity", "coaxial_system_cylinder_nonuniformity",
-           "coaxial_system_uniform_radius"]
+           "coaxial_system_uniform_radius", "horizontal_field"]
 
 
 def _pair_axes(axes):
@@ -376,3 +378,39 @@ def coaxial_system_uniform_radius(shapes, sizes, positions, ampere_turns, tolera
     j = above[0]
     lo = grid[j - 1] if j > 0 else 0.0
     return float(optimize.brentq(lambda t: float(dev(t)) - tol, lo, grid[j], xtol=1e-10))
+
+
+def horizontal_field(simulator_h, background_h=0.0, background_azimuth=0.0):
+    r"""Magnitude of the horizontal flux density the mock-up sees.
+
+    Parameters
+    ----------
+    simulator_h : array_like
+        Field strength of the simulator at the centre [A/m] (the thesis measured 262 A/m,
+        designed for 250 A/m).
+    background_h : array_like, optional
+        Horizontal background field strength, e.g. the Earth's [A/m]; default 0.
+    background_azimuth : array_like, optional
+        Angle from the simulator's axis to the background's horizontal direction [rad].
+
+    Returns
+    -------
+    ndarray
+        :math:`B_0 = \mu_0\,|H_s\hat x + H_b(\cos\beta, \sin\beta)|` [T].
+
+    Notes
+    -----
+    Not in the thesis: it states neither how the simulator was oriented relative to the
+    Earth's field nor whether the measured 262 A/m includes it. The
+    angle ψ is then counted from this total horizontal field, which is also what the
+    magnetometer measures, so the background only changes the loop gain.
+
+    Examples
+    --------
+    >>> round(float(horizontal_field(262.0)) * 1e6, 2)
+    329.24
+    """
+    hs = as_positive("simulator_h", simulator_h, unit="A/m")
+    hb = as_nonnegative("background_h", background_h, unit="A/m")
+    beta = as_finite("background_azimuth", background_azimuth)
+    return MU_0 * np.hypot(hs + hb * np.cos(beta), hb * np.sin(beta))

@@ -1,6 +1,7 @@
 """Hardware that makes or measures a field: turns and wires, air-core magnetorquers and
-their design space, windings, cored rods and electromagnets, permanent magnets, hysteresis rods, and the
-sensors (datasheet error models).
+their design space, the bench's coil driver (full-scale moment, PWM duty), windings, cored
+rods and electromagnets, permanent magnets, hysteresis rods, and the sensors (datasheet
+error models).
 
 Pure functions of numpy arrays, SI. Re-exports the public functions of its modules.
 """
@@ -17,6 +18,7 @@ from .magnetorquer import (coil_current, coil_mass, coil_mass_for_moment, coil_r
                            turn_resistance, turns_from_resistance, turns_from_winding_length,
                            turns_per_volt_bounds, winding_density, winding_length,
                            wire_area_for_moment, wire_diameter_from_resistance)
+from .driver import coil_full_scale_moment, quantise_duty
 from .coil_design import binding_limit, coil_designs, design_magnetorquer
 from .cores import (core_central_magnetization, effective_permeability, electromagnet_design,
                     field_for_magnetization, magnetization_curve, rod_demagnetizing_factor)
@@ -34,7 +36,7 @@ __all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_r
            "turns_from_winding_length", "winding_length", "joule_power_for_winding_length", "coil_mass",
            "coil_mass_for_moment", "mass_power_product", "winding_density", "mass_power_product_kovalenko",
            "supply_voltage", "turns_per_volt_bounds", "turns_from_resistance",
-           "wire_diameter_from_resistance", "coil_designs", "binding_limit",
+           "wire_diameter_from_resistance", "coil_full_scale_moment", "quantise_duty", "coil_designs", "binding_limit",
            "design_magnetorquer", "rod_demagnetizing_factor", "effective_permeability",
            "magnetization_curve", "field_for_magnetization", "core_central_magnetization",
            "electromagnet_design", "magnet_torque_per_mass", "magnet_mass_for_torque",

@@ -48,9 +48,10 @@ def closed_form_runs(setup):
     mis = np.zeros(m); mis[3:5] = delta
     off = np.zeros((m, 2)); off[5:7, 0] = o
     mat = np.tile(np.eye(2), (m, 1, 1)); mat[7:9, 0, 0] = 1 + s; mat[7:9, 1, 1] = 1 - s
-    run = bench.simulate_bench(setup, targets, release_angle=targets, gyro_offset=gyro,
-                               magnetometer_misalignment=mis, magnetometer_offset=off,
-                               magnetometer_matrix=mat, record_interval=RUN["duration"], **RUN)
+    errors = bench.BenchErrors(gyro_offset=gyro, magnetometer_misalignment=mis, magnetometer_offset=off,
+                               magnetometer_matrix=mat)
+    run = bench.simulate_bench(setup, targets, release_angle=targets, errors=errors,
+                               record_interval=RUN["duration"], **RUN)
     return dict(run=run, b=b, delta=delta, o=o, s=s, targets=targets)
 
 
@@ -106,12 +107,13 @@ def test_explicit_zero_errors_reproduce_the_nominal_model_exactly(setup):
     """Every error source at its no-error value: bit-identical to the run without them."""
     kw = dict(duration=5.0, window=1.0, release_angle=[0.0, 0.5], record_interval=0.5)
     a = bench.simulate_bench(setup, np.pi / 3, rng=np.random.default_rng(5), **kw)
-    z = bench.simulate_bench(
-        setup, np.pi / 3, rng=np.random.default_rng(5), gyro_offset=0.0, gyro_drift=0.0,
+    zero = bench.BenchErrors(
+        moment_scale=[1.0, 1.0], thread_stiffness=setup.thread_stiffness, gyro_offset=0.0, gyro_drift=0.0,
         magnetometer_offset=[0.0, 0.0], magnetometer_matrix=np.eye(2), magnetometer_misalignment=0.0,
         heading_ripple=0.0, coil_misalignment=[0.0, 0.0], coil_field_coupling=0.0, field_scale=1.0,
         field_azimuth=0.0, thread_neutral_angle=setup.thread_neutral_angle,
-        filter_coefficient=setup.filter_coefficient, pwm_levels=setup.pwm_levels, **kw)
+        filter_coefficient=setup.filter_coefficient, pwm_levels=setup.pwm_levels)
+    z = bench.simulate_bench(setup, np.pi / 3, rng=np.random.default_rng(5), errors=zero, **kw)
     for name in ("psi", "rate", "moment_1", "moment_2", "estimate"):
         assert np.array_equal(getattr(a, name), getattr(z, name)), name
     assert np.array_equal(a.error_band, z.error_band)
@@ -122,7 +124,7 @@ def test_budget_nominal_values_reproduce_the_bench_as_designed(setup, p):
     budget's thread is untwisted there: its neutral angle is counted from the target)."""
     band, _ = budget.simulate_sources(setup, np.pi / 3, {}, field_h=p["bench_field_h"], **RUN)
     ref = bench.simulate_bench(setup, np.pi / 3, release_angle=np.pi / 3,
-                               thread_neutral_angle=np.pi / 3, **RUN)
+                               errors=bench.BenchErrors(thread_neutral_angle=np.pi / 3), **RUN)
     assert np.array_equal(band, ref.error_band)
 
 
@@ -193,7 +195,7 @@ def test_sobol_wiring_on_the_ishigami_function():
 ])
 def test_bad_error_inputs_are_named(setup, kw, match):
     with pytest.raises(ValueError, match=match):
-        bench.simulate_bench(setup, 1.0, duration=0.1, window=0.05, members=2, **kw)
+        bench.simulate_bench(setup, 1.0, duration=0.1, window=0.05, members=2, errors=bench.BenchErrors(**kw))
 
 
 def test_bad_budget_inputs_are_named(setup, sources):

@@ -23,7 +23,7 @@ def test_vectorised_loop_matches_solve_ivp_member_by_member():
     scale = np.array([[1.04, 0.96], [0.95, 1.0], [1.0, 1.05]])
     kappa = np.array([1e-7, 1e-6, 1e-5])
     run = bench.simulate_bench(setup, np.pi / 3, duration=20.0, release_angle=angles, release_rate=rates,
-                               moment_scale=scale, thread_stiffness=kappa)
+                               errors=bench.BenchErrors(moment_scale=scale, thread_stiffness=kappa))
     for j in range(3):
         ref = bench.simulate_bench_reference(
             setup, np.pi / 3, duration=20.0, release_angle=angles[j], release_rate=rates[j],
@@ -71,14 +71,16 @@ def test_compiled_loop_equals_the_numpy_loop(monkeypatch, options):
     # Every operation of the compiled loop is the numpy loop's, in the same order and
     # without fast-math, and the heading's arctan2 is numpy's in both: equal to the last
     # bit under every error source, noise and quantisation included.
+    from magbench.sim.bench import loop
+
     kw = dict(options)
     setup, psi_des = kw.pop("setup", SETUP), kw.pop("psi_des", np.pi / 3)
     runs = []
     for engine in ("numpy", "compiled"):
-        monkeypatch.setattr(bench, "_ENGINE", engine)
+        monkeypatch.setattr(loop, "_ENGINE", engine)
         runs.append(bench.simulate_bench(setup, psi_des, duration=6.0, members=M5, record_interval=0.05, window=2.0,
                                          release_angle=np.linspace(-1.0, 2.0, M5), release_rate=0.05,
-                                         rng=np.random.default_rng(4), **kw))
+                                         rng=np.random.default_rng(4), errors=bench.BenchErrors(**kw)))
     for name in ("psi", "rate", "moment_1", "moment_2", "estimate", "error_band", "indicated_error_band"):
         np.testing.assert_array_equal(getattr(runs[1], name), getattr(runs[0], name), err_msg=name)
 
@@ -136,8 +138,9 @@ def test_thesis_gains_violate_routh_and_do_not_settle():
 
 
 def test_monte_carlo_is_reproducible_from_its_seed():
-    kw = dict(members=5, duration=2.0, moment_tolerance=0.05, release_angle_spread=1.0,
-              release_rate_std=0.02, thread_stiffness_factor=10.0, window=1.0)
+    kw = dict(members=5, duration=2.0, window=1.0,
+              dispersion=bench.BenchDispersion(moment_tolerance=0.05, release_angle_spread=1.0,
+                                               release_rate_std=0.02, thread_stiffness_factor=10.0))
     a = bench.monte_carlo(SETUP, 1.0, seed=11, **kw)
     b = bench.monte_carlo(SETUP, 1.0, seed=11, **kw)
     c = bench.monte_carlo(SETUP, 1.0, seed=12, **kw)
@@ -148,8 +151,9 @@ def test_monte_carlo_is_reproducible_from_its_seed():
 
 
 def test_monte_carlo_release_centre_and_mean_rate():
-    kw = dict(members=200, duration=0.1, moment_tolerance=0.05, release_angle_spread=0.5,
-              release_rate_std=0.01, thread_stiffness_factor=2.0, window=0.05)
+    kw = dict(members=200, duration=0.1, window=0.05,
+              dispersion=bench.BenchDispersion(moment_tolerance=0.05, release_angle_spread=0.5,
+                                               release_rate_std=0.01, thread_stiffness_factor=2.0))
     run = bench.monte_carlo(SETUP, 2.0, seed=3, release_angle=-0.4, release_rate=0.1, **kw)
     assert np.all(np.abs(run.params["release_angle"] + 0.4) <= 0.5)
     assert abs(np.mean(run.params["release_rate"]) - 0.1) < 0.005
@@ -215,12 +219,13 @@ def test_bad_setup_is_rejected(changes, message):
     ({"duration": -1.0}, "duration"),
     ({"duration": 1.0, "window": 2.0}, "window"),
     ({"duration": 1.0, "window": 0.5, "release_angle": [0.0, 1.0], "release_rate": [0.0, 0.0, 0.0]}, "release_angle"),
-    ({"duration": 1.0, "window": 0.5, "moment_scale": [[1.0, 1.0, 1.0]]}, "moment_scale"),
-    ({"duration": 1.0, "window": 0.5, "moment_scale": -1.0}, "moment_scale"),
+    ({"duration": 1.0, "window": 0.5, "errors": bench.BenchErrors(moment_scale=[[1.0, 1.0, 1.0]])}, "moment_scale"),
+    ({"duration": 1.0, "window": 0.5, "errors": bench.BenchErrors(moment_scale=-1.0)}, "moment_scale"),
+    ({"duration": 1.0, "window": 0.5, "errors": {"moment_scale": 1.0}}, "errors"),
     ({"duration": 1.0, "window": 0.5, "rng": 42}, "rng"),
     ({"duration": 1.0, "window": 0.5, "record_interval": 0.015}, "record_interval"),
     ({"duration": 1.0, "window": 0.5, "sensor_errors": (np.zeros((5, 1)), np.zeros((5, 1, 2)))}, "sensor_errors"),
-    ({"duration": 1.0, "window": 0.5, "thread_stiffness": -1e-6}, "thread_stiffness"),
+    ({"duration": 1.0, "window": 0.5, "errors": bench.BenchErrors(thread_stiffness=-1e-6)}, "thread_stiffness"),
 ])
 def test_bad_simulation_input_is_rejected(kwargs, message):
     with pytest.raises(ValueError, match=message):
@@ -228,12 +233,14 @@ def test_bad_simulation_input_is_rejected(kwargs, message):
 
 
 def test_bad_monte_carlo_input_is_rejected():
-    kw = dict(members=2, seed=1, duration=1.0, moment_tolerance=0.05, release_angle_spread=1.0,
-              release_rate_std=0.02, thread_stiffness_factor=10.0, window=0.5)
+    spread = dict(moment_tolerance=0.05, release_angle_spread=1.0, release_rate_std=0.02,
+                  thread_stiffness_factor=10.0)
     with pytest.raises(ValueError, match="moment_tolerance"):
-        bench.monte_carlo(SETUP, 1.0, **{**kw, "moment_tolerance": 0.9})
+        bench.BenchDispersion(**{**spread, "moment_tolerance": 0.9})
     with pytest.raises(ValueError, match="thread_stiffness_factor"):
-        bench.monte_carlo(SETUP, 1.0, **{**kw, "thread_stiffness_factor": 0.5})
+        bench.BenchDispersion(**{**spread, "thread_stiffness_factor": 0.5})
+    with pytest.raises(ValueError, match="dispersion"):
+        bench.monte_carlo(SETUP, 1.0, members=2, seed=1, duration=1.0, window=0.5, dispersion=spread)
     with pytest.raises(ValueError, match="setup"):
         bench.simulate_bench("not a setup", 1.0, duration=1.0, window=0.5)
 

@@ -8,6 +8,7 @@ import numpy as np
 
 from ... import control
 from ... import dynamics
+from ...estimation import gyro_offset_error
 from ...compare import make_row
 from ...errata import source_check
 from ...io import load_parameter_set
@@ -77,33 +78,6 @@ def bench_rows(params=None):
                   "release at rest; no sensor calibration error, misalignment or coil field at the "
                   "sensor), error band of the last window of a nominal run; not a prediction of the 10°")))
     return rows
-
-
-def gyro_offset_error(offset, filter_coefficient, sample_interval):
-    r"""Steady pointing error a constant gyro offset leaves through the filter [rad].
-
-    Parameters
-    ----------
-    offset : array_like
-        Gyro zero-rate offset b [rad/s].
-    filter_coefficient : array_like
-        A_f of thesis eq. (39) [-], in (0, 1).
-    sample_interval : array_like
-        Loop period Δt [s], > 0.
-
-    Returns
-    -------
-    ndarray
-        :math:`A_f\,b\,\Delta t/(1-A_f)`, the filter's fixed point at rest: the controller
-        holds the estimate on target and the mock-up sits this far beside it.
-    """
-    a = np.asarray(filter_coefficient, float)
-    dt = np.asarray(sample_interval, float)
-    if np.any(~np.isfinite(a) | (a <= 0) | (a >= 1)):
-        raise ValueError(f"filter_coefficient must lie in (0, 1), got {a}")
-    if np.any(~np.isfinite(dt) | (dt <= 0)):
-        raise ValueError(f"sample_interval must be > 0 s, got {dt}")
-    return a * np.asarray(offset, float) * dt / (1.0 - a)
 
 
 def budget_rows(params=None):
@@ -214,7 +188,10 @@ CHAPTER = Chapter(
     short_title="the mock-up and the bench",
     pages=("book/ch04-mockup", "book/ch04-estimation", "book/ch04-bench", "book/ch04-budget"), source="thesis",
     inputs=INPUTS,
-    figure_modules=("magbench.chapters.ch04_mockup.figures", "magbench.chapters.ch04_mockup.figures_estimation", "magbench.chapters.ch04_mockup.figures_bench",
+    # figures_pid right after figures: the concordance lists a chapter's figures module by
+    # module, and thesis Figs. 15–18 then keep their place after Fig. 14.
+    figure_modules=("magbench.chapters.ch04_mockup.figures", "magbench.chapters.ch04_mockup.figures_pid",
+                    "magbench.chapters.ch04_mockup.figures_estimation", "magbench.chapters.ch04_mockup.figures_bench",
                     "magbench.chapters.ch04_mockup.figures_budget"),
     comparisons=_rows,
     row_kinds=(("bench-error-", "measurement"), ("bench-budget-", "consistency")),

@@ -4,8 +4,9 @@ The thesis measured an absolute orientation error of 10° on its bench; the clos
 model of :mod:`magbench.sim.bench` with the bench *as designed* settles within a few
 hundredths of a degree. This module asks what the bench *could have been*: every
 hardware error source the parts allow, each with a range and where the range comes from
-(``magbench/data/bench/error_sources.toml``), run through the same simulation as
-keyword inputs of :func:`magbench.sim.bench.simulate_bench`, vectorised over members:
+(``magbench/data/bench/error_sources.toml``), run through the same simulation as the
+per-member :class:`magbench.sim.bench.BenchErrors` of
+:func:`magbench.sim.bench.simulate_bench`, vectorised over members:
 
 - :func:`load_error_sources` the ranges (three computed by the library: the uncancelled
   laboratory field from IGRF and the field's non-uniformity over the mock-up, both as
@@ -268,10 +269,7 @@ def simulate_sources(setup, psi_des, values, *, duration, window, field_h, seed=
             continue
         sub = replace(setup, sample_interval=float(dt))
         rng = None if seed is None else np.random.default_rng([int(seed), k])
-        run = bench.simulate_bench(
-            sub, target[idx], duration=duration, window=window, members=idx.size, rng=rng,
-            record_interval=duration,
-            release_angle=target[idx] + v["release_angle"][idx], release_rate=v["release_rate"][idx],
+        errors = bench.BenchErrors(
             moment_scale=np.stack([1 + v["moment_scale_1"][idx], 1 + v["moment_scale_2"][idx]], -1),
             thread_stiffness=v["thread_stiffness"][idx],
             gyro_offset=v["gyro_offset"][idx], gyro_drift=v["gyro_drift"][idx] / duration,
@@ -283,6 +281,11 @@ def simulate_sources(setup, psi_des, values, *, duration, window, field_h, seed=
             field_scale=total[idx] / setup.field, field_azimuth=gamma[idx],
             thread_neutral_angle=target[idx] + v["thread_neutral_angle"][idx],
             filter_coefficient=v["filter_coefficient"][idx], pwm_levels=np.rint(v["pwm_levels"][idx]))
+        run = bench.simulate_bench(
+            sub, target[idx], duration=duration, window=window, members=idx.size, rng=rng,
+            record_interval=duration,
+            release_angle=target[idx] + v["release_angle"][idx], release_rate=v["release_rate"][idx],
+            errors=errors)
         band[idx], indicated[idx] = run.error_band, run.indicated_error_band
     return band, indicated
 

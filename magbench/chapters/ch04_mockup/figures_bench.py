@@ -93,10 +93,7 @@ def compute_trace(psi_des, release_angle, release_rate, envelope_members, **p):
     # rate (not about the target, as in ch04-montecarlo), so that the nominal run, whose
     # moments and thread are the centres of the members' spreads, is one of them.
     mc = bench.monte_carlo(setup, psi_des, members=n_env, seed=seed + 1, duration=p["bench_duration"],
-                           moment_tolerance=p["bench_moment_tolerance"],
-                           release_angle_spread=p["bench_release_angle_spread"],
-                           release_rate_std=p["bench_release_rate_std"],
-                           thread_stiffness_factor=p["bench_thread_stiffness_factor"],
+                           dispersion=bench.BenchDispersion.from_parameters(p),
                            record_interval=0.1, window=p["bench_error_window"],
                            release_angle=release_angle, release_rate=release_rate)
     # Each member is shifted by the whole turns that bring its final angle nearest the
@@ -174,10 +171,7 @@ def compute_montecarlo(**p):
     for k, target in enumerate((np.pi / 3.0, 2.0 * np.pi / 3.0)):
         run = bench.monte_carlo(setup, target, members=int(round(p["bench_members"])),
                                 seed=int(p["bench_seed"]) + 10 * (k + 1), duration=p["bench_duration"],
-                                moment_tolerance=p["bench_moment_tolerance"],
-                                release_angle_spread=p["bench_release_angle_spread"],
-                                release_rate_std=p["bench_release_rate_std"],
-                                thread_stiffness_factor=p["bench_thread_stiffness_factor"],
+                                dispersion=bench.BenchDispersion.from_parameters(p),
                                 record_interval=p["bench_duration"], window=p["bench_error_window"])
         series.append(Series(f"ψ_des = {np.degrees(target):.0f}°", {
             "error_band": ("deg", np.degrees(run.error_band)),

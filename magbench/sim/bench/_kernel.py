@@ -1,4 +1,4 @@
-r"""Compiled (numba) twin of :func:`magbench.sim.simulate_bench`'s sample loop: sensors,
+r"""Compiled (numba) twin of :func:`magbench.sim.bench.simulate_bench`'s sample loop: sensors,
 filter, PID, allocation, PWM and the plant's RK4 step, members on the contiguous axis.
 
 Why compiled: a sample of the numpy loop is ~150 small array operations, and at the bench's
@@ -87,11 +87,18 @@ def _accel(psi, rate, a1, a2, b0, kappa, neutral, inertia):
 
 
 @njit(cache=True, error_model="numpy")
-def control_and_step(k, heading, gyro, bxy, state, member, present, setup, estimate, integral, commanded, applied,
-                     band, band_est, first_in_window, every, states, moments, estimates):
+def control_and_step(k, heading, gyro, bxy, state, member, present, setup, memory, held, records, stride):
     """controller_step on the readings and the numpy ``heading``, the records, the error
-    bands, and the plant's RK4 step over the sample with the new moments held
-    (``commanded`` the coils' moments, ``applied`` their body components)."""
+    bands, and the plant's RK4 step over the sample with the new moments held.
+
+    Grouped arrays (numba takes tuples of arrays; each is written in place): ``memory``
+    (estimate, integral, band, band_est), each (M,); ``held`` (commanded, applied), the
+    coils' moments and their body components, each (2, M); ``records`` (states, moments,
+    estimates); ``stride`` (first sample in the error window, recording stride)."""
+    estimate, integral, band, band_est = memory
+    commanded, applied = held
+    states, moments, estimates = records
+    first_in_window, every = stride
     dt = setup[DT]
     half = 0.5 * dt
     sixth = dt / 6.0
