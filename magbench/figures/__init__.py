@@ -18,8 +18,7 @@ __all__ = [
 ]
 
 
-from ..chapters._figures import (REGISTRY, WHOLE_NUMBER_INPUTS, WORK_LIMITS, FigureData, FigureParameter, FigureSpec,
-                                 Series, register)
+from ..chapters.registry import REGISTRY, FigureData, FigureParameter, FigureSpec, Series, register
 from .._validate import shown
 from ..result_cache import disk_cached
 
@@ -54,8 +53,8 @@ def resolve_parameters(figure_id, overrides=None):
     """Defaults of a figure's parameters updated with ``overrides`` (SI numbers).
 
     An unknown name raises ``KeyError`` listing the figure's parameters; a value that is
-    not a finite number, a count with a fraction (:data:`WHOLE_NUMBER_INPUTS`) or a work
-    input beyond its bound (:data:`WORK_LIMITS`) raises ``ValueError`` naming it.
+    not a finite number, a count with a fraction or a work input beyond its bound (each
+    declared on its :class:`FigureParameter`) raises ``ValueError`` naming it.
     """
     import math
 
@@ -74,17 +73,7 @@ def resolve_parameters(figure_id, overrides=None):
         values[name] = number
     # Defaults too: they may come from a whole-book parameter file ($MAGBENCH_PARAMS).
     for name, number in values.items():
-        if name in WHOLE_NUMBER_INPUTS and number != round(number):
-            raise ValueError(f"parameter {name} of {figure_id} must be a whole number, got {number:g}")
-        low, high = WORK_LIMITS.get((figure_id, name), WORK_LIMITS.get(name, (None, None)))
-        unit = spec.parameters[name].unit
-        unit = f" {unit}" if unit not in ("", "1", "-") else ""
-        if low is not None and number < low:
-            raise ValueError(f"parameter {name} of {figure_id} must be >= {low:g}{unit} (a figure's work is "
-                             f"bounded to minutes; call the library for more), got {number:g}")
-        if high is not None and number > high:
-            raise ValueError(f"parameter {name} of {figure_id} must be <= {high:g}{unit} (a figure's work is "
-                             f"bounded to minutes; call the library for more), got {number:g}")
+        spec.parameters[name].check(figure_id, name, number)
     return values
 
 

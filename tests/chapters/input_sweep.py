@@ -21,7 +21,7 @@ import matplotlib.pyplot as plt
 
 import magbench.io as _io
 from magbench import chapters, figures, result_cache
-from magbench.chapters import _base, _figures
+from magbench.chapters import _base, registry
 
 __all__ = ["chapter_figures", "figure_dependencies", "row_dependencies", "run_scaled"]
 
@@ -85,7 +85,7 @@ class _Scaled:
             return params
 
         _base.load_parameter_set = scaled
-        _figures._PARAMETERS.clear()    # figure defaults are read from the parameter set once
+        registry._PARAMETERS.clear()    # figure defaults are read from the parameter set once
         self.no_disk = result_cache.disabled(studies=False)
         self.no_disk.__enter__()
         return self
@@ -93,7 +93,7 @@ class _Scaled:
     def __exit__(self, *exc):
         self.no_disk.__exit__(*exc)
         _base.load_parameter_set = self.original
-        _figures._PARAMETERS.clear()
+        registry._PARAMETERS.clear()
 
 
 def chapter_figures(key):

@@ -21,7 +21,6 @@ import matplotlib.pyplot as plt
 import pytest
 
 from magbench import figures
-from magbench.chapters._figures import WHOLE_NUMBER_INPUTS
 
 
 #: How a label may show an SI value: (factor, the unit symbols that may follow the number).
@@ -149,7 +148,7 @@ def _changed_render(figure_id, name, default):
     whole number, the quantity's domain): (value, figure, data)."""
     for factor in (1.5, 0.5):
         value = default * factor
-        if name in WHOLE_NUMBER_INPUTS:
+        if figures.get_spec(figure_id).parameters[name].whole:
             value = float(round(value))
         if value == default:
             continue

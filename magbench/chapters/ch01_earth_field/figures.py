@@ -9,7 +9,7 @@ from ...constants import EARTH_GM, EARTH_ROTATION_RATE
 from ..._format import format_number
 from . import CHAPTER
 from .._base import chapter_parameters
-from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
 from ...units import DEG
 
@@ -287,7 +287,7 @@ def _orbit_parameters():
         "orbit_altitude": FigureParameter(p["orbit_altitude"], "m", "circular orbit altitude"),
         "orbit_inclination": FigureParameter(p["orbit_inclination"], "rad", "orbit inclination"),
         "earth_dipole_tilt": FigureParameter(p["earth_dipole_tilt"], "rad", "dipole tilt"),
-        "orbits": FigureParameter(2.0, "1", "number of revolutions shown"),
+        "orbits": FigureParameter(2.0, "1", "number of revolutions shown", high=50.0),
     }
 
 
@@ -361,4 +361,4 @@ register(FigureSpec("ch01-orbit-field", "The dipole field along a circular orbit
 register(FigureSpec("ch01-torque-plane", "Reachable magnetic torques", "Bui (2016) eqs. (4)–(8)",
                     compute_torque_plane, plot_torque_plane,
                     {"field_elevation": FigureParameter(0.6, "rad", "elevation of B above the x axis"),
-                     "samples": FigureParameter(2000.0, "1", "number of random moments")}))
+                     "samples": FigureParameter(2000.0, "1", "number of random moments", high=1e5, whole=True)}))

@@ -18,7 +18,7 @@ from ...constants import MU_0
 from ...io import load_measurements
 from . import CHAPTER
 from .._base import chapter_parameters
-from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
 
 SOURCE = "Bui (2016), thesis §2"
@@ -45,7 +45,7 @@ def _measured():
 def _geometry_parameters(tolerance=True):
     p = _defaults()
     params = {
-        "turns": FigureParameter(p["sim_turns"], "1", "turns per coil"),
+        "turns": FigureParameter(p["sim_turns"], "1", "turns per coil", whole=True),
         "current": FigureParameter(p["sim_current"], "A", "current in each coil"),
         "coil_radius": FigureParameter(p["sim_built_radius"], "m", "coil radius (all geometries)"),
         "design_spacing_ratio": FigureParameter(p["sim_spacing_ratio"], "1", "design spacing d/a (thesis)"),
@@ -630,7 +630,7 @@ def plot_hypotheses(data):
 def _hypotheses_parameters():
     p = _defaults()
     return {
-        "turns": FigureParameter(p["sim_turns"], "1", "turns per coil (as stated)"),
+        "turns": FigureParameter(p["sim_turns"], "1", "turns per coil (as stated)", whole=True),
         "current": FigureParameter(p["sim_current"], "A", "current in each coil (as stated)"),
         "coil_radius": FigureParameter(p["sim_built_radius"], "m", "coil radius as built"),
         "built_spacing": FigureParameter(p["sim_built_spacing"], "m", "centre-to-centre spacing as built"),
@@ -738,7 +738,7 @@ def _three_axis_parameters():
         "radius_north": FigureParameter(0.50, "m", "radius of the north pair"),
         "radius_east": FigureParameter(0.55, "m", "radius of the east pair (nested outside)"),
         "radius_down": FigureParameter(0.60, "m", "radius of the vertical pair (outermost)"),
-        "turns": FigureParameter(p["sim_turns"], "1", "turns per coil"),
+        "turns": FigureParameter(p["sim_turns"], "1", "turns per coil", whole=True),
         "target_h_north": FigureParameter(p["sim_design_h"], "A/m", "wanted field, north"),
         "target_h_east": FigureParameter(0.0, "A/m", "wanted field, east"),
         "target_h_down": FigureParameter(0.0, "A/m", "wanted field, down"),

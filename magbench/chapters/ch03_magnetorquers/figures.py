@@ -9,7 +9,7 @@ from ...constants import MU_0
 from ...io import load_measurements, load_wire_table
 from . import CHAPTER
 from .._base import chapter_parameters
-from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
 
 SOURCE = "Bui (2016), thesis §3"
@@ -133,10 +133,10 @@ def _fig09_parameters():
     d, od, _ = _wire_sizes()
     return {
         "mtq_side": FigureParameter(p["mtq_side"], "m", "side of the cube and of the square turn"),
-        "mtq_turns": FigureParameter(p["mtq_turns"], "1", "turns per coil"),
+        "mtq_turns": FigureParameter(p["mtq_turns"], "1", "turns per coil", whole=True),
         "wire_pitch": FigureParameter(float(od[np.argmin(abs(d - 0.2e-3))]), "m",
                                       "winding pitch (IEC 60317 grade-1 overall diameter of 0.2 mm wire)"),
-        "coils": FigureParameter(3.0, "1", "number of coils drawn (2 as built, 3 as in the caption)"),
+        "coils": FigureParameter(3.0, "1", "number of coils drawn (2 as built, 3 as in the caption)", whole=True),
     }
 
 

@@ -15,7 +15,7 @@ from ... import sim
 from ...constants import MU_0
 from . import CHAPTER, PRINTED_SETS
 from .._base import chapter_parameters
-from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
 from ...units import DEG
 
@@ -199,7 +199,7 @@ def _free_parameters():
     params.update({
         "initial_angle": FigureParameter(p["mockup_initial_angle"], "rad", "ψ0 of the parameter list"),
         "initial_angle_alt": FigureParameter(p["mockup_initial_angle_alt"], "rad", "ψ0 of the discussion"),
-        "duration": FigureParameter(150.0, "s", "time span (not stated in the thesis)"),
+        "duration": FigureParameter(150.0, "s", "time span (not stated in the thesis)", high=1e4),
     })
     return params
 
@@ -279,7 +279,7 @@ def _period_parameters():
     pp = _plant_parameters()
     return {"inertia": pp["inertia"], "moment": pp["moment"], "field": pp["field"],
             "period": FigureParameter(p["oscillation_period"], "s", "design period (thesis §2.1)"),
-            "amplitude_checks": FigureParameter(8.0, "1", "number of solve_ivp spot checks")}
+            "amplitude_checks": FigureParameter(8.0, "1", "number of solve_ivp spot checks", whole=True)}
 
 
 # --- thesis Fig. 14: the loop, drawn from its python-control interconnection ---------------

@@ -16,7 +16,7 @@ from ...io import load_parameter_set, measurement
 from . import CHAPTER
 from .._base import chapter_parameters
 from ...rotations import wrap_angle
-from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
 from ...units import DEG
 
@@ -33,7 +33,12 @@ BENCH_INPUTS = [
     "bench_gyro_bias", "bench_members", "bench_seed",
 ]
 
-_SI_UNITS = {"deg": "rad", "%": "1", "kg m^2": "kg m^2"}
+#: The bench inputs that set the figures' work or count something, and the values the figures
+#: accept (see :class:`~magbench.chapters.registry.FigureParameter`); the others take any value
+#: the model accepts.
+BENCH_INPUT_BOUNDS = {"bench_duration": dict(high=3600.0), "bench_members": dict(high=2e4, whole=True),
+                      "bench_seed": dict(whole=True), "bench_pwm_levels": dict(whole=True),
+                      "mtq_turns": dict(whole=True)}
 
 
 def _input_parameters():
@@ -43,7 +48,7 @@ def _input_parameters():
     for name in BENCH_INPUTS:
         p = table[name]
         note = (p.note or p.source).split(";")[0]
-        params[name] = FigureParameter(values[name], _SI_UNITS.get(p.unit, p.unit), note)
+        params[name] = FigureParameter(values[name], p.unit_si, note, **BENCH_INPUT_BOUNDS.get(name, {}))
     return params
 
 
@@ -208,7 +213,7 @@ def _trace_parameters(psi_des):
     params = {"psi_des": FigureParameter(psi_des, "rad", "target angle from the field to coil 1"),
               "release_angle": FigureParameter(0.0, "rad", "true angle at release (ours: along the field)"),
               "release_rate": FigureParameter(0.0, "rad/s", "rate at release (ours)"),
-              "envelope_members": FigureParameter(100.0, "1", "Monte Carlo members of the envelope")}
+              "envelope_members": FigureParameter(100.0, "1", "Monte Carlo members of the envelope", high=1e4, whole=True)}
     params.update(_input_parameters())
     return params
 

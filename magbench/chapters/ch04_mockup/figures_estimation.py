@@ -11,7 +11,7 @@ from ...io import broad
 from ...constants import MU_0
 from . import CHAPTER
 from .._base import chapter_parameters
-from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 
 SOURCE = "Bui (2016), thesis §4, eq. (39)"
 GRAVITY = 9.80665
@@ -144,11 +144,11 @@ def _alpha_parameters():
         "gyro_bias": FigureParameter(p["gyro_residual_bias"], "rad/s", "residual gyro bias (assumed)"),
         "alpha_low": FigureParameter(p["filter_coefficient_low"], "1", "thesis's lower A"),
         "alpha_high": FigureParameter(p["filter_coefficient_high"], "1", "thesis's upper A"),
-        "duration": FigureParameter(120.0, "s", "simulated time"),
+        "duration": FigureParameter(120.0, "s", "simulated time", high=1e4),
         "amplitude": FigureParameter(np.radians(20.0), "rad", "roll amplitude of the motion"),
         "frequency": FigureParameter(0.2, "Hz", "roll frequency"),
         "vibration_amplitude": FigureParameter(0.5, "m/s^2", "7 Hz vibration on the accelerometer"),
-        "seed": FigureParameter(4.0, "1", "random seed of the sensor noise"),
+        "seed": FigureParameter(4.0, "1", "random seed of the sensor noise", whole=True),
     }
 
 
@@ -235,8 +235,8 @@ def _heading_parameters():
         "gyro_bias": FigureParameter(p["gyro_residual_bias"], "rad/s", "residual gyro bias (assumed)"),
         "field_h": FigureParameter(p["sim_design_h"], "A/m", "simulator's field (design value)"),
         "alpha": FigureParameter(p["filter_coefficient_high"], "1", "eq. (39) coefficient A"),
-        "duration": FigureParameter(300.0, "s", "simulated time"),
-        "seed": FigureParameter(5.0, "1", "random seed of the sensor noise"),
+        "duration": FigureParameter(300.0, "s", "simulated time", high=1e4),
+        "seed": FigureParameter(5.0, "1", "random seed of the sensor noise", whole=True),
     }
 
 
@@ -386,7 +386,7 @@ def plot_tau_sensitivity(data):
 register(FigureSpec("ch04-broad-tilt", "The 3-D complementary filter on BROAD: inclination error and RMSE",
                     BROAD_SOURCE, compute_broad_tilt, plot_broad_tilt,
                     {"tau": FigureParameter(3.0, "s", "accelerometer time constant (default)"),
-                     "order": FigureParameter(2.0, "1", "low-pass order (1 or 2)")}))
+                     "order": FigureParameter(2.0, "1", "low-pass order (1 or 2)", whole=True)}))
 register(FigureSpec("ch04-tau-sensitivity", "Sensitivity of the BROAD RMSE to the time constant",
                     BROAD_SOURCE, compute_tau_sensitivity, plot_tau_sensitivity,
                     {"tau_min": FigureParameter(0.3, "s", "smallest τ"),

@@ -14,7 +14,7 @@ from ...constants import MU_0
 from ..._format import format_number
 from . import KD_SWEEP, KP_SWEEP, PRINTED_SETS
 from .figures import STYLES, _defaults, _plant_parameters
-from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
 from ...units import DEG
 
@@ -101,7 +101,7 @@ def _sweep_parameters():
     params = _plant_parameters()
     params.update({
         "initial_angle": FigureParameter(p["mockup_initial_angle"], "rad", "ψ0 (Figs. 12–13's value; not stated for 15–18)"),
-        "duration": FigureParameter(300.0, "s", "time span (not stated)"),
+        "duration": FigureParameter(300.0, "s", "time span (not stated)", high=1e4),
         "hypothesis_scale": FigureParameter(1.0 / MU_0, "1", "factor on the printed gains (default: B0 entered as H in A/m)"),
     })
     return params
@@ -243,7 +243,7 @@ def _step_parameters():
         "sample_interval": FigureParameter(p["pid_sample_interval"], "s", "controller interval of the sampled loop"),
         "small_step": FigureParameter(5 * DEG, "rad", "small target step"),
         "large_step": FigureParameter(2 * np.pi / 3, "rad", "large target step (the bench's 2π/3)"),
-        "duration": FigureParameter(300.0, "s", "time span"),
+        "duration": FigureParameter(300.0, "s", "time span", high=1e4),
     })
     return params
 

@@ -13,7 +13,7 @@ import numpy as np
 from .._base import chapter_parameters
 from ...control import kovalenko_detumble_time
 from ...earth import dipole_max_field, field_direction_rate_range, mean_square_field
-from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 from ...units import DEG
 from . import parameter_key, study
 
@@ -24,11 +24,20 @@ def _defaults():
     return chapter_parameters("ch05", overrides="")
 
 
+#: The chapter's inputs that set a figure's work or count something, and the values the figures
+#: accept (see :class:`~magbench.chapters.registry.FigureParameter`); the others take any value
+#: the model accepts.
+INPUT_BOUNDS = {"fig2_members": dict(high=100.0, whole=True), "fig2_seed": dict(whole=True),
+                "envelope_members": dict(high=1e4, whole=True), "envelope_seed": dict(whole=True),
+                "envelope_duration": dict(high=1e5), "integration_step": dict(low=0.01)}
+
+
 def _parameters(*names, **extra):
     from ...io import load_parameter_set
 
     p, sources = _defaults(), load_parameter_set("samsat")
-    out = {name: FigureParameter(p[name], sources[name].unit_si, f"{name.replace('_', ' ')} ({sources[name].source})")
+    out = {name: FigureParameter(p[name], sources[name].unit_si, f"{name.replace('_', ' ')} ({sources[name].source})",
+                                 **INPUT_BOUNDS.get(name, {}))
            for name in names}
     out.update(extra)
     return out
@@ -379,14 +388,14 @@ register(FigureSpec("samsat-fig1", "Gain k against the initial separation rates 
 register(FigureSpec("samsat-fig2", "Damping time, continuous and discrete modes (SamSat-218D Fig. 2, "
                     "reconstruction)", f"{SOURCE}, Fig. 2", compute_fig2, plot_fig2,
                     partial(_parameters, *_DUTY, estimator=FigureParameter(
-                        0.0, "1", "Ḃ estimator of the discrete mode: 0 model, 1 hold, 2 propagate"))))
+                        0.0, "1", "Ḃ estimator of the discrete mode: 0 model, 1 hold, 2 propagate", whole=True))))
 register(FigureSpec("ch05-rate-decay", "Rate decay, continuous and discrete", f"{SOURCE}, Rate damping",
                     compute_rate_decay, plot_rate_decay,
                     partial(_parameters, *_DUTY)))
 register(FigureSpec("ch05-duty-estimators", "Damping kept by each duty-cycle estimator",
                     f"{SOURCE}, Rate damping (the estimators are ours)", compute_duty_estimators, plot_duty_estimators,
                     partial(_parameters, *_DUTY, span=FigureParameter(
-                        1020.0, "s", "span over which |ω| drops (60 cycles; ours)"))))
+                        1020.0, "s", "span over which |ω| drops (60 cycles; ours)", high=1e5))))
 register(FigureSpec("ch05-detumble-distribution", "3U envelope: detumble times beside Cp557 and Kovalenko (6.50)",
                     "Cp557/detumble; Kovalenko (1975) eq. (6.50)", compute_distribution, plot_distribution,
                     partial(_parameters, *_ENVELOPE)))

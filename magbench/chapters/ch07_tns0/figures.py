@@ -10,7 +10,7 @@ import numpy as np
 from ...constants import MU_0
 from . import CHAPTER, capture_run, decay_balance, decay_fits, full_run, orbit_from, session_fits
 from .._base import chapter_parameters
-from .._figures import FigureData, FigureParameter, FigureSpec, Series, register
+from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
 from ...units import DEG
 

@@ -7,59 +7,47 @@ command line.
 
 from dataclasses import dataclass, field
 
-__all__ = ["FigureParameter", "WORK_LIMITS", "WHOLE_NUMBER_INPUTS", "Series", "FigureData", "FigureSpec", "REGISTRY",
-           "register"]
+__all__ = ["FigureParameter", "count", "Series", "FigureData", "FigureSpec", "REGISTRY", "register"]
 
 
 @dataclass(frozen=True)
 class FigureParameter:
-    """One input of a figure: SI default, unit and meaning."""
+    """One input of a figure: SI default, unit, meaning, and the values the figure accepts.
+
+    ``low`` and ``high`` (SI, inclusive; None: no bound on that side) bound the inputs that
+    set a figure's amount of work (members, orbits, durations, grid sizes), each keeping one
+    figure to minutes on one core (the defaults take seconds to about a minute), so that
+    ``--set duration=1e7`` or a parameter file with a million members is refused at once,
+    naming the range, instead of running for hours; the library functions behind the figures
+    take any size. ``whole`` marks an input that counts something (members, points, steps,
+    turns, a seed, a code): 1.5 is refused instead of computed with 1 while the caption shows
+    1.5. Orbits are a length of time (2.5 orbits is meaningful) and are not whole.
+    """
 
     default: float
     unit: str
     description: str
+    low: float | None = None
+    high: float | None = None
+    whole: bool = False
+
+    def check(self, figure_id, name, number):
+        """``number`` if this parameter accepts it, else ``ValueError`` naming the figure, the
+        parameter, the bound and the value."""
+        if self.whole and number != round(number):
+            raise ValueError(f"parameter {name} of {figure_id} must be a whole number, got {number:g}")
+        unit = f" {self.unit}" if self.unit not in ("", "1", "-") else ""
+        why = "(a figure's work is bounded to minutes; call the library for more)"
+        if self.low is not None and number < self.low:
+            raise ValueError(f"parameter {name} of {figure_id} must be >= {self.low:g}{unit} {why}, got {number:g}")
+        if self.high is not None and number > self.high:
+            raise ValueError(f"parameter {name} of {figure_id} must be <= {self.high:g}{unit} {why}, got {number:g}")
+        return number
 
 
-#: Inputs that set a figure's amount of work, and the values a figure accepts (SI,
-#: inclusive; None: no bound on that side). Each keeps one figure to minutes on one core
-#: (the defaults take seconds to about a minute), so that ``--set duration=1e7`` or a
-#: parameter file with a million members is refused at once, naming the range, instead of
-#: running for hours. One name means one concept across the chapters, so the table is
-#: keyed by name, or by (figure id, name) where one figure's cost differs; the library
-#: functions behind the figures take any size.
-WORK_LIMITS = {
-    "orbits": (None, 50.0),
-    "samples": (None, 1e5),
-    "duration": (None, 1e4),
-    "steps": (None, 1e5),
-    "grid_points": (None, 200.0),
-    "span": (None, 1e5),
-    "integration_step": (0.01, None),
-    "bench_duration": (None, 3600.0),
-    "bench_members": (None, 2e4),
-    "budget_points": (None, 20.0),
-    "budget_base_samples": (None, 1024.0),
-    "envelope_members": (None, 1e4),
-    "envelope_duration": (None, 1e5),
-    "fig2_members": (None, 100.0),
-    "capture_duration": (None, 1e7),
-    "capture_members": (None, 1e4),
-    "full_run_duration": (None, 3e7),
-    # A figure whose cost is not linear in the name's input: its own entry wins. The
-    # wrong-sign damping run diverges, and the solver's steps shrink with it: 3000 s take
-    # 11 s, 5000 s over 5 min (measured).
-    ("rotor-damping-sign", "duration"): (None, 3000.0),
-}
-
-#: Inputs that count something (members, points, steps, turns, a seed, a code): a figure
-#: refuses 1.5 instead of computing with 1 while its caption shows 1.5. Orbits are a
-#: length of time (2.5 orbits is meaningful) and are not here.
-WHOLE_NUMBER_INPUTS = frozenset({
-    "amplitude_checks", "bench_members", "bench_pwm_levels", "bench_seed", "budget_base_samples",
-    "budget_points", "budget_seed", "capture_members", "capture_seed", "coils", "envelope_members",
-    "envelope_seed", "estimator", "fig2_members", "fig2_seed", "grid_points", "mtq_turns", "order",
-    "row", "samples", "seed", "steps", "turns",
-})
+def count(default, description, *, high=None, low=None):
+    """A whole-number input (members, points, steps, a seed) [-]."""
+    return FigureParameter(default, "1", description, low=low, high=high, whole=True)
 
 
 @dataclass
