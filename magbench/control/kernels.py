@@ -15,27 +15,10 @@ __all__ = ["program_field", "projected_dipole", "relay_dipole"]
 
 
 def program_field(u, i, b0):
-    r"""The direct dipole along a circular orbit in orbital axes; no checks.
-
-    Parameters
-    ----------
-    u : ndarray
-        Argument of latitude [rad].
-    i : ndarray
-        Inclination [rad].
-    b0 : ndarray
-        Equatorial field B0 at the orbit radius [T] (1 for units of B0 [-]).
-
-    Returns
-    -------
-    ndarray, shape (..., 3)
-        B0 (sin i cos u, cos i, −2 sin i sin u) [T].
-
-    Notes
-    -----
-    Rotor slides, slide "Problem statement" (seed line 21) and slide "Choice of control"
-    (seed line 63); Kovalenko (1975) eq. (2.40). The kernel of
-    :func:`magbench.control.rotor_program_field`.
+    r"""The direct dipole along a circular orbit in orbital axes, B0 (sin i cos u, cos i,
+    −2 sin i sin u) [T], for u [rad], i [rad] and b0 [T] (..., broadcasting); no checks. The
+    checked form, which documents it (rotor slides, seed lines 21 and 63; Kovalenko (1975)
+    eq. (2.40)), is :func:`magbench.control.rotor_program_field`.
     """
     su, cu, si, ci = np.sin(u), np.cos(u), np.sin(i), np.cos(i)
     # ci + 0·u: the normal component takes the shape of u like the other two
