@@ -20,7 +20,7 @@ __all__ = ["normalised_flow"]
 
 @njit(cache=True, error_model="numpy")
 def _rhs(tau, x0, x1, x2, x3, x4, a, c1, kappa, kappa_w, si, ci, real, real_field):
-    """d/dτ of (α, β, h, Ω2, Ω3): spinning._closed_loop for one member, operation for operation."""
+    """d/dτ of (α, β, h, Ω2, Ω3): rotor_normalised._closed_loop for one member, operation for operation."""
     su, cu = math.sin(tau), math.cos(tau)
     bo0, bo1, bo2 = 1.0 * (si * cu), 1.0 * (ci + 0.0 * tau), 1.0 * (-2.0 * si * su)
     if real:

@@ -1,5 +1,7 @@
-r"""The spinning spacecraft with a coaxial rotor under magnetic control: the closed-loop
-normalised model and its finite-difference monodromy, and the SI simulation.
+r"""The spinning spacecraft with a coaxial rotor under magnetic control: the satellite, its
+dimensionless numbers and the SI simulation (the normalised model is in
+:mod:`magbench.sim.rotor_normalised`, the turning-field run in :mod:`magbench.sim.turning_field`;
+both are served from here under their old names).
 
 Rotor slides (seed lines 11–102) with ``shared/reference/rotor_spin.md`` §4–§8. Composes
 the gyrostat of :mod:`magbench.dynamics.gyrostat`, the laws of
@@ -29,20 +31,18 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from .._validate import (as_choice, as_count, as_finite, as_in_range, as_inertia, as_positive,
-                         as_positive_or_infinite, as_positive_scalar, shown)
-from ..control.floquet import finite_difference_monodromy
+from .._validate import (as_choice, as_finite, as_in_range, as_inertia, as_positive_or_infinite,
+                         as_positive_scalar, shown)
 # the linearisation and its Floquet map moved to the control family; served from here as before
-from ..control.rotor_stability import (rotor_floquet_multipliers, rotor_linearised_matrices, rotor_model_numbers,
-                                       rotor_stability_map)
-from ..control.kernels import program_field, projected_dipole
+from ..control.rotor_stability import rotor_floquet_multipliers, rotor_linearised_matrices, rotor_stability_map
 from ..dynamics.gyrostat import airplane_231_angles, airplane_231_matrix, rotor_dimensionless_numbers
-from ..dynamics.kernels import rotor_reduced_rates
 from ..earth.circular_orbit import CircularOrbit
 from ..earth.dipole import dipole_equatorial_b
-from ..earth.orbit import orbital_dipole_b
-from ..integrate import rk4_step, solve_adaptive
+from ..integrate import solve_adaptive
 from .result import SimulationResult
+# the normalised model and the turning-field run have their own modules; served from here as before
+from .rotor_normalised import rotor_finite_difference_monodromy, rotor_normalised_rhs, simulate_rotor_normalised
+from .turning_field import simulate_turning_field_gyrostat
 
 __all__ = ["RotorSatellite", "RotorRun", "rotor_dimensionless", "rotor_satellite_from_dimensionless", "rotor_normalised_rhs",
            "rotor_linearised_matrices", "rotor_floquet_multipliers", "rotor_stability_map",
@@ -276,213 +276,6 @@ def rotor_satellite_from_dimensionless(inertia, rotor_inertia, spin_rate, orbit,
                           damping_gain=kappa_w * w0 * b, moment_limit=moment_limit)
 
 
-def _closed_loop(tau, x, a, c1, kappa, kappa_w, i, real=None):
-    alpha, beta, h, w2, w3 = x
-    bo = program_field(np.asarray(tau, dtype=float), np.asarray(i), np.asarray(1.0))
-    # the real field (units of B0): the program field, or a tilted dipole (tilt, node phase)
-    br = bo if real is None else (orbital_dipole_b(tau, i, 1.0, 1.0, tilt=real[0], node_phase=real[1])
-                                  / dipole_equatorial_b(1.0, 1.0))
-    ca, sa, cb, sb = np.cos(alpha), np.sin(alpha), np.cos(beta), np.sin(beta)
-    # b = R3(β) R2(α) b_real
-    x1 = ca * br[..., 0] - sa * br[..., 2]
-    b = np.stack(np.broadcast_arrays(cb * x1 + sb * br[..., 1], -sb * x1 + cb * br[..., 1],
-                                     sa * br[..., 0] + ca * br[..., 2]), axis=-1)
-    w = np.stack(np.broadcast_arrays((h - c1 * np.cos(tau) ** 2) / a - sb, w2 - cb, w3), axis=-1)
-    m = np.asarray(kappa)[..., None] * bo + projected_dipole(b, w, kappa_w)
-    m = m + np.stack(np.broadcast_arrays(0.0, c1 * np.cos(tau) / math.sin(i), 0.0), axis=-1)
-    t = np.cross(m, b)
-    return rotor_reduced_rates(x, t[..., 0], t[..., 1], t[..., 2], a)
-
-
-def rotor_normalised_rhs(tau, state, axial_ratio, momentum, restoring, damping, inclination):
-    r"""Closed-loop dimensionless model of the symmetric rotor spacecraft.
-
-    Parameters
-    ----------
-    tau : float
-        τ = ω0 t = u, the argument of latitude [-].
-    state : array_like, shape (5, ...)
-        α, β [rad], h = H/(ω0 B), Ω2, Ω3 [-].
-    axial_ratio : float
-        a = A/B [-].
-    momentum : float
-        c1 = H0/(ω0 B) [-].
-    restoring : float or array_like
-        κ = k B0²/(ω0² B) [-]; broadcasts against the trailing axes of ``state``.
-    damping : float or array_like
-        κ_w = k_w/(ω0 B) ≥ 0 [-]; broadcasts likewise.
-    inclination : float
-        i, sin i ≠ 0 [rad].
-
-    Returns
-    -------
-    ndarray, shape (5, ...)
-        d/dτ of the state [-], with m̃ = κ b_o + (0, c1 cos τ/sin i, 0) + κ_w (w × b)/|b|²,
-        b = R3(β)R2(α) b_o, w = ((h − c1 cos²τ)/a − sin β, Ω2 − cos β, Ω3) and the torque
-        m̃ × b in :func:`magbench.dynamics.rotor_reduced_rhs`. The reference
-        (0, 0, c1 cos²τ, 1, 0) is an exact solution.
-
-    Notes
-    -----
-    Rotor slides, slides "Equations of motion" to "Control implementation" (seed lines
-    29–87): the equilibrium law (seed lines 63–69) with
-    :func:`magbench.control.rotor_equilibrium_dipole` at B0 = ω0 = 1 and the damping of
-    :func:`magbench.control.projected_damping_dipole` (``rotor_spin.md`` §4).
-    """
-    x = as_finite("state", state)
-    if x.shape[:1] != (5,):
-        raise ValueError(f"state must have shape (5, ...) (α, β, h, Ω2, Ω3), got shape {x.shape}")
-    a, c1, i = rotor_model_numbers(axial_ratio, momentum, inclination)
-    kappa = as_finite("restoring", restoring)
-    kappa_w = as_in_range("damping", damping, 0.0, math.inf)
-    return _closed_loop(float(as_finite("tau", tau)), x, a, c1, kappa, kappa_w, i)
-
-
-#: The normalised loop: "compiled" (:mod:`magbench.sim._normalised_rotor_kernel`) or
-#: "numpy" (the reference, the same operations; the tests switch it to compare the two).
-_NORMALISED_ENGINE = "compiled"
-
-
-def _normalised_flow(a, c1, kappa, kappa_w, i, steps, orbits=1, record=False, real=None):
-    h = 2.0 * math.pi / steps
-
-    def flow(x):
-        out = [x] if record else None
-        for n in range(steps * orbits):
-            x = rk4_step(_closed_loop, n * h, x, h, args=(a, c1, kappa, kappa_w, i, real))
-            if record:
-                out.append(x)
-        return np.stack(out, axis=1) if record else x
-
-    def compiled_flow(x):
-        from ._normalised_rotor_kernel import normalised_flow
-
-        x = np.asarray(x, dtype=float)
-        shape = np.broadcast_shapes(x.shape[1:], np.shape(kappa), np.shape(kappa_w))
-        members = int(np.prod(shape))
-        state = np.array(np.broadcast_to(x, (5,) + shape), dtype=float).reshape(5, members)   # a writable copy
-        gains = [np.array(np.broadcast_to(g, shape), dtype=float).reshape(members) for g in (kappa, kappa_w)]
-        n = steps * orbits
-        out = np.empty((5, n + 1, members) if record else (0, 0, 0))
-        if real is None:
-            field = np.zeros(4)
-        else:
-            # orbital_dipole_b's terms that do not depend on u, computed as it computes them
-            tilt, lam = real
-            field = np.array([np.sin(i) * np.cos(tilt) - np.cos(i) * np.sin(tilt) * np.cos(lam),
-                              np.sin(tilt) * np.sin(lam),
-                              np.sin(i) * np.sin(tilt) * np.cos(lam) + np.cos(i) * np.cos(tilt),
-                              dipole_equatorial_b(1.0, 1.0)], dtype=float)
-        normalised_flow(state, n, h, float(a), float(c1), gains[0], gains[1], float(i), real is not None, field,
-                        record, out)
-        if record:
-            return out.reshape((5, n + 1) + shape)
-        return state.reshape((5,) + shape)
-
-    return compiled_flow if _NORMALISED_ENGINE == "compiled" else flow
-
-
-def rotor_finite_difference_monodromy(axial_ratio, momentum, restoring, damping, inclination, *, steps=2000,
-                                      perturbation=1e-6):
-    r"""Monodromy of the nonlinear closed loop by central differences about the reference.
-
-    Parameters
-    ----------
-    axial_ratio : float
-        a [-].
-    momentum : float
-        c1 [-].
-    restoring : float
-        κ [-].
-    damping : float
-        κ_w ≥ 0 [-].
-    inclination : float
-        i [rad].
-    steps : int, optional
-        RK4 steps of the nonlinear model per orbit [-].
-    perturbation : float, optional
-        δ of each state component [-].
-
-    Returns
-    -------
-    ndarray, shape (5, 5)
-        Φ(2π) [-], independent of :func:`magbench.control.rotor_linearised_matrices`.
-
-    Notes
-    -----
-    Rotor slides, slide "Ensuring stability" (seed line 80): a check of the linearisation
-    with :func:`magbench.control.finite_difference_monodromy` on
-    :func:`rotor_normalised_rhs` started at (0, 0, c1, 1, 0), τ = 0.
-    """
-    a, c1, i = rotor_model_numbers(axial_ratio, momentum, inclination)
-    kappa = float(as_finite("restoring", restoring))
-    kappa_w = float(as_in_range("damping", damping, 0.0, math.inf))
-    n = int(as_positive_scalar("steps", steps))
-    flow = _normalised_flow(a, c1, kappa, kappa_w, i, n)
-    return finite_difference_monodromy(lambda xs: flow(xs.T).T, np.array([0.0, 0.0, c1, 1.0, 0.0]),
-                                       perturbation)
-
-
-def simulate_rotor_normalised(axial_ratio, momentum, restoring, damping, inclination, initial_state, orbits, *,
-                              steps_per_orbit=1000, real_dipole_tilt=0.0, real_node_phase=0.0):
-    r"""Simulate the dimensionless closed loop for many members at once (RK4).
-
-    Parameters
-    ----------
-    axial_ratio : float
-        a [-].
-    momentum : float
-        c1 [-].
-    restoring : float or array_like
-        κ [-]; per member if an array (M,).
-    damping : float or array_like
-        κ_w ≥ 0 [-]; per member if an array (M,).
-    inclination : float
-        i [rad].
-    initial_state : array_like, shape (5,) or (5, M)
-        (α, β, h, Ω2, Ω3) at τ = 0 [rad, -].
-    orbits : int
-        Number of orbits [-].
-    steps_per_orbit : int, optional
-        RK4 steps per orbit, also the samples [-].
-    real_dipole_tilt : float, optional
-        δ of the real dipole, in [0, π] [rad]; 0 (default): the real field is the program field.
-        Otherwise the torque and the damping see the tilted dipole of
-        :func:`magbench.earth.orbital_dipole_b` (Kovalenko (1975) eq. (2.36)) while the restoring
-        term keeps the direct dipole (a program-vs-real field mismatch, ``rotor_spin.md`` §9).
-    real_node_phase : float, optional
-        Λ of that dipole, constant (non-rotating Earth) [rad].
-
-    Returns
-    -------
-    SimulationResult
-        ``time`` τ [-]; states ``alpha``, ``beta``, ``h``, ``rate_2``, ``rate_3`` of shape
-        (K, M) (or (K,)).
-
-    Notes
-    -----
-    Rotor slides, slides "Equations of motion" to "Control implementation" (seed lines 29–87), in the normalised form of ``rotor_spin.md`` §4, Monte
-    Carlo members on the trailing axis of the state (the model's (5, ...) layout).
-    """
-    a, c1, i = rotor_model_numbers(axial_ratio, momentum, inclination)
-    kappa = as_finite("restoring", restoring)
-    kappa_w = as_in_range("damping", damping, 0.0, math.inf)
-    x0 = as_finite("initial_state", initial_state)
-    if x0.shape[:1] != (5,):
-        raise ValueError(f"initial_state must have shape (5,) or (5, M), got shape {x0.shape}")
-    n_orbits = int(as_positive_scalar("orbits", orbits))
-    steps = int(as_positive_scalar("steps_per_orbit", steps_per_orbit))
-    tilt = float(as_in_range("real_dipole_tilt", real_dipole_tilt, 0.0, math.pi, unit="rad"))
-    real = None if tilt == 0.0 else (tilt, float(as_finite("real_node_phase", real_node_phase)))
-    states = _normalised_flow(a, c1, kappa, kappa_w, i, steps, n_orbits, record=True, real=real)(x0)
-    time = np.arange(steps * n_orbits + 1) * (2.0 * math.pi / steps)
-    return SimulationResult(time, states, np.empty((0, time.size)), np.empty((0, time.size)),
-                            ("alpha", "beta", "h", "rate_2", "rate_3"), (), (),
-                            params={"axial_ratio": a, "momentum": c1, "restoring": kappa, "damping": kappa_w,
-                                    "inclination": i, "real_dipole_tilt": tilt,
-                                    "real_node_phase": float(real_node_phase)})
-
-
 def _body_constants(satellite, orbit, damping):
     """The constants vector of the compiled right-hand side (:mod:`magbench.sim._rotor_kernel`)."""
     from ._rotor_kernel import rotor_constants
@@ -626,80 +419,3 @@ def simulate_rotor(satellite, orbit, duration, *, initial_angles=(0.0, 0.0, 0.0)
                     inputs={"duration": t_end, "initial_angles": tuple(angles0.tolist()),
                             "initial_rate_error": tuple(dw.tolist()), "sample_interval": dt, "rtol": rtol,
                             "atol": atol, "damping": damping, "method": method, "nfev": int(sol.nfev)})
-
-
-def simulate_turning_field_gyrostat(inertia, rotor_momentum, damping_gain, field_rate, initial_rate, initial_field,
-                                    field_axis, duration, *, samples=301):
-    r"""Simulate a damped gyrostat in a field that turns about a fixed inertial axis (no attitude needed).
-
-    Parameters
-    ----------
-    inertia : array_like, shape (3,) or (3, 3)
-        Principal moments of body + rotor (rotor counted as rigid), axis 1 the rotor axis;
-        a (3, 3) tensor must be diagonal [kg·m²].
-    rotor_momentum : float
-        J_f ν along body axis 1 [N·m·s].
-    damping_gain : float
-        k in the torque −k w⊥ [N·m·s]: k > 0 is the damping of
-        :func:`magbench.control.projected_damping_dipole`, k < 0 the slides' printed sign
-        read as a torque (:func:`magbench.control.slides_printed_damping_torque`).
-    field_rate : float
-        Ω_f, the field's turning rate in inertial space [rad/s].
-    initial_rate : array_like, shape (3,)
-        ω at t = 0, body axes [rad/s].
-    initial_field : array_like, shape (3,)
-        B at t = 0, body axes, not zero [T].
-    field_axis : array_like, shape (3,)
-        The unit axis the field turns about, body axes at t = 0 [-].
-    duration : float
-        Simulated time [s].
-    samples : int, optional
-        Number of equally spaced samples from 0 to ``duration``, ≥ 2 [-].
-
-    Returns
-    -------
-    SimulationResult
-        ``time`` [s]; states ``rate_x`` … ``rate_z`` [rad/s], ``field_x`` … ``field_z`` [T],
-        ``axis_x`` … ``axis_z`` [-], body axes, one row each.
-
-    Notes
-    -----
-    Rotor slides, slide "Control implementation" (seed lines 85–87): the damping and its
-    printed sign on the gyrostat of :func:`magbench.dynamics.gyrostat_turning_field_rhs`
-    (its compiled twin), the field turning as a circular orbit's does at Ω_f = ω0
-    (``rotor_spin.md`` §9). DOP853 through :func:`magbench.integrate.solve_adaptive` in
-    scipy, rtol 1e-9, atol 1e-12: the power −k |w⊥|² is then resolved to well below the
-    energy's change over the run.
-    """
-    j = as_finite("inertia", inertia)
-    if j.shape == (3, 3):
-        if np.any(j != np.diag(np.diag(j))):
-            raise ValueError(f"inertia must be diagonal (principal axes) [kg·m²], got {j.tolist()}")
-        j = np.diag(j).copy()
-    if j.shape != (3,) or np.any(j <= 0):
-        raise ValueError(f"inertia must be three positive principal moments [kg·m²], got {j.tolist()}")
-    h = float(as_finite("rotor_momentum", rotor_momentum))
-    k = float(as_finite("damping_gain", damping_gain))
-    rate = float(as_finite("field_rate", field_rate))
-    vectors = []
-    for name, value in (("initial_rate", initial_rate), ("initial_field", initial_field), ("field_axis", field_axis)):
-        v = as_finite(name, value)
-        if v.shape != (3,):
-            raise ValueError(f"{name} must have shape (3,), got shape {v.shape}")
-        vectors.append(v)
-    if not np.any(vectors[1]):
-        raise ValueError("initial_field must not be zero (the damping divides by |B|²)")
-    norm = float(np.linalg.norm(vectors[2]))
-    if abs(norm - 1.0) > 1e-9:
-        raise ValueError(f"field_axis must be a unit vector, got |field_axis| = {shown(norm)}")
-    t_end = as_positive_scalar("duration", duration, unit="s")
-    n = int(as_count("samples", samples, minimum=2))
-    from ..dynamics.kernels import gyrostat_turning_field_rhs
-
-    time = np.linspace(0.0, t_end, n)
-    sol = solve_adaptive(gyrostat_turning_field_rhs, (0.0, t_end), np.concatenate(vectors), t_eval=time, rtol=1e-9,
-                         atol=1e-12, method="DOP853", args=(j, h, k, rate))
-    labels = tuple(f"{kind}_{axis}" for kind in ("rate", "field", "axis") for axis in "xyz")
-    return SimulationResult(time, sol.y, np.empty((0, n)), np.empty((0, n)), labels, (), (),
-                            params={"inertia": j, "rotor_momentum": h, "damping_gain": k, "field_rate": rate,
-                                    "duration": t_end, "nfev": int(sol.nfev)})

@@ -15,7 +15,7 @@ from magbench.chapters.ch06_rotor.defaults import default_rotor_orbit, default_r
 from magbench.control import floquet_multipliers, projected_damping_dipole, rotor_equilibrium_dipole
 from magbench.dynamics import gyrostat_momentum, gyrostat_rhs, semi_body_axes
 from magbench.earth import CircularOrbit, dipole_equatorial_b
-from magbench.sim import spinning
+from magbench.sim import rotor_normalised, spinning
 from magbench.sim.spinning import (RotorSatellite, rotor_body_rhs, rotor_dimensionless,
                                    rotor_finite_difference_monodromy, rotor_floquet_multipliers,
                                    rotor_linearised_matrices, rotor_normalised_rhs, rotor_satellite_from_dimensionless,
@@ -117,7 +117,7 @@ def test_compiled_normalised_loop_equals_the_numpy_loop(monkeypatch, case):
     xm = np.array([[0.1, 0.0, -0.4], [0.0, -0.05, 0.2], [C1, C1 - 0.1, C1], [1.0, 1.1, 1.0], [0.0, 0.02, -0.1]])
     runs = []
     for engine in ("numpy", "compiled"):
-        monkeypatch.setattr(spinning, "_NORMALISED_ENGINE", engine)
+        monkeypatch.setattr(rotor_normalised, "_NORMALISED_ENGINE", engine)
         if case == "monodromy":
             runs.append(rotor_finite_difference_monodromy(A, C1, 4.0, 2.0, INC, steps=200))
             continue
