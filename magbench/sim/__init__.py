@@ -1,16 +1,10 @@
 """Simulations composed from the physics families: one integrator (:func:`rk4_step`), one
 result type (:class:`SimulationResult`), the mock-up's PID loop (:mod:`.pid_loop`) and the
-<<<<<<< HEAD
-bench loop (:mod:`.bench`), B-dot detumbling on orbit (:mod:`.detumble`, in segments
-whose step follows the rate: :mod:`.detumble_segments`), the spinning spacecraft with a
-coaxial rotor (:mod:`.spinning`, its normalised model :mod:`.rotor_normalised`, the turning-field run
-:mod:`.turning_field`), Kovalenko's relay spin correction (:mod:`.spin_correction`)
-and the passive magnetic satellite (:mod:`.passive`).
-=======
-bench loop (the :mod:`.bench` package), B-dot detumbling on orbit (:mod:`.detumble`), the spinning spacecraft with a
-coaxial rotor (:mod:`.spinning`, its normalised model :mod:`.rotor_normalised`, the turning-field run
-:mod:`.turning_field`) and the passive magnetic satellite (:mod:`.passive`).
->>>>>>> h-bench
+bench loop (the :mod:`.bench` package), B-dot detumbling on orbit (:mod:`.detumble`, in segments
+whose step follows the rate: :mod:`.detumble_segments`), the spinning spacecraft with a coaxial rotor
+(:mod:`.spinning`, its normalised model :mod:`.rotor_normalised`, the turning-field run
+:mod:`.turning_field`), Kovalenko's relay spin correction (:mod:`.spin_correction`) and the passive
+magnetic satellite (:mod:`.passive`).
 
 Re-exports the integrator, the result type, the mock-up's PID loop, detumbling, the spinning
 spacecraft and the passive satellite; the bench loop is imported from its package.
