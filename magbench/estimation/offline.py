@@ -71,6 +71,25 @@ def two_sided_rest(gyro, accel, dt, rest_detector=None):
     return (forward | backward[::-1]) & quiet_forward & quiet_backward[::-1]
 
 
+def _checked_record(gyro, accel, dt, tau):
+    """Checked gyro and accel (N, 3) arrays, sample interval and low-pass cut-off [Hz] of
+    :func:`offline_tilt`."""
+    rate = _check_series3("gyro", gyro)
+    acc = _check_series3("accel", accel)
+    if rate.shape != acc.shape:
+        raise ValueError(f"gyro and accel must have the same shape (N, 3), got {rate.shape} and {acc.shape}")
+    if len(rate) < MIN_SAMPLES:
+        raise ValueError(f"gyro and accel must have at least {MIN_SAMPLES} samples for the forward-backward "
+                         f"low-pass, got {len(rate)}")
+    step = as_positive_scalar("dt", dt, unit="s")
+    time_constant = float(as_positive("tau", tau, unit="s"))
+    cutoff = np.sqrt(2.0) / (2.0 * np.pi * time_constant)
+    if cutoff >= 0.5 / step:
+        raise ValueError(f"tau must exceed {2.0 * np.sqrt(2.0) * step / (2.0 * np.pi):g} s (cut-off below the "
+                         f"Nyquist frequency {0.5 / step:g} Hz), got {shown(time_constant)}")
+    return rate, acc, step, cutoff
+
+
 def offline_tilt(gyro, accel, dt, *, tau=3.0, rest_bias=True, rest_detector=None):
     r"""3-D tilt (inclination) of a logged record, using the past and the future of each sample.
 
@@ -157,19 +176,7 @@ def offline_tilt(gyro, accel, dt, *, tau=3.0, rest_bias=True, rest_detector=None
     >>> round(float(np.degrees(np.arccos(up[-1, 2]))), 9)      # tilted 0.3 rad about x
     17.188733854
     """
-    rate = _check_series3("gyro", gyro)
-    acc = _check_series3("accel", accel)
-    if rate.shape != acc.shape:
-        raise ValueError(f"gyro and accel must have the same shape (N, 3), got {rate.shape} and {acc.shape}")
-    if len(rate) < MIN_SAMPLES:
-        raise ValueError(f"gyro and accel must have at least {MIN_SAMPLES} samples for the forward-backward "
-                         f"low-pass, got {len(rate)}")
-    step = as_positive_scalar("dt", dt, unit="s")
-    time_constant = float(as_positive("tau", tau, unit="s"))
-    cutoff = np.sqrt(2.0) / (2.0 * np.pi * time_constant)
-    if cutoff >= 0.5 / step:
-        raise ValueError(f"tau must exceed {2.0 * np.sqrt(2.0) * step / (2.0 * np.pi):g} s (cut-off below the "
-                         f"Nyquist frequency {0.5 / step:g} Hz), got {shown(time_constant)}")
+    rate, acc, step, cutoff = _checked_record(gyro, accel, dt, tau)
     if rest_bias:
         rest = two_sided_rest(rate, acc, step, rest_detector)
         if rest.any():

@@ -426,6 +426,54 @@ def _compiled_loop(loop, q0, w0):
     return state, rates
 
 
+def _checked_law(duration, gain, max_dipole, law, mode, estimator):
+    """Checked duration, gain (a column (M, 1) for member gains) and dipole limit of
+    :func:`simulate_detumble`; the law, mode and estimator names checked too."""
+    span = as_positive_scalar("duration", duration, unit="s")
+    k = as_positive("gain", gain, unit="N·m·s" if law == "projected" else "A·m²·s/T")
+    k = k[:, None] if k.ndim == 1 else k
+    limit = as_positive_or_infinite("max_dipole", max_dipole, unit="A·m²")
+    as_choice("law", law, LAWS)
+    as_choice("mode", mode, MODES)
+    as_choice("estimator", estimator, ESTIMATORS)
+    return span, k, limit
+
+
+def _checked_timing(control_interval, on_time, off_time, step, record_interval, gravity_gradient):
+    """Checked sampling interval, duty-cycle times and record interval of
+    :func:`simulate_detumble` (``gravity_gradient`` checked to be a bool)."""
+    delta = as_positive_scalar("control_interval", control_interval, unit="s")
+    t_on = as_positive_scalar("on_time", on_time, unit="s")
+    t_off = as_positive_scalar("off_time", off_time, unit="s")
+    if record_interval is not None:
+        every = as_positive_scalar("record_interval", record_interval, unit="s")
+    elif step is None:
+        every = 1.0
+    else:
+        given = as_positive_scalar("step", step, unit="s")
+        every = given * max(1, round(1.0 / given))
+    if not isinstance(gravity_gradient, (bool, np.bool_)):
+        raise ValueError(f"gravity_gradient must be True or False, got {gravity_gradient!r}")
+    return delta, t_on, t_off, every
+
+
+def _step_counts(mode, step, w0, delta, t_on, t_off, every, span):
+    """The integration step h and what is counted in steps: (steps per sample, off steps,
+    on steps), steps per record, the number of records and of steps. Every interval the
+    mode uses must be a whole number of steps, so that samples, windows and records fall
+    on step boundaries."""
+    speed = float(np.max(np.linalg.norm(w0, axis=-1)))
+    h = (_default_step(mode, delta, t_off, every, speed) if step is None
+         else as_positive_scalar("step", step, unit="s"))
+    per_sample = _multiple("control_interval", delta, h) if mode == "sampled" else 0
+    n_off = _multiple("off_time", t_off, h) if mode == "duty" else 0
+    n_on = _multiple("on_time", t_on, h) if mode == "duty" else 0
+    stride = _multiple("record_interval", every, h)
+    n_records = int(np.ceil(span / every - 1e-9)) + 1
+    n_steps = (n_records - 1) * stride
+    return h, (per_sample, n_off, n_on), stride, n_records, n_steps
+
+
 def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dipole, law="bdot",
                       mode="continuous", control_interval=0.1, on_time=16.0, off_time=1.0, estimator="model",
                       step=None, gravity_gradient=True, record_interval=None, engine="compiled"):
@@ -506,34 +554,10 @@ def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dip
     ((1, 61), True)
     """
     j, q0, w0, members = _initial_members(inertia, orbit, attitude, rate, gain)
-    span = as_positive_scalar("duration", duration, unit="s")
-    k = as_positive("gain", gain, unit="N·m·s" if law == "projected" else "A·m²·s/T")
-    k = k[:, None] if k.ndim == 1 else k
-    limit = as_positive_or_infinite("max_dipole", max_dipole, unit="A·m²")
-    as_choice("law", law, LAWS)
-    as_choice("mode", mode, MODES)
-    as_choice("estimator", estimator, ESTIMATORS)
-    delta = as_positive_scalar("control_interval", control_interval, unit="s")
-    t_on = as_positive_scalar("on_time", on_time, unit="s")
-    t_off = as_positive_scalar("off_time", off_time, unit="s")
-    if record_interval is not None:
-        every = as_positive_scalar("record_interval", record_interval, unit="s")
-    elif step is None:
-        every = 1.0
-    else:
-        given = as_positive_scalar("step", step, unit="s")
-        every = given * max(1, round(1.0 / given))
-    if not isinstance(gravity_gradient, (bool, np.bool_)):
-        raise ValueError(f"gravity_gradient must be True or False, got {gravity_gradient!r}")
-    speed = float(np.max(np.linalg.norm(w0, axis=-1)))
-    h = (_default_step(mode, delta, t_off, every, speed) if step is None
-         else as_positive_scalar("step", step, unit="s"))
-    per_sample = _multiple("control_interval", delta, h) if mode == "sampled" else 0
-    n_off = _multiple("off_time", t_off, h) if mode == "duty" else 0
-    n_on = _multiple("on_time", t_on, h) if mode == "duty" else 0
-    stride = _multiple("record_interval", every, h)
-    n_records = int(np.ceil(span / every - 1e-9)) + 1
-    n_steps = (n_records - 1) * stride
+    span, k, limit = _checked_law(duration, gain, max_dipole, law, mode, estimator)
+    delta, t_on, t_off, every = _checked_timing(control_interval, on_time, off_time, step, record_interval,
+                                                gravity_gradient)
+    h, counts, stride, n_records, n_steps = _step_counts(mode, step, w0, delta, t_on, t_off, every, span)
     check_member_steps(members, n_steps)
 
     law_kk = k[:, 0] if k.ndim == 2 else k
@@ -541,7 +565,7 @@ def simulate_detumble(inertia, orbit, attitude, rate, duration, *, gain, max_dip
     if engine not in ("compiled", "numpy"):
         raise ValueError(f"engine must be 'compiled' or 'numpy', got {engine!r}")
     loop = _Loop(j, orbit, orbit.mean_motion if gravity_gradient else None, law, law_kk, lim, mode, estimator,
-                 (delta, t_off, per_sample, n_off, n_on), h, n_steps, stride)
+                 (delta, t_off) + counts, h, n_steps, stride)
     compiled = engine == "compiled" and not (mode == "duty" and estimator == "propagate")
     state, rates = (_compiled_loop if compiled else _numpy_loop)(loop, q0, w0)
     inputs = dict(inertia=j, orbit=orbit, attitude=q0, rate=w0, duration=span, gain=gain, max_dipole=max_dipole,

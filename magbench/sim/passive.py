@@ -229,6 +229,40 @@ def _rhs(time, state, fields, inertia, magnet, axes, volume, material):
     return np.concatenate([dynamics_kernels.quaternion_rate(q, w), w_rate, rods_rate], axis=-1)
 
 
+def _passive_members(satellite, orbit, angular_momentum, nutation, momentum_direction, proper_rotation):
+    """Initial attitudes (M, 4) and body rates (M, 3) of :func:`simulate_passive`, the orbit
+    phases, the number of members M and whether any argument has a member axis (without one
+    the run's signals drop it)."""
+    q0, w0 = initial_passive_state(satellite, angular_momentum, nutation, momentum_direction, proper_rotation)
+    phase = np.asarray(orbit.argument_of_latitude0)
+    if phase.ndim > 1 or (phase.ndim == 1 and q0.shape[0] not in (1, phase.size)):
+        raise ValueError(f"orbit.argument_of_latitude0 {phase.shape} must agree with the {q0.shape[0]} members")
+    members = max(q0.shape[0], phase.size if phase.ndim else 1)
+    has_members = members > 1 or any(np.ndim(x) >= 1 for x in (angular_momentum, nutation, proper_rotation)) \
+        or np.ndim(momentum_direction) == 2 or phase.ndim == 1
+    return q0, w0, phase, members, has_members
+
+
+def _recorder(records, inertia, orbit, members):
+    """The function ``record(j, t, x)`` that writes sample j of states x (M, 7 + rods) at time
+    t into ``records[j]``: |L|, nutation, axis–B angle, L–B angle and |ω| (the numpy loop's;
+    the compiled kernel records the same quantities itself)."""
+
+    def record(j, t, x):
+        q, w = x[:, :4], x[:, 4:7]
+        momentum = inertia * w
+        big_l = np.linalg.norm(momentum, axis=-1)
+        b = dynamics_kernels.rotate(q, np.broadcast_to(orbit.field(t), (members, 3)), -1.0)
+        b_norm = np.linalg.norm(b, axis=-1)
+        safe = np.where(big_l > 0, big_l, 1.0)
+        records[j] = [big_l, np.arccos(np.clip(momentum[:, 2] / safe, -1.0, 1.0)),
+                      np.arccos(np.clip(b[:, 2] / b_norm, -1.0, 1.0)),
+                      np.arccos(np.clip(np.sum(momentum * b, axis=-1) / (safe * b_norm), -1.0, 1.0)),
+                      np.linalg.norm(w, axis=-1)]
+
+    return record
+
+
 def simulate_passive(satellite, orbit, angular_momentum, nutation, momentum_direction, duration, *,
                      proper_rotation=0.0, sample_interval=60.0, max_rate_step=0.04, engine="compiled"):
     r"""Simulate the passive magnetic satellite (magnet + hysteresis rods) from a Table 1 state.
@@ -294,13 +328,8 @@ def simulate_passive(satellite, orbit, angular_momentum, nutation, momentum_dire
     limit = as_positive_scalar("max_rate_step", max_rate_step, unit="rad")
     if engine not in ("compiled", "numpy"):
         raise ValueError(f"engine must be 'compiled' or 'numpy', got {engine!r}")
-    q0, w0 = initial_passive_state(satellite, angular_momentum, nutation, momentum_direction, proper_rotation)
-    phase = np.asarray(orbit.argument_of_latitude0)
-    if phase.ndim > 1 or (phase.ndim == 1 and q0.shape[0] not in (1, phase.size)):
-        raise ValueError(f"orbit.argument_of_latitude0 {phase.shape} must agree with the {q0.shape[0]} members")
-    members = max(q0.shape[0], phase.size if phase.ndim else 1)
-    has_members = members > 1 or any(np.ndim(x) >= 1 for x in (angular_momentum, nutation, proper_rotation)) \
-        or np.ndim(momentum_direction) == 2 or phase.ndim == 1
+    q0, w0, phase, members, has_members = _passive_members(satellite, orbit, angular_momentum, nutation,
+                                                           momentum_direction, proper_rotation)
     axes = np.array(satellite.rod_axes)
     state = np.concatenate([np.broadcast_to(q0, (members, 4)), np.broadcast_to(w0, (members, 3)),
                             np.zeros((members, axes.shape[0]))], axis=-1)
@@ -311,28 +340,10 @@ def simulate_passive(satellite, orbit, angular_momentum, nutation, momentum_dire
     n_samples = int(np.ceil(span / interval - 1e-9))
     times = interval * np.arange(n_samples + 1)
     records = np.empty((n_samples + 1, 5, members))
-
-    def record(j, t, x):
-        q, w = x[:, :4], x[:, 4:7]
-        momentum = inertia * w
-        big_l = np.linalg.norm(momentum, axis=-1)
-        b = dynamics_kernels.rotate(q, np.broadcast_to(orbit.field(t), (members, 3)), -1.0)
-        b_norm = np.linalg.norm(b, axis=-1)
-        safe = np.where(big_l > 0, big_l, 1.0)
-        records[j] = [big_l, np.arccos(np.clip(momentum[:, 2] / safe, -1.0, 1.0)),
-                      np.arccos(np.clip(b[:, 2] / b_norm, -1.0, 1.0)),
-                      np.arccos(np.clip(np.sum(momentum * b, axis=-1) / (safe * b_norm), -1.0, 1.0)),
-                      np.linalg.norm(w, axis=-1)]
-
+    record = _recorder(records, inertia, orbit, members)
     if engine == "compiled":
-        from ..earth.kernels import orbit_geometry
-        from ._passive_kernel import run_passive
-
-        state = np.ascontiguousarray(state, dtype=float)
-        u0 = np.ascontiguousarray(np.broadcast_to(phase, (members,)), dtype=float)
-        steps = run_passive(state, u0, orbit_geometry(orbit), inertia, float(satellite.magnet_moment),
-                            np.ascontiguousarray(axes, dtype=float), float(satellite.rod_volume), float(hc),
-                            float(bs), float(k), float(interval), n_samples, float(limit), records)
+        steps, state = _run_compiled(satellite, orbit, state, phase, axes, (hc, bs, k), interval, n_samples, limit,
+                                     records)
     else:
         steps, state = _run_numpy(state, times, records, record, args, interval, limit, orbit, inertia, a, c)
     squeeze = (lambda x: x) if has_members else (lambda x: x[0])
@@ -344,6 +355,22 @@ def simulate_passive(satellite, orbit, angular_momentum, nutation, momentum_dire
               "max_rate_step": limit, "engine": engine, "steps": steps, "initial_attitude": q0, "initial_body_rate": w0}
     return PassiveRun(times, *signals, attitude=squeeze(state[:, :4]), body_rate=squeeze(state[:, 4:7]),
                       rod_induction=squeeze(state[:, 7:]), inputs=inputs)
+
+
+def _run_compiled(satellite, orbit, state, phase, axes, rod_constants, interval, n_samples, limit, records):
+    """The numba loop (:func:`magbench.sim._passive_kernel.run_passive`, ``engine="compiled"``),
+    member by member; it fills ``records`` and returns the steps taken and the final states."""
+    from ..earth.kernels import orbit_geometry
+    from ._passive_kernel import run_passive
+
+    hc, bs, k = rod_constants
+    members = state.shape[0]
+    state = np.ascontiguousarray(state, dtype=float)
+    u0 = np.ascontiguousarray(np.broadcast_to(phase, (members,)), dtype=float)
+    steps = run_passive(state, u0, orbit_geometry(orbit), satellite.inertia, float(satellite.magnet_moment),
+                        np.ascontiguousarray(axes, dtype=float), float(satellite.rod_volume), float(hc),
+                        float(bs), float(k), float(interval), n_samples, float(limit), records)
+    return steps, state
 
 
 def _run_numpy(state, times, records, record, args, interval, limit, orbit, inertia, a, c):

@@ -190,27 +190,12 @@ def simulator_field_checks():
                                     "oscillation_amplitude", "sim_built_radius", "sim_built_spacing",
                                     "sim_turns", "sim_current", "sim_wire_diameter", "copper_resistivity",
                                     "sim_design_h")}
-    h_printed_eq = float(dynamics.oscillation_field_h(v["mockup_inertia"], v["mockup_magnet_moment"],
-                                                   v["oscillation_period"]))
-    h_with_a = float(dynamics.oscillation_field_h(v["mockup_inertia"], v["mockup_magnet_moment"],
-                                               v["oscillation_period"], v["oscillation_amplitude"]))
-    a, d, n, i = v["sim_built_radius"], v["sim_built_spacing"], v["sim_turns"], v["sim_current"]
-    h_built = float(fields.helmholtz_center_h(i, n, a, d))
-    measured = m["sim-center-h"].value
-    r_max, i_max = printed["sim-coil-resistance-max"].value, printed["sim-current-max"].value
-    voltage = float(hardware.winding_voltage(a, n, v["sim_wire_diameter"], v["copper_resistivity"], i))
-    resistance = float(hardware.winding_resistance(a, n, v["sim_wire_diameter"], v["copper_resistivity"]))
-    ni_printed = printed["thesis-sim-ampere-turns"].value_as_printed
-    n_printed_r = round(printed["thesis-sim-coil-resistance"].value_as_printed / resistance * n)
-    round2, helm = ["round"] * 2, ([1.0, 1.0], [-0.5, 0.5], [1.0, 1.0])
-    four = (["round"] * 4, [1.0] * 4, [-1.0, -0.25, 0.25, 1.0], [7.0, 3.0, 3.0, 7.0])
-    four_dev = fields.coaxial_system_sphere_nonuniformity(*four, 2.0 / 3.0)
-    half_radius_dev = fields.coaxial_system_sphere_nonuniformity(*four, 0.5)
-    helmholtz_radius = (2.0 / 3.0) / fields.uniform_sphere_radius(1.0, 1.0, four_dev)
-    rubens = (["square"] * 5, [1.0] * 5, [-0.5, -0.25, 0.0, 0.25, 0.5], [19.0, 4.0, 10.0, 4.0, 19.0])
-    rubens_dev = 100 * fields.coaxial_system_cylinder_nonuniformity(*rubens, 0.25, 0.5)
+    return _moment_checks(printed, v) + _thesis_field_checks(printed, m, v) + _kovalenko_coil_checks(kov)
+
+
+def _moment_checks(printed, v):
+    """Thesis §3.2: the coil moment for a 60 s and a 5 min swing at the design field."""
     design_h = v["sim_design_h"]
-    deviation_printed = printed["sim-center-h-deviation"]
     # Thesis §3.2 solves eq. (15) for the moment, with A, at the chosen field: one line, two periods.
     j, amp, t = v["mockup_inertia"], v["oscillation_amplitude"], v["oscillation_period"]
     m60 = float(dynamics.oscillation_moment(j, design_h, t, amp))
@@ -219,7 +204,7 @@ def simulator_field_checks():
     t5 = 5 * 60.0
     m5 = float(dynamics.oscillation_moment(j, design_h, t5, amp))
     m5_no_a = float(dynamics.oscillation_moment(j, design_h, t5))
-    moment_checks = [
+    return [
         printed_check(
             printed["thesis-mtq-moment-60s"], id="thesis-mtq-moment-60s", chapter="ch02",
             location="§3.2", quantity=f"Coil moment for a {t:g} s swing at {design_h:g} A/m",
@@ -238,7 +223,26 @@ def simulator_field_checks():
                          f"({m5_no_a:.4f} A·m² without ψ0)."),
             computation="magbench.dynamics.oscillation_moment"),
     ]
-    return moment_checks + [
+
+
+def _thesis_field_checks(printed, m, v):
+    """Thesis §2.1–2.4: eq. (15)'s field with and without ψ0, a coil's voltage, the power at
+    the current limit and the measured centre field against the coils as built."""
+    h_printed_eq = float(dynamics.oscillation_field_h(v["mockup_inertia"], v["mockup_magnet_moment"],
+                                                   v["oscillation_period"]))
+    h_with_a = float(dynamics.oscillation_field_h(v["mockup_inertia"], v["mockup_magnet_moment"],
+                                               v["oscillation_period"], v["oscillation_amplitude"]))
+    a, d, n, i = v["sim_built_radius"], v["sim_built_spacing"], v["sim_turns"], v["sim_current"]
+    h_built = float(fields.helmholtz_center_h(i, n, a, d))
+    measured = m["sim-center-h"].value
+    r_max, i_max = printed["sim-coil-resistance-max"].value, printed["sim-current-max"].value
+    voltage = float(hardware.winding_voltage(a, n, v["sim_wire_diameter"], v["copper_resistivity"], i))
+    resistance = float(hardware.winding_resistance(a, n, v["sim_wire_diameter"], v["copper_resistivity"]))
+    ni_printed = printed["thesis-sim-ampere-turns"].value_as_printed
+    n_printed_r = round(printed["thesis-sim-coil-resistance"].value_as_printed / resistance * n)
+    design_h = v["sim_design_h"]
+    deviation_printed = printed["sim-center-h-deviation"]
+    return [
         printed_check(
             printed["thesis-eq15-field"], id="thesis-eq15-required-field", chapter="ch02",
             location="§2.1, eq. (15)", quantity="Field for a 60 s swing, eq. (15) as printed",
@@ -280,6 +284,20 @@ def simulator_field_checks():
                          f"and the measurement lies {100 * (1 - measured / h_built):.0f} % below it. The agreement rests on "
                          "the NI slip."),
             computation="magbench.fields.helmholtz_center_h"),
+    ]
+
+
+def _kovalenko_coil_checks(kov):
+    """Kovalenko §3.4: the Helmholtz pair, the square pair, Rubens' five squares and the
+    four-coil system, each against its printed uniformity or geometry."""
+    round2, helm = ["round"] * 2, ([1.0, 1.0], [-0.5, 0.5], [1.0, 1.0])
+    four = (["round"] * 4, [1.0] * 4, [-1.0, -0.25, 0.25, 1.0], [7.0, 3.0, 3.0, 7.0])
+    four_dev = fields.coaxial_system_sphere_nonuniformity(*four, 2.0 / 3.0)
+    half_radius_dev = fields.coaxial_system_sphere_nonuniformity(*four, 0.5)
+    helmholtz_radius = (2.0 / 3.0) / fields.uniform_sphere_radius(1.0, 1.0, four_dev)
+    rubens = (["square"] * 5, [1.0] * 5, [-0.5, -0.25, 0.0, 0.25, 0.5], [19.0, 4.0, 10.0, 4.0, 19.0])
+    rubens_dev = 100 * fields.coaxial_system_cylinder_nonuniformity(*rubens, 0.25, 0.5)
+    return [
         printed_check(
             kov["kov-helmholtz-cylinder-deviation"], id="kovalenko-helmholtz-cylinder", chapter="ch02",
             location="§3.4, p. 60",
