@@ -16,7 +16,7 @@ round each operation as the scalar code does, so this changes no number. The sch
 sampling instants (a few per hundred steps) run in their own scalar loop.
 
 The inertial field, its rate and the radial direction come from the numpy loop's field
-table (:class:`magbench.sim.detumble._FieldTable`) one block of steps at a time.
+table (:class:`magbench.sim._detumble_loops._FieldTable`) one block of steps at a time.
 ``cache=True`` keeps the compiled code in ``__pycache__`` (see :mod:`magbench.sim._passive_kernel`).
 """
 

@@ -24,7 +24,7 @@ from ..dynamics.axisymmetric import body_rate_from_momentum
 from ..earth.circular_orbit import CircularOrbit
 from ..hardware import kernels as hardware_kernels
 from ..hardware.hysteresis import limb_constants, rod_cycle_energy
-from .detumble import _Field
+from ._detumble_loops import _Field
 from ..integrate import rk4_step
 from .result import SimulationResult
 

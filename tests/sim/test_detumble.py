@@ -203,7 +203,7 @@ def test_detumble_time_bad_input():
 def test_inner_loop_laws_equal_the_control_laws():
     """The simulation's component-array laws give the numbers of magbench.control's."""
     from magbench.control import bdot_dipole, bdot_dipole_projected
-    from magbench.sim.detumble import _law_bdot, _law_projected
+    from magbench.sim._detumble_loops import _law_bdot, _law_projected
 
     rng = np.random.default_rng(3)
     b, b_rate = rng.normal(size=(2, 50, 3)) * np.array([3e-5, 1e-6])[:, None, None]
