@@ -4,7 +4,7 @@ bench loop (the :mod:`.bench` package), B-dot detumbling on orbit (:mod:`.detumb
 whose step follows the rate: :mod:`.detumble_segments`), the spinning spacecraft with a coaxial rotor
 (:mod:`.spinning`, its normalised model :mod:`.rotor_normalised`, the turning-field run
 :mod:`.turning_field`), Kovalenko's relay spin correction (:mod:`.spin_correction`) and the passive
-magnetic satellite (:mod:`.passive`).
+magnetic satellite (:mod:`.passive`, its flat spin's energy balance :mod:`.passive_balance`).
 
 Re-exports the integrator, the result type, the mock-up's PID loop, detumbling, the spinning
 spacecraft and the passive satellite; the bench loop is imported from its package.
@@ -14,7 +14,8 @@ from .detumble import DetumbleRun, detumble_monte_carlo, detumble_time, simulate
 from .detumble_segments import DETUMBLE_STEPS, detumble_step, simulate_detumble_segments
 from ..integrate import rk4_step
 from .pid_loop import PidLoop, loop_torque, pid_continuous_rhs, simulate_pid
-from .passive import PassiveRun, PassiveSatellite, flat_spin_decay_rate, initial_passive_state, simulate_passive
+from .passive import PassiveRun, PassiveSatellite, initial_passive_state, simulate_passive
+from .passive_balance import flat_spin_decay_rate
 from .result import SimulationResult
 from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimensionless, rotor_finite_difference_monodromy,
                        rotor_floquet_multipliers, rotor_linearised_matrices, rotor_normalised_rhs,
