@@ -100,6 +100,7 @@ GLOSSARY_CONTRACT = {"magbench.dynamics.rigid_body.quaternion_rate(omega)",
                      "magbench.dynamics.rigid_body.euler_rates(omega)",
                      "magbench.dynamics.quaternion_rate(omega)", "magbench.dynamics.euler_rates(omega)",
                      "magbench.sim.detumble.DetumbleRun.omega", "magbench.sim.DetumbleRun.omega",
+                     "magbench.sim.result.DetumbleRun.omega", "magbench.sim.result.RotorRun.omega",
                      # chapter 6's contract (shared/reference/rotor_spin.md §15): the run's body rate vectors
                      "magbench.sim.spinning.RotorRun.omega", "magbench.sim.RotorRun.omega"}
 

@@ -16,7 +16,7 @@ operations in scalar code, member by member, and gives the same numbers to the l
 contract (``shared/reference/bdot_triad.md`` §9); ``rate`` is its magnitude.
 """
 
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 
 import numpy as np
 from scipy.spatial.transform import Rotation
@@ -25,50 +25,10 @@ from .._validate import (as_choice, as_finite, as_inertia, as_nonnegative, as_po
                          as_positive_scalar, as_quaternions, as_vectors, check_member_steps, shown)
 from ..earth.circular_orbit import CircularOrbit
 from ._detumble_loops import ESTIMATORS, LAWS, MODES, _Loop, _compiled_loop, _numpy_loop
-from .result import SimulationResult
+from .result import DetumbleRun
 
 __all__ = ["DetumbleRun", "simulate_detumble", "detumble_time", "detumble_monte_carlo"]
 
-
-
-@dataclass(frozen=True)
-class DetumbleRun:
-    r"""A detumbling run of M members.
-
-    Attributes
-    ----------
-    time : ndarray, shape (K,)
-        Record times [s].
-    rate : ndarray, shape (M, K)
-        |ω| of every member at every record time [rad/s].
-    omega : ndarray, shape (M, 3)
-        Final angular velocity in body axes [rad/s].
-    attitude : ndarray, shape (M, 4)
-        Final attitude quaternion, scalar first, body → inertial [-].
-    inputs : dict
-        The run's arguments (and the step used, the initial states and any Monte Carlo
-        draws) [SI].
-
-    Notes
-    -----
-    Not in the sources: the names of the chapter-5 contract. ``inputs`` here is what the run
-    was given, not python-control's input signals, so the run is not itself a
-    :class:`~magbench.sim.SimulationResult`; :meth:`to_result` gives that view.
-    """
-
-    time: np.ndarray
-    rate: np.ndarray
-    omega: np.ndarray
-    attitude: np.ndarray
-    inputs: dict = field(default_factory=dict)
-
-    def to_result(self):
-        """The run as a :class:`~magbench.sim.SimulationResult`: state ``rate`` of shape (K, M),
-        the arguments as ``params`` and the final state as ``summary``."""
-        k = self.time.size
-        return SimulationResult(self.time, self.rate.T[None], np.empty((0, k)), np.empty((0, k)), ("rate",), (), (),
-                                params=dict(self.inputs),
-                                summary={"final_angular_velocity": self.omega, "final_attitude": self.attitude})
 
 
 def _multiple(name, value, step):

@@ -11,7 +11,7 @@ number of members, so spans of days at the session-1 spin rates are out of reach
 shared reference's pitfalls); the capture phase (slow rotation) is cheap.
 """
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 from scipy.spatial.transform import Rotation
@@ -26,7 +26,7 @@ from ..hardware import kernels as hardware_kernels
 from ..hardware.hysteresis import limb_constants
 from ._detumble_loops import _Field
 from ..integrate import rk4_step
-from .result import SimulationResult
+from .result import PassiveRun
 
 __all__ = ["PassiveSatellite", "PassiveRun", "simulate_passive", "initial_passive_state"]
 
@@ -95,61 +95,6 @@ class PassiveSatellite:
     def inertia(self):
         """Principal moments (A, A, C) [kg·m²]."""
         return np.array([self.transverse_inertia, self.transverse_inertia, self.axial_inertia])
-
-
-@dataclass(frozen=True)
-class PassiveRun:
-    r"""A passive-satellite run: samples of the quantities TNS-0's tables report.
-
-    Attributes
-    ----------
-    time : ndarray, shape (n,)
-        Sample times [s].
-    angular_momentum : ndarray, shape (members, n) or (n,)
-        |L| [kg·m²/s].
-    nutation : ndarray, shape like ``angular_momentum``
-        Angle between L and the symmetry axis [rad].
-    axis_field_angle : ndarray, shape like ``angular_momentum``
-        Angle between B and the symmetry axis (Table 2's 0.85 rad) [rad].
-    momentum_field_angle : ndarray, shape like ``angular_momentum``
-        Angle between B and L [rad].
-    rate : ndarray, shape like ``angular_momentum``
-        |ω| [rad/s].
-    attitude : ndarray, shape (members, 4) or (4,)
-        Final quaternion, scalar first, body → inertial [-].
-    body_rate : ndarray, shape (members, 3) or (3,)
-        Final angular velocity in body axes [rad/s].
-    rod_induction : ndarray, shape (members, k) or (k,)
-        Final induction of each rod [T].
-    inputs : dict
-        The run's arguments, the initial state and the steps used [SI].
-
-    Notes
-    -----
-    TNS-0 preprint Table 1 (L, nutation) and Table 2 (the angle between B and the symmetry
-    axis); the names are the chapter-7 contract's.
-    """
-
-    time: np.ndarray
-    angular_momentum: np.ndarray
-    nutation: np.ndarray
-    axis_field_angle: np.ndarray
-    momentum_field_angle: np.ndarray
-    rate: np.ndarray
-    attitude: np.ndarray
-    body_rate: np.ndarray
-    rod_induction: np.ndarray
-    inputs: dict = field(default_factory=dict)
-
-    def to_result(self):
-        """The run as a :class:`~magbench.sim.SimulationResult`: states of shape (n, members)."""
-        names = ("angular_momentum", "nutation", "axis_field_angle", "momentum_field_angle", "rate")
-        states = np.stack([np.asarray(getattr(self, n)).T for n in names])
-        k = self.time.size
-        return SimulationResult(self.time, states, np.empty((0, k)), np.empty((0, k)), names, (), (),
-                                params=dict(self.inputs),
-                                summary={"final_attitude": self.attitude, "final_body_rate": self.body_rate,
-                                         "final_rod_induction": self.rod_induction})
 
 
 def initial_passive_state(satellite, angular_momentum, nutation, momentum_direction, proper_rotation=0.0):

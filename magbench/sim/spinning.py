@@ -26,7 +26,7 @@ contract (``rotor_spin.md`` §15).
 """
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 from scipy.spatial.transform import Rotation
@@ -39,7 +39,7 @@ from ..dynamics.gyrostat import airplane_231_angles, airplane_231_matrix, rotor_
 from ..earth.circular_orbit import CircularOrbit
 from ..earth.dipole import dipole_equatorial_b
 from ..integrate import solve_adaptive
-from .result import SimulationResult
+from .result import RotorRun
 # the normalised model and the turning-field run have their own modules; served from here as before
 from .rotor_normalised import rotor_finite_difference_monodromy, rotor_normalised_rhs, simulate_rotor_normalised
 from .turning_field import simulate_turning_field_gyrostat
@@ -126,63 +126,6 @@ class RotorSatellite:
     def rotor_rate(self):
         """ν = (H0 − I11 s)/J_f, the rotor's rate relative to the body [rad/s]."""
         return (self.axial_momentum - self.inertia_matrix[0, 0] * self.spin_rate) / self.rotor_inertia
-
-
-@dataclass(frozen=True)
-class RotorRun:
-    r"""A simulated run of the rotor spacecraft, sampled at ``time``.
-
-    Attributes
-    ----------
-    time : ndarray, shape (n,)
-        Sample times [s].
-    argument_of_latitude : ndarray, shape (n,)
-        u = u0 + ω0 t [rad].
-    attitude : ndarray, shape (n, 4)
-        Quaternion, scalar first, v_orbital = R(q) v_body [-].
-    angles : ndarray, shape (n, 3)
-        Airplane angles α, β, γ [rad].
-    omega : ndarray, shape (n, 3)
-        Body absolute angular velocity, body axes [rad/s].
-    pointing_error : ndarray, shape (n,)
-        arccos C11, angle between the rotor axis and the velocity [rad].
-    spin_rate : ndarray, shape (n,)
-        ω1 [rad/s].
-    spin_reference : ndarray, shape (n,)
-        s_ref(u) = (H0 cos²u − J_f ν)/I11 [rad/s].
-    dipole : ndarray, shape (n, 3)
-        Commanded (clipped) dipole, body axes [A·m²].
-    torque : ndarray, shape (n, 3)
-        Magnetic torque m × B, body axes [N·m].
-    inputs : dict
-        The run's arguments and the solver's statistics [SI].
-
-    Notes
-    -----
-    Not in the sources: the names of the chapter-6 contract (``rotor_spin.md`` §15); the
-    slides' lost simulation slide (seed lines 94–96) shows these signals.
-    """
-
-    time: np.ndarray
-    argument_of_latitude: np.ndarray
-    attitude: np.ndarray
-    angles: np.ndarray
-    omega: np.ndarray
-    pointing_error: np.ndarray
-    spin_rate: np.ndarray
-    spin_reference: np.ndarray
-    dipole: np.ndarray
-    torque: np.ndarray
-    inputs: dict = field(default_factory=dict)
-
-    def to_result(self):
-        """The run as a :class:`~magbench.sim.SimulationResult` (states q, ω; inputs m; outputs)."""
-        states = np.concatenate([self.attitude, self.omega], axis=1).T
-        labels = ("q0", "q1", "q2", "q3", "rate_x", "rate_y", "rate_z")
-        outputs = np.vstack([self.pointing_error, self.spin_rate, self.spin_reference, self.torque.T])
-        return SimulationResult(self.time, states, self.dipole.T, outputs, labels, ("dipole_x", "dipole_y", "dipole_z"),
-                                ("pointing_error", "spin_rate", "spin_reference", "torque_x", "torque_y", "torque_z"),
-                                params=dict(self.inputs))
 
 
 def _check_orbit(orbit):
