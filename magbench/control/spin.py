@@ -317,7 +317,7 @@ def relay_spin_dipole(field, moment, spin_error):
 
     Examples
     --------
-    >>> relay_spin_dipole([1.0, 1.0, 0.5], 2.0, 0.1).tolist()
+    >>> (relay_spin_dipole([1.0, 1.0, 0.5], 2.0, 0.1) + 0.0).tolist()   # + 0.0: no −0.0
     [-2.0, 2.0, 0.0]
     """
     b = as_vectors("field", field)

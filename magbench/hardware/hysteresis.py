@@ -52,7 +52,7 @@ def limb_constants(coercivity, remanence, saturation):
     Examples
     --------
     >>> hc, br, bs, k = limb_constants(12.0, 0.35, 0.7)
-    >>> round(k * hc, 12)
+    >>> float(round(k * hc, 12))
     1.0
     """
     hc = as_positive_scalar("coercivity", coercivity, unit="A/m")
