@@ -194,3 +194,25 @@ def test_each_figures_bounds_hold():
                 with pytest.raises(ValueError, match="whole number"):
                     figures.resolve_parameters(fid, {name: defaults[name] + 0.5})
     assert checked > 40
+
+
+def test_a_figure_input_from_the_parameter_set_has_the_parameter_sets_unit():
+    """A figure input that is a chapter input (same name, same default) shows the SI unit of
+    the parameter set's entry: a unit retyped by hand cannot drift from the data."""
+    from magbench.chapters import CHAPTERS, chapter_parameters
+    from magbench.io import load_parameter_set
+
+    wrong, seen = [], 0
+    for ch in CHAPTERS:
+        table, values = load_parameter_set(ch.source), chapter_parameters(ch.key, overrides="")
+        for fid in figures.figure_ids():
+            spec = figures.get_spec(fid)
+            if spec.compute.__module__ not in ch.figure_modules:
+                continue
+            for name, p in spec.parameters.items():
+                if name in values and p.default == values[name]:
+                    seen += 1
+                    if p.unit != table[name].unit_si:
+                        wrong.append(f"{fid}: {name} in {p.unit!r}, the parameter set's SI unit is "
+                                     f"{table[name].unit_si!r}")
+    assert seen > 100 and not wrong, (seen, wrong)
