@@ -332,8 +332,8 @@ def plot_session_model(data):
 
 def _session_parameters():
     p = _defaults()
-    return {"row": FigureParameter(1.0, "1", "Table 1 row (session)"),
-            "duration": FigureParameter(60.0, "s", "length of the model trace"),
+    return {"row": FigureParameter(1.0, "1", "Table 1 row (session)", whole=True),
+            "duration": FigureParameter(60.0, "s", "length of the model trace", high=1e4),
             "transverse_inertia": FigureParameter(p["transverse_inertia"], "kg m^2", "A (ours)"),
             "axial_inertia": FigureParameter(p["axial_inertia"], "kg m^2", "C (ours)")}
 
@@ -461,13 +461,28 @@ def plot_capture(data):
     return fig
 
 
+#: What the chapter's inputs mean on the capture and full-run figures, and the values the
+#: figures accept for those that set their work or count something (see
+#: :class:`~magbench.chapters.registry.FigureParameter`); units come from the parameter set.
+_INPUTS = {"magnet_moment": ("magnet moment m (ours)", {}),
+           "rod_volume": ("volume of each rod (ours, calibrated)", {}),
+           "capture_initial_momentum": ("initial |L|", {}), "capture_initial_nutation": ("initial nutation", {}),
+           "capture_duration": ("length of each run", dict(high=1e7)),
+           "capture_members": ("Monte Carlo members", dict(high=1e4, whole=True)),
+           "capture_seed": ("seed of the directions of L", dict(whole=True)),
+           "full_run_duration": ("length of the run from session 1", dict(high=3e7))}
+
+
+def _input_parameters(names):
+    from ...io import load_parameter_set
+
+    p, table = _defaults(), load_parameter_set(CHAPTER.source)
+    return {name: FigureParameter(p[name], table[name].unit_si, _INPUTS[name][0], **_INPUTS[name][1])
+            for name in names}
+
+
 def _capture_parameters():
-    p = _defaults()
-    units = {"magnet_moment": ("A m^2", "magnet moment m (ours)"), "rod_volume": ("m^3", "volume of each rod (ours, calibrated)"),
-             "capture_initial_momentum": ("kg m^2/s", "initial |L|"), "capture_initial_nutation": ("rad", "initial nutation"),
-             "capture_duration": ("s", "length of each run"), "capture_members": ("1", "Monte Carlo members"),
-             "capture_seed": ("1", "seed of the directions of L")}
-    return {name: FigureParameter(p[name], *units[name]) for name in _CAPTURE_NAMES}
+    return _input_parameters(_CAPTURE_NAMES)
 
 
 # --- the full run from session 1, with the energy-balance line ---------------------------
@@ -543,12 +558,7 @@ def plot_full_run(data):
 
 
 def _full_parameters():
-    p = _defaults()
-    units = {"magnet_moment": ("A m^2", "magnet moment m (ours)"),
-             "rod_volume": ("m^3", "volume of each rod (ours, calibrated)"),
-             "full_run_duration": ("s", "length of the run from session 1"),
-             "capture_seed": ("1", "seed of the direction of L")}
-    return {name: FigureParameter(p[name], *units[name]) for name in _FULL_NAMES}
+    return _input_parameters(_FULL_NAMES)
 
 
 register(FigureSpec("tns0-fig03", "The field cone at the ISS inclination (TNS-0 Fig. 3)", f"{SOURCE}, §1, Fig. 3",
