@@ -143,17 +143,21 @@ def _sample(i, n, state, b, schedule, how, held, window, previous, gain, lim, pr
 
 
 @njit(cache=True, error_model="numpy")
-def advance_block(state, start, count, h, b, b_rate, radial, schedule, how, held, window, previous, gain, lim,
-                  projected, gg, diag, jd, jt, jinv, stride, rates):
+def advance_block(state, start, count, h, table, schedule, command, law_args, body, stride, rates):
     """Advance every member over steps ``start`` … ``start + count − 1`` in place.
 
-    state (7, M); b, b_rate, radial (3, 2·count + 1, M): the field table of the block;
-    schedule = (mode, per_sample, n_off, n_on, hold, delta, t_off) with mode 0/1/2 for
-    continuous/sampled/duty and hold 1 for the "hold" estimator; how (M,), held, window
-    (3, M), previous (4, M): each member's command (kept across blocks; previous[3] = 1
-    once sampled); gain (M,); jd (3, M) principal moments (diag) or jt, jinv (3, 3); rates
-    (M, K) |ω| at every ``stride`` steps.
+    state (7, M); table = (b, b_rate, radial), each (3, 2·count + 1, M): the field table of
+    the block; schedule = (mode, per_sample, n_off, n_on, hold, delta, t_off) with mode
+    0/1/2 for continuous/sampled/duty and hold 1 for the "hold" estimator; command = (how
+    (M,), held, window (3, M), previous (4, M)): each member's command (kept across blocks;
+    previous[3] = 1 once sampled); law_args = (gain (M,), lim (3,), projected); body = (gg,
+    diag, jd (3, M) principal moments (diag), jt, jinv (3, 3)); rates (M, K) |ω| at every
+    ``stride`` steps. The groups are unpacked once here: the stages below take scalars.
     """
+    b, b_rate, radial = table
+    how, held, window, previous = command
+    gain, lim, projected = law_args
+    gg, diag, jd, jt, jinv = body
     members = state.shape[1]
     lim0, lim1, lim2 = lim[0], lim[1], lim[2]
     half = 0.5 * h

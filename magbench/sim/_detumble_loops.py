@@ -327,6 +327,6 @@ def _compiled_loop(loop, q0, w0):
         # one column per member even for a shared orbit: the kernel reads every table
         # along its contiguous member axis
         table = [np.ascontiguousarray(np.broadcast_to(a, a.shape[:2] + (members,))) for a in fields.block_at(start)]
-        advance_block(state, start, count, loop.step, *table, schedule, how, held, window, previous, gain, limit,
-                      loop.law == "projected", gg, diag, jd, jt, jinv, loop.stride, rates)
+        advance_block(state, start, count, loop.step, tuple(table), schedule, (how, held, window, previous),
+                      (gain, limit, loop.law == "projected"), (gg, diag, jd, jt, jinv), loop.stride, rates)
     return state, rates

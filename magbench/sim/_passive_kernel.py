@@ -119,11 +119,13 @@ def _record(x, t, u0, geo, inertia, out):
 
 
 @njit(cache=True, error_model="numpy")
-def run_passive(state, u0, geo, inertia, magnet, axes, volume, hc, bs, kk, interval, n_samples, limit, records):
+def run_passive(state, u0, geo, inertia, magnet, rods, interval, n_samples, limit, records):
     """Advance every member over n_samples intervals; fill records (n+1, 5, M); return the steps.
 
-    state (M, 7 + k) is advanced in place; u0 (M,) the members' orbit phases.
+    state (M, 7 + k) is advanced in place; u0 (M,) the members' orbit phases; rods = (axes
+    (k, 3), volume, Hc, Bs, k_shape), unpacked once here.
     """
+    axes, volume, hc, bs, kk = rods
     members, size = state.shape
     a, c = inertia[0], inertia[2]
     two_n = 2.0 * geo[0]

@@ -312,9 +312,9 @@ def _run_compiled(satellite, orbit, state, phase, axes, rod_constants, interval,
     members = state.shape[0]
     state = np.ascontiguousarray(state, dtype=float)
     u0 = np.ascontiguousarray(np.broadcast_to(phase, (members,)), dtype=float)
-    steps = run_passive(state, u0, orbit_geometry(orbit), satellite.inertia, float(satellite.magnet_moment),
-                        np.ascontiguousarray(axes, dtype=float), float(satellite.rod_volume), float(hc),
-                        float(bs), float(k), float(interval), n_samples, float(limit), records)
+    rods = (np.ascontiguousarray(axes, dtype=float), float(satellite.rod_volume), float(hc), float(bs), float(k))
+    steps = run_passive(state, u0, orbit_geometry(orbit), satellite.inertia, float(satellite.magnet_moment), rods,
+                        float(interval), n_samples, float(limit), records)
     return steps, state
 
 
