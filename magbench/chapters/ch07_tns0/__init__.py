@@ -314,7 +314,7 @@ SESSION_DURATION, SESSION_RATE, SESSION_NOISE, SESSION_SEED, SESSION_LOST_PHASE 
 @cached_result(maxsize=2)
 def _session_fits(a, c):
     from ...io.tns0 import load_table1
-    from . import sessions
+    from ...estimation import spin_sessions as sessions
 
     t1 = load_table1()
 

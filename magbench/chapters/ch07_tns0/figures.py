@@ -8,6 +8,7 @@ decay fits, a session model (model only) and the capture Monte Carlo.
 import numpy as np
 
 from ...constants import MU_0
+from ...estimation.spin_sessions import SENSOR_NORMALS
 from . import CHAPTER, capture_run, decay_balance, decay_fits, full_run, orbit_from, session_fits
 from .._base import chapter_parameters
 from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
@@ -281,10 +282,6 @@ def _rod_parameters():
 
 # --- a session model (model only) -------------------------------------------------------
 
-#: Sensor normals in body axes (ours: only n1 = −n3 is in the text).
-SENSOR_NORMALS = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [-1.0, 0.0, 0.0]])
-
-
 def compute_session_model(row, duration, transverse_inertia, axial_inertia):
     """Euler-case model signals of ДС1–ДС3 for one Table 1 row (cosine law clipped at 0 + albedo)."""
     from ...dynamics import euler_case_matrix
@@ -342,7 +339,7 @@ def _session_parameters():
 
 def compute_session_fit(transverse_inertia, axial_inertia):
     """A synthetic session from Table 1 row 1 (+ noise) and the three methods' fits."""
-    from .sessions import mirror, sensor_signals
+    from ...estimation.spin_sessions import mirror, sensor_signals
 
     fits = session_fits({"transverse_inertia": transverse_inertia, "axial_inertia": axial_inertia})
     t, data, truth = fits["time"], fits["signals"], fits["truth"]

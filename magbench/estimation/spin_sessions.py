@@ -1,24 +1,35 @@
-"""TNS-0's session fits, demonstrated on synthetic sessions: the Euler-case sun-sensor model and
-three ways to fit it (the preprint's nested grid, multi-start least squares, frequency first).
+r"""The attitude of a torque-free spinning body from sun-sensor sessions: the Euler-case signal
+model of three cosine sensors and three ways to fit its constants (a nested grid, multi-start
+least squares, frequency first).
 
-TNS-0 preprint §2 (L141–L173: the Euler case, the sensors' cosine law, the constants of Table 1,
-the fit by a nested grid search bounded by L_max = 2π I_max/Δt). The measured traces were never
-published, so the fits run on synthetic sessions generated from a Table 1 row with the sensor
-model below; the sensor normals (ДС1 +x, ДС2 +z, ДС3 −x) are ours (only n1 = −n3 is in the
-text). Five constants are fitted — L, θ, ψ0, φ0 and the Sun angle σ — with t0 = 0: t0 is not
-identifiable, it trades against the phases (:func:`identifiability`).
+TNS-0 preprint §2 (L141–L173: the Euler case, the sensors' cosine law, the constants of its
+Table 1, the fit by a nested grid search bounded by L_max = 2π I_max/Δt). The sensors' normals
+are +x, +z and −x in body axes (:data:`SENSOR_NORMALS`; TNS-0's ДС1–ДС3 as the book takes them:
+only n1 = −n3 is in the text). Five constants are fitted — L, θ, ψ0, φ0 and the Sun angle σ —
+with t0 = 0: t0 is not identifiable, it trades against the phases (:func:`identifiability`).
+Chapter 7 runs the fits on synthetic sessions (:func:`synthetic_session`): the measured traces
+were never published.
 """
 
 import time as _time
 
 import numpy as np
-from ..._validate import shown
 
-#: Sensor normals ДС1–ДС3 in body axes (ours: only n1 = −n3 is in the text).
+from .._validate import as_count, as_positive_scalar, shown
+
+__all__ = ["SENSOR_NORMALS", "NAMES", "sensor_signals", "synthetic_session", "rms", "momentum_bound",
+           "fit_nested_grid", "fit_multistart", "fit_frequency_first", "mirror", "recovered", "identifiability"]
+
+#: Sensor normals in body axes: +x, +z, −x (TNS-0's ДС1–ДС3; ours: only n1 = −n3 is in the text).
 SENSOR_NORMALS = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [-1.0, 0.0, 0.0]])
 
 #: The five fitted constants, in order.
 NAMES = ("angular_momentum", "nutation", "precession0", "proper_rotation0", "sun_angle")
+
+
+def _check_inertias(transverse_inertia, axial_inertia):
+    as_positive_scalar("transverse_inertia", transverse_inertia, unit="kg·m²")
+    as_positive_scalar("axial_inertia", axial_inertia, unit="kg·m²")
 
 
 def sensor_signals(time, params, transverse_inertia, axial_inertia, *, start_time=0.0):
@@ -32,7 +43,7 @@ def sensor_signals(time, params, transverse_inertia, axial_inertia, *, start_tim
         L [kg·m²/s], θ [rad], ψ0 [rad], φ0 [rad], σ (Sun angle from L) [rad]; leading axes are
         candidates evaluated at once.
     transverse_inertia, axial_inertia : float
-        A, C [kg·m²].
+        A, C, > 0 [kg·m²].
     start_time : float, optional
         t0 [s].
 
@@ -48,7 +59,10 @@ def sensor_signals(time, params, transverse_inertia, axial_inertia, *, start_tim
     s = (sin σ, 0, cos σ) in the L-frame. Written out for the three normals (R e_x and R e_z)
     so that thousands of candidates evaluate at once.
     """
+    _check_inertias(transverse_inertia, axial_inertia)
     p = np.asarray(params, dtype=float)
+    if p.ndim == 0 or p.shape[-1] != 5:
+        raise ValueError(f"params must have shape (..., 5) (L, θ, ψ0, φ0, σ), got shape {p.shape}")
     big_l, theta, psi0, phi0, sigma = (p[..., k, None] for k in range(5))
     t = np.asarray(time, dtype=float) - start_time
     psi = big_l / transverse_inertia * t + psi0
@@ -85,6 +99,11 @@ def synthetic_session(truth, transverse_inertia, axial_inertia, *, duration=60.0
         [s].
     signals : ndarray, shape (3, n)
         [-].
+
+    Notes
+    -----
+    Not in the sources: a test bench for the TNS-0 preprint §2 fits, whose measured traces were
+    never published.
     """
     if duration <= 0 or rate <= 0 or noise < 0:
         raise ValueError(f"duration ({shown(duration)} s) and rate ({rate!r} /s) must be > 0 and noise ({noise!r}) >= 0")
@@ -94,7 +113,28 @@ def synthetic_session(truth, transverse_inertia, axial_inertia, *, duration=60.0
 
 
 def rms(params, time, signals, transverse_inertia, axial_inertia):
-    """Root-mean-square residual of candidates (…, 5) against the signals (3, n) [-]."""
+    """Root-mean-square residual of candidate constants against a session's signals.
+
+    Parameters
+    ----------
+    params : array_like, shape (..., 5)
+        Candidates (:data:`NAMES`) [SI].
+    time : ndarray, shape (n,)
+        Sample times [s].
+    signals : ndarray, shape (3, n)
+        The three sensors' signals [-].
+    transverse_inertia, axial_inertia : float
+        A, C [kg·m²].
+
+    Returns
+    -------
+    ndarray, shape (...)
+        √mean((model − signals)²) over sensors and samples [-].
+
+    Notes
+    -----
+    TNS-0 preprint §2 (L171: the fit minimises the mismatch of model and signals).
+    """
     model = sensor_signals(time, params, transverse_inertia, axial_inertia)
     return np.sqrt(np.mean((model - signals) ** 2, axis=(-2, -1)))
 
@@ -107,7 +147,22 @@ def _rms_chunked(candidates, time, signals, a, c, chunk=2048):
 
 
 def momentum_bound(time, signals, transverse_inertia, axial_inertia):
-    r"""L_max = 2π I_max/Δt, Δt the shortest interval between neighbouring signal peaks.
+    r"""The largest angular momentum a session's sampling can show.
+
+    Parameters
+    ----------
+    time : ndarray, shape (n,)
+        Sample times [s].
+    signals : ndarray, shape (3, n)
+        The three sensors' signals [-].
+    transverse_inertia, axial_inertia : float
+        A, C [kg·m²].
+
+    Returns
+    -------
+    float
+        L_max = 2π I_max/Δt [kg·m²/s], Δt the shortest interval between neighbouring signal
+        peaks (the whole session when no sensor shows two).
 
     Notes
     -----
@@ -142,7 +197,7 @@ def _result(method, x, time, signals, a, c, evaluations, seconds):
 def fit_nested_grid(time, signals, transverse_inertia, axial_inertia, *, points=5, levels=4):
     """The preprint's method: a grid over the five constants, refined around the best point.
 
-    L in (0, L_max] (:func:`momentum_bound`), θ and σ in [0, π], the phases in [0, 2π);
+    TNS-0 preprint §2 (L171–L173). L in (0, L_max] (:func:`momentum_bound`), θ and σ in [0, π], the phases in [0, 2π);
     each level halves the ranges about the best point so far.
 
     Parameters
@@ -163,6 +218,8 @@ def fit_nested_grid(time, signals, transverse_inertia, axial_inertia, *, points=
     dict
         ``method``, ``params`` (5,), ``rms`` [-], ``evaluations`` (model evaluations), ``seconds``.
     """
+    as_count("points", points, minimum=2)
+    as_count("levels", levels)
     start = _time.perf_counter()
     a, c = transverse_inertia, axial_inertia
     lo = np.array([0.0, 0.0, 0.0, 0.0, 0.0])
@@ -185,7 +242,30 @@ def fit_nested_grid(time, signals, transverse_inertia, axial_inertia, *, points=
 
 
 def fit_multistart(time, signals, transverse_inertia, axial_inertia, *, starts=20, seed=0):
-    """Local least squares (Levenberg–Marquardt) from random starts within the grid's bounds."""
+    """Local least squares (Levenberg–Marquardt) from random starts within the grid's bounds.
+
+    Parameters
+    ----------
+    time : ndarray, shape (n,)
+        Sample times, equally spaced [s].
+    signals : ndarray, shape (3, n)
+        The three sensors' signals [-].
+    transverse_inertia, axial_inertia : float
+        A, C [kg·m²].
+    starts : int, optional
+        Random starts [-].
+    seed : int, optional
+        Seed of the starts [-].
+
+    Returns
+    -------
+    dict
+        ``method``, ``params`` (5,) [SI], ``rms`` [-], ``evaluations`` (model evaluations), ``seconds``.
+
+    Notes
+    -----
+    Not in the sources: scipy's least_squares from random starts, the book's alternative (TNS-0 preprint §2 fits by a nested grid).
+    """
     start = _time.perf_counter()
     a, c = transverse_inertia, axial_inertia
     rng = np.random.default_rng(seed)
@@ -216,6 +296,27 @@ def fit_frequency_first(time, signals, transverse_inertia, axial_inertia, *, pha
     carries φ̇ and ψ̇ ± φ̇: each of its strongest lines gives candidates for φ̇ and so
     cos θ = φ̇ / (L(1/C − 1/A)); for each, a grid over ψ0, φ0 and σ picks the phases, and the
     best candidate is polished. φ̇ > 0 is taken: the mirror (π − θ, −φ0, π − σ) fits equally.
+    Parameters
+    ----------
+    time : ndarray, shape (n,)
+        Sample times, equally spaced [s].
+    signals : ndarray, shape (3, n)
+        The three sensors' signals [-].
+    transverse_inertia, axial_inertia : float
+        A, C [kg·m²].
+    phase_points : int, optional
+        Grid points for ψ0 and for φ0 [-].
+    sun_points : int, optional
+        Grid points for σ [-].
+
+    Returns
+    -------
+    dict
+        ``method``, ``params`` (5,) [SI], ``rms`` [-], ``evaluations`` (model evaluations), ``seconds``.
+
+    Notes
+    -----
+    Not in the sources: the rates read from the spectra, the book's alternative (TNS-0 preprint §2 fits by a nested grid).
     """
     start = _time.perf_counter()
     a, c = transverse_inertia, axial_inertia
@@ -247,14 +348,52 @@ def fit_frequency_first(time, signals, transverse_inertia, axial_inertia, *, pha
 
 
 def mirror(params):
-    """The mirror solution (π − θ, −φ0, π − σ): the same signals for sensors ±x and +z."""
+    """The mirror solution, which gives the same signals for sensors along ±x and +z.
+
+    Parameters
+    ----------
+    params : array_like, shape (5,)
+        Constants (:data:`NAMES`) [SI].
+
+    Returns
+    -------
+    ndarray, shape (5,)
+        (L, π − θ, ψ0, −φ0 mod 2π, π − σ) [SI].
+
+    Notes
+    -----
+    Not in the sources: the symmetry of the TNS-0 preprint §2 sensor model (x → −x exchanges
+    ДС1 and ДС3, which the fit cannot tell apart).
+    """
     p = np.array(params, dtype=float)
     p[1], p[3], p[4] = np.pi - p[1], np.mod(-p[3], 2 * np.pi), np.pi - p[4]
     return p
 
 
 def recovered(fit, truth, *, momentum_rtol=0.01, angle_atol=0.02):
-    """True when a fit finds L to ``momentum_rtol`` and θ, σ to ``angle_atol`` [rad] (or the mirror's)."""
+    """Whether a fit found the truth (or its mirror).
+
+    Parameters
+    ----------
+    fit : dict
+        A fit's result (``params``) [SI].
+    truth : array_like, shape (5,)
+        The constants the session was made with [SI].
+    momentum_rtol : float, optional
+        Relative tolerance on L [-].
+    angle_atol : float, optional
+        Absolute tolerance on θ and σ [rad].
+
+    Returns
+    -------
+    bool
+        L within ``momentum_rtol`` and θ, σ within ``angle_atol`` of the truth's or its mirror's.
+
+    Notes
+    -----
+    Not in the sources: the book's criterion for the TNS-0 preprint §2 fits on synthetic
+    sessions (the phases are not compared: they trade against t0).
+    """
     x = fit["params"]
     return bool(any(abs(x[0] - t[0]) <= momentum_rtol * t[0] and abs(x[1] - t[1]) <= angle_atol
                     and abs(x[4] - t[4]) <= angle_atol for t in (np.asarray(truth, float), mirror(truth))))
@@ -266,6 +405,28 @@ def identifiability(params, time, transverse_inertia, axial_inertia, *, start_ti
     The smallest is ~0: ∂/∂t0 = −ψ̇ ∂/∂ψ0 − φ̇ ∂/∂φ0 exactly, so t0 trades against the phases and
     only five of the six constants are identifiable (at θ = π/2, φ̇ = 0 and t0 trades against ψ0
     alone). Central differences of step ``step``.
+
+    Parameters
+    ----------
+    params : array_like, shape (5,)
+        Constants (:data:`NAMES`) [SI].
+    time : ndarray, shape (n,)
+        Sample times [s].
+    transverse_inertia, axial_inertia : float
+        A, C [kg·m²].
+    start_time : float, optional
+        t0 [s].
+    step : float, optional
+        Difference step in every constant [SI].
+
+    Returns
+    -------
+    ndarray, shape (6,)
+        Singular values [-].
+
+    Notes
+    -----
+    TNS-0 preprint §2 (L141–L173) lists t0 among the constants; this is why it is not fitted.
     """
     p = np.asarray(params, dtype=float)
     a, c = transverse_inertia, axial_inertia
