@@ -6,10 +6,10 @@ error models).
 Pure functions of numpy arrays, SI. Re-exports the public functions of its modules.
 """
 
-from .sensors import (HMC5883L_MAX_OUTPUT_RATE, HMC5883L_NOISE_FLOOR, MPU6050_ACCEL_NOISE_DENSITY,
+from .sensors import (HMC5883L_GAINS, HMC5883L_MAX_COUNT, HMC5883L_MAX_OUTPUT_RATE, HMC5883L_NOISE_FLOOR, MPU6050_ACCEL_NOISE_DENSITY,
                       MPU6050_ACCEL_ZERO_G_TOLERANCE, MPU6050_DLPF_BANDWIDTH, MPU6050_GYRO_NOISE_DENSITY,
                       MPU6050_GYRO_TOTAL_RMS_NOISE, MPU6050_GYRO_ZRO_TOLERANCE, accelerometer_readings,
-                      gyro_readings, magnetometer_readings, noise_std_from_density)
+                      gyro_readings, magnetometer_full_scale, magnetometer_readings, noise_std_from_density)
 from .turn import SHAPES, Turn, awg_diameter, turn_area, turn_length, wire_area, wire_diameter
 from .magnetorquer import (coil_current, coil_mass, coil_mass_for_moment, coil_resistance,
                            current_for_moment, dipole_moment, joule_power, joule_power_for_moment,
@@ -27,7 +27,8 @@ from .magnets import (magnet_mass_for_torque, magnet_moment_per_mass, magnet_tor
 from .hysteresis import (hysteresis_damping_torque, hysteresis_loop_energy, hysteresis_response,
                          hysteresis_slope, limb_constants, limb_induction, limiting_loop_energy,
                          rod_cycle_energy)
-from .winding import winding_mass, winding_power, winding_resistance, winding_voltage
+from .winding import (ampere_turns_power, coaxial_system_scale_for_power, winding_mass, winding_power,
+                      winding_resistance, winding_voltage)
 
 __all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
            "rod_cycle_energy", "limiting_loop_energy", "hysteresis_damping_torque", "SHAPES", "Turn", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
@@ -41,7 +42,8 @@ __all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_r
            "magnetization_curve", "field_for_magnetization", "core_central_magnetization",
            "electromagnet_design", "magnet_torque_per_mass", "magnet_mass_for_torque",
            "magnet_moment_per_mass", "permanent_magnet_min_mass", "winding_resistance", "winding_voltage",
-           "winding_power", "winding_mass", "MPU6050_GYRO_NOISE_DENSITY", "MPU6050_GYRO_TOTAL_RMS_NOISE",
+           "winding_power", "winding_mass", "ampere_turns_power", "coaxial_system_scale_for_power",
+           "MPU6050_GYRO_NOISE_DENSITY", "MPU6050_GYRO_TOTAL_RMS_NOISE",
            "MPU6050_GYRO_ZRO_TOLERANCE", "MPU6050_ACCEL_NOISE_DENSITY", "MPU6050_ACCEL_ZERO_G_TOLERANCE",
-           "MPU6050_DLPF_BANDWIDTH", "HMC5883L_NOISE_FLOOR", "HMC5883L_MAX_OUTPUT_RATE",
-           "noise_std_from_density", "gyro_readings", "accelerometer_readings", "magnetometer_readings"]
+           "MPU6050_DLPF_BANDWIDTH", "HMC5883L_NOISE_FLOOR", "HMC5883L_MAX_OUTPUT_RATE", "HMC5883L_GAINS", "HMC5883L_MAX_COUNT",
+           "noise_std_from_density", "gyro_readings", "accelerometer_readings", "magnetometer_readings", "magnetometer_full_scale"]
