@@ -14,7 +14,7 @@ difference.
 
 import numpy as np
 
-from .._validate import as_finite, as_in_range, as_positive, as_vectors
+from .._validate import as_finite, as_in_range, as_positive, as_vectors, shown
 from ..constants import MU_0
 from .coordinates import _unit_vector
 
@@ -288,7 +288,7 @@ def dipole_ned_b(latitude, longitude, moment, pole_latitude, pole_longitude, rad
     lat = as_in_range("latitude", latitude, -np.pi / 2, np.pi / 2, unit="rad")
     lon = as_finite("longitude", longitude)
     if lat.ndim or lon.ndim:
-        raise ValueError(f"latitude and longitude must be scalars (one place), got shapes {lat.shape}, {lon.shape}")
+        raise ValueError(f"latitude and longitude must be scalars (one place), got shapes {lat.shape} and {lon.shape}")
     r = as_positive("radius", radius, unit="m")
     m_vec = earth_dipole_moment_vector(moment, pole_latitude, pole_longitude)
     clat = np.cos(lat)
@@ -364,7 +364,7 @@ def dipole_shell(footpoint_latitude):
     lam = as_finite("footpoint_latitude", footpoint_latitude)
     if np.any(np.abs(lam) >= np.pi / 2):
         raise ValueError(f"footpoint_latitude must lie in (-pi/2, pi/2) rad (the pole's line is the axis), "
-                         f"got {lam[np.abs(lam) >= np.pi / 2].ravel()[0]!r}")
+                         f"got {shown(lam[np.abs(lam) >= np.pi / 2].ravel()[0])}")
     return 1.0 / np.cos(lam) ** 2
 
 
@@ -403,11 +403,11 @@ def dipole_field_line(shell, magnetic_latitude, tilt=0.0, side=1.0):
     """
     L = float(as_finite("shell", shell))
     if L < 1.0:
-        raise ValueError(f"shell must be >= 1 (lines inside the Earth are not drawn), got {L!r}")
+        raise ValueError(f"shell must be >= 1 (lines inside the Earth are not drawn), got {shown(L)}")
     lam = as_in_range("magnetic_latitude", magnetic_latitude, -np.pi / 2, np.pi / 2, unit="rad")
     t = float(as_finite("tilt", tilt))
     if side not in (1.0, -1.0):
-        raise ValueError(f"side must be 1.0 or -1.0, got {side!r}")
+        raise ValueError(f"side must be 1.0 or -1.0, got {shown(side)}")
     c, s = np.cos(t), np.sin(t)
     r = L * np.cos(lam) ** 2
     keep = r >= 1.0

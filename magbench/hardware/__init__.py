@@ -16,11 +16,11 @@ from .magnetorquer import (coil_current, coil_mass, coil_mass_for_moment, coil_r
                            joule_power_for_winding_length, mass_power_product,
                            mass_power_product_kovalenko, moment_from_voltage, supply_voltage,
                            turn_resistance, turns_from_resistance, turns_from_winding_length,
-                           turns_per_volt_bounds, winding_density, winding_length,
-                           wire_area_for_moment, wire_diameter_from_resistance)
+                           turns_per_layer, turns_per_volt_bounds, winding_band, winding_density, winding_length,
+                           wire_area_for_moment, wire_diameter_from_resistance, wire_turn_limits)
 from .driver import coil_full_scale_moment, quantise_duty
 from .coil_design import binding_limit, coil_designs, design_magnetorquer
-from .cores import (core_central_magnetization, effective_permeability, electromagnet_design,
+from .cores import (core_central_magnetization, effective_permeability, electromagnet_design, electromagnet_moment,
                     field_for_magnetization, magnetization_curve, rod_demagnetizing_factor)
 from .magnets import (magnet_mass_for_torque, magnet_moment_per_mass, magnet_torque_per_mass,
                       permanent_magnet_min_mass)
@@ -40,7 +40,8 @@ __all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_r
            "wire_diameter_from_resistance", "coil_full_scale_moment", "quantise_duty", "coil_designs", "binding_limit",
            "design_magnetorquer", "rod_demagnetizing_factor", "effective_permeability",
            "magnetization_curve", "field_for_magnetization", "core_central_magnetization",
-           "electromagnet_design", "magnet_torque_per_mass", "magnet_mass_for_torque",
+           "electromagnet_design", "electromagnet_moment", "turns_per_layer", "winding_band", "wire_turn_limits",
+           "magnet_torque_per_mass", "magnet_mass_for_torque",
            "magnet_moment_per_mass", "permanent_magnet_min_mass", "winding_resistance", "winding_voltage",
            "winding_power", "winding_mass", "ampere_turns_power", "coaxial_system_scale_for_power",
            "MPU6050_GYRO_NOISE_DENSITY", "MPU6050_GYRO_TOTAL_RMS_NOISE",
