@@ -198,8 +198,6 @@ def plot_line(data):
 
 def compute_zone_criterion(coil_radius, design_spacing_ratio, comsol_spacing, built_spacing):
     """Zone lengths on the axis and across it against δ; the δ that matches each reading."""
-    from scipy import optimize
-
     a = coil_radius
     tol = np.geomspace(1e-4, 0.1, 61)
     m = _measured()
@@ -210,14 +208,7 @@ def compute_zone_criterion(coil_radius, design_spacing_ratio, comsol_spacing, bu
         for direction, reading in readings.items():
             lengths = np.array([fields.uniform_zone_length(a, d, t, direction) for t in tol])
             cols[f"{direction}_length"] = ("m", lengths)
-            # The smallest band whose zone reaches the reading (zones grow with δ, with jumps).
-            j = int(np.argmax(lengths >= reading)) if np.any(lengths >= reading) else None
-            if j is None or j == 0:
-                matches[(label, direction)] = float("nan")
-            else:
-                matches[(label, direction)] = float(optimize.brentq(
-                    lambda t: fields.uniform_zone_length(a, d, t, direction) - reading, tol[j - 1], tol[j],
-                    xtol=1e-9))
+            matches[(label, direction)] = fields.zone_tolerance_for_length(a, d, reading, direction, tol)
             cols[f"{direction}_matching_tolerance"] = ("1", [matches[(label, direction)]])
         series.append(Series(label, cols))
     return FigureData("ch02-zone-criterion", "", "", {}, series, extra={"readings": readings})
