@@ -16,10 +16,10 @@ import numpy as np
 
 from .._validate import as_finite, as_in_range, as_positive, as_vectors, shown
 from ..constants import MU_0
-from .coordinates import _unit_vector
+from .coordinates import _unit_vector, geomagnetic_latitude
 
 __all__ = ["dipole_equatorial_b", "dipole_vertical_b", "dipole_horizontal_b", "dipole_total_b",
-           "dipole_inclination", "dipole_b", "earth_dipole_moment_vector", "dipole_ned_b", "field_elements",
+           "dipole_inclination", "dipole_b", "earth_dipole_moment_vector", "dipole_elements", "dipole_ned_b", "field_elements",
            "dipole_shell", "dipole_field_line", "dipole_from_gauss_coefficients", "dipole_mean_surface_b",
            "dipole_rms_surface_b", "lowes_spectrum"]
 
@@ -239,6 +239,48 @@ def earth_dipole_moment_vector(moment, pole_latitude, pole_longitude):
     plat = as_in_range("pole_latitude", pole_latitude, -np.pi / 2, np.pi / 2, unit="rad")
     plon = as_finite("pole_longitude", pole_longitude)
     return -m[..., None] * _unit_vector(plat, plon)
+
+
+def dipole_elements(latitude, longitude, moment, pole_latitude, pole_longitude, radius):
+    r"""Total, horizontal and vertical field and inclination of a tilted centred dipole at a place.
+
+    Parameters
+    ----------
+    latitude : array_like
+        Geographic latitude of the place [rad], in [−π/2, π/2].
+    longitude : array_like
+        Geographic longitude of the place, east positive [rad].
+    moment : array_like
+        Dipole moment M [A·m²], > 0.
+    pole_latitude : array_like
+        Geographic latitude of the northern geomagnetic pole [rad].
+    pole_longitude : array_like
+        Geographic longitude of the northern geomagnetic pole, east positive [rad].
+    radius : array_like
+        Distance from the Earth's centre [m], > 0.
+
+    Returns
+    -------
+    total, horizontal, vertical, inclination : ndarray
+        T, H, Z (down) [T] and I [rad] (positive downwards).
+
+    Notes
+    -----
+    Thesis §1.1, eqs. (1)–(3) at the place's geomagnetic latitude Φ
+    (:func:`magbench.earth.geomagnetic_latitude`), with the corrected sign of eq. (3)
+    (:func:`dipole_inclination`). The same numbers as :func:`field_elements` of
+    :func:`dipole_ned_b`, by the closed forms.
+
+    Examples
+    --------
+    >>> t, h, z, i = dipole_elements(np.radians(59.94), np.radians(30.31), 8.1e22, np.radians(78.5),
+    ...                              np.radians(-69.0), 6371.2e3)
+    >>> round(float(t) * 1e6, 1), round(float(np.degrees(i)), 1)
+    (54.9, 71.6)
+    """
+    phi = geomagnetic_latitude(latitude, longitude, pole_latitude, pole_longitude)
+    return (dipole_total_b(phi, moment, radius), dipole_horizontal_b(phi, moment, radius),
+            dipole_vertical_b(phi, moment, radius), dipole_inclination(phi))
 
 
 def _ned_basis(latitude, longitude):

@@ -103,3 +103,21 @@ def test_field_line_tilt_is_a_rotation_and_side_a_mirror():
     assert_allclose(np.hypot(x1, z1), np.hypot(x0, z0), rtol=1e-14)
     assert_allclose(np.angle(x1 + 1j * z1), np.angle(x0 + 1j * z0) - 0.2, atol=1e-14)
     assert_allclose([xw, zw], [-x0, z0], rtol=0)
+
+
+@pytest.mark.parametrize("place, pole", [(PLACE, POLE), ((-0.7, 2.0), (1.2, 0.5)), ((0.1, -3.0), (-1.3, 1.0))])
+def test_dipole_elements_closed_forms_equal_the_vector_field(place, pole):
+    # Two routes: eqs. (1)–(3) at Φ, and the vector dipole resolved on north-east-down.
+    # Independent arithmetic, so rounding only (1e-12; the inclination absolutely, it can be ~0).
+    t, h, z, i = earth.dipole_elements(*place, M, *pole, R)
+    x, y, down = earth.dipole_ned_b(*place, M, *pole, R)
+    hv, tv, _, iv = earth.field_elements(x, y, down)
+    assert_allclose([t, h, z], [tv, hv, down], rtol=1e-12, atol=1e-12 * float(earth.dipole_equatorial_b(M, R)))
+    assert_allclose(i, iv, atol=1e-12)
+
+
+def test_dipole_elements_broadcast_and_check():
+    t, h, z, i = earth.dipole_elements(np.array([0.0, 0.5]), 0.0, M, np.pi / 2, 0.0, R)
+    assert t.shape == (2,)
+    with pytest.raises(ValueError, match="latitude"):
+        earth.dipole_elements(2.0, 0.0, M, *POLE, R)
