@@ -39,7 +39,7 @@ def compute_fig01(earth_dipole_moment, geomagnetic_pole_latitude, geomagnetic_po
                   earth_radius, latitude, longitude, year):
     """Field elements X, Y, Z, H, T, D, J at one place: thesis dipole and IGRF-14."""
     b = earth.dipole_ned_b(latitude, longitude, earth_dipole_moment, geomagnetic_pole_latitude,
-                     geomagnetic_pole_longitude, earth_radius)
+                           geomagnetic_pole_longitude, earth_radius)
     f = igrf.igrf_field(latitude, longitude, year)
     series = []
     for label, (x, y, z) in (("thesis dipole", b), (f"IGRF-14 {year:.0f}", (f.north, f.east, f.down))):
