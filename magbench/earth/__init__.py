@@ -6,9 +6,10 @@ Re-exports the public names of its modules.
 
 from .circular_orbit import CircularOrbit
 from .coordinates import geomagnetic_latitude, geomagnetic_longitude
-from .dipole import (dipole_b, dipole_equatorial_b, dipole_from_gauss_coefficients, dipole_horizontal_b,
-                     dipole_inclination, dipole_mean_surface_b, dipole_rms_surface_b, dipole_total_b,
-                     dipole_vertical_b, earth_dipole_moment_vector, lowes_spectrum)
+from .dipole import (dipole_b, dipole_elements, dipole_equatorial_b, dipole_field_line, dipole_from_gauss_coefficients,
+                     dipole_horizontal_b, dipole_inclination, dipole_mean_surface_b, dipole_ned_b,
+                     dipole_rms_surface_b, dipole_shell, dipole_total_b, dipole_vertical_b,
+                     earth_dipole_moment_vector, field_elements, lowes_spectrum)
 from .orbit import orbital_dipole_b
 from .field_statistics import dipole_max_field, field_direction_rate_range, field_square_ratio, mean_square_field
 from .field_cone import (cone_field_direction, field_cone_axis, field_cone_deviation, field_cone_half_angle,
@@ -18,7 +19,8 @@ from .igrf import (IgrfDipole, IgrfField, decimal_year_to_datetime, igrf_dipole,
 
 __all__ = ["geomagnetic_latitude", "geomagnetic_longitude", "dipole_equatorial_b", "dipole_vertical_b",
            "dipole_horizontal_b", "dipole_total_b", "dipole_inclination", "dipole_b",
-           "earth_dipole_moment_vector", "dipole_from_gauss_coefficients", "dipole_mean_surface_b",
+           "earth_dipole_moment_vector", "dipole_elements", "dipole_ned_b", "field_elements", "dipole_shell", "dipole_field_line",
+           "dipole_from_gauss_coefficients", "dipole_mean_surface_b",
            "dipole_rms_surface_b", "lowes_spectrum", "orbital_dipole_b", "IgrfDipole", "IgrfField",
            "decimal_year_to_datetime", "igrf_dipole", "igrf_field", "igrf_mean_surface_b",
            "igrf_gauss_coefficients", "CircularOrbit", "field_cone_half_angle", "field_cone_axis",

@@ -14,14 +14,14 @@ difference.
 
 import numpy as np
 
-from .._validate import as_finite, as_in_range, as_positive, as_vectors
+from .._validate import as_finite, as_in_range, as_positive, as_vectors, shown
 from ..constants import MU_0
-from .coordinates import _unit_vector
+from .coordinates import _unit_vector, geomagnetic_latitude
 
 __all__ = ["dipole_equatorial_b", "dipole_vertical_b", "dipole_horizontal_b", "dipole_total_b",
-           "dipole_inclination", "dipole_b", "earth_dipole_moment_vector",
-           "dipole_from_gauss_coefficients", "dipole_mean_surface_b", "dipole_rms_surface_b",
-           "lowes_spectrum"]
+           "dipole_inclination", "dipole_b", "earth_dipole_moment_vector", "dipole_elements", "dipole_ned_b", "field_elements",
+           "dipole_shell", "dipole_field_line", "dipole_from_gauss_coefficients", "dipole_mean_surface_b",
+           "dipole_rms_surface_b", "lowes_spectrum"]
 
 
 def dipole_equatorial_b(moment, radius):
@@ -239,6 +239,222 @@ def earth_dipole_moment_vector(moment, pole_latitude, pole_longitude):
     plat = as_in_range("pole_latitude", pole_latitude, -np.pi / 2, np.pi / 2, unit="rad")
     plon = as_finite("pole_longitude", pole_longitude)
     return -m[..., None] * _unit_vector(plat, plon)
+
+
+def dipole_elements(latitude, longitude, moment, pole_latitude, pole_longitude, radius):
+    r"""Total, horizontal and vertical field and inclination of a tilted centred dipole at a place.
+
+    Parameters
+    ----------
+    latitude : array_like
+        Geographic latitude of the place [rad], in [−π/2, π/2].
+    longitude : array_like
+        Geographic longitude of the place, east positive [rad].
+    moment : array_like
+        Dipole moment M [A·m²], > 0.
+    pole_latitude : array_like
+        Geographic latitude of the northern geomagnetic pole [rad].
+    pole_longitude : array_like
+        Geographic longitude of the northern geomagnetic pole, east positive [rad].
+    radius : array_like
+        Distance from the Earth's centre [m], > 0.
+
+    Returns
+    -------
+    total, horizontal, vertical, inclination : ndarray
+        T, H, Z (down) [T] and I [rad] (positive downwards).
+
+    Notes
+    -----
+    Thesis §1.1, eqs. (1)–(3) at the place's geomagnetic latitude Φ
+    (:func:`magbench.earth.geomagnetic_latitude`), with the corrected sign of eq. (3)
+    (:func:`dipole_inclination`). The same numbers as :func:`field_elements` of
+    :func:`dipole_ned_b`, by the closed forms.
+
+    Examples
+    --------
+    >>> t, h, z, i = dipole_elements(np.radians(59.94), np.radians(30.31), 8.1e22, np.radians(78.5),
+    ...                              np.radians(-69.0), 6371.2e3)
+    >>> round(float(t) * 1e6, 1), round(float(np.degrees(i)), 1)
+    (54.9, 71.6)
+    """
+    phi = geomagnetic_latitude(latitude, longitude, pole_latitude, pole_longitude)
+    return (dipole_total_b(phi, moment, radius), dipole_horizontal_b(phi, moment, radius),
+            dipole_vertical_b(phi, moment, radius), dipole_inclination(phi))
+
+
+def _ned_basis(latitude, longitude):
+    """Rows: north, east, down unit vectors in Earth-fixed axes at a place."""
+    sl, cl, so, co = np.sin(latitude), np.cos(latitude), np.sin(longitude), np.cos(longitude)
+    return np.array([[-sl * co, -sl * so, cl], [-so, co, 0.0], [-cl * co, -cl * so, -sl]])
+
+
+def dipole_ned_b(latitude, longitude, moment, pole_latitude, pole_longitude, radius):
+    r"""Field of the Earth's tilted centred dipole at a place, in the local north-east-down frame.
+
+    Parameters
+    ----------
+    latitude : float
+        Geographic latitude of the place [rad], in [−π/2, π/2].
+    longitude : float
+        Geographic longitude of the place, east positive [rad].
+    moment : float
+        Dipole moment magnitude M [A·m²], > 0.
+    pole_latitude : float
+        Geographic latitude of the northern geomagnetic pole [rad].
+    pole_longitude : float
+        Geographic longitude of the northern geomagnetic pole, east positive [rad].
+    radius : float
+        Distance of the place from the Earth's centre [m], > 0.
+
+    Returns
+    -------
+    ndarray, shape (3,)
+        (X north, Y east, Z down) [T], the components of the thesis's Fig. 1.
+
+    Notes
+    -----
+    Thesis §1.1, Fig. 1 and eqs. (1)–(2) (the field elements of the centred dipole whose
+    pole the thesis gives): :func:`dipole_b` of :func:`earth_dipole_moment_vector` at the
+    point on the sphere, resolved on the local north, east and down axes. Unlike eqs.
+    (1)–(2) it keeps the declination the tilted pole gives away from the geomagnetic
+    meridian.
+
+    Examples
+    --------
+    >>> b = dipole_ned_b(np.radians(59.94), np.radians(30.31), 8.1e22, np.radians(78.5),
+    ...                  np.radians(-69.0), 6371.2e3)
+    >>> np.round(b * 1e6, 1).tolist()
+    [16.2, -6.2, 52.1]
+    """
+    lat = as_in_range("latitude", latitude, -np.pi / 2, np.pi / 2, unit="rad")
+    lon = as_finite("longitude", longitude)
+    if lat.ndim or lon.ndim:
+        raise ValueError(f"latitude and longitude must be scalars (one place), got shapes {lat.shape} and {lon.shape}")
+    r = as_positive("radius", radius, unit="m")
+    m_vec = earth_dipole_moment_vector(moment, pole_latitude, pole_longitude)
+    clat = np.cos(lat)
+    point = r * np.array([clat * np.cos(lon), clat * np.sin(lon), np.sin(lat)])
+    return _ned_basis(lat, lon) @ dipole_b(point, m_vec)
+
+
+def field_elements(north, east, down):
+    r"""The elements of a magnetic field from its north, east and down components.
+
+    Parameters
+    ----------
+    north : array_like
+        X, the northward component [T].
+    east : array_like
+        Y, the eastward component [T].
+    down : array_like
+        Z, the downward component [T].
+
+    Returns
+    -------
+    horizontal : ndarray
+        H = √(X² + Y²) [T].
+    total : ndarray
+        T = √(H² + Z²) [T].
+    declination : ndarray
+        D = atan2(Y, X), east of north [rad].
+    inclination : ndarray
+        I = atan2(Z, H), positive downwards [rad].
+
+    Notes
+    -----
+    Thesis §1.1, Fig. 1 (the elements X, Y, Z, H, T, D, J of the geomagnetic field), with
+    the thesis's axes (z down, J > 0 where the field dips, as in the northern hemisphere).
+
+    Examples
+    --------
+    >>> h, t, d, i = field_elements(3.0, 4.0, 12.0)
+    >>> float(h), float(t), round(float(np.degrees(d)), 2), round(float(np.degrees(i)), 2)
+    (5.0, 13.0, 53.13, 67.38)
+    """
+    x = as_finite("north", north)
+    y = as_finite("east", east)
+    z = as_finite("down", down)
+    h = np.hypot(x, y)
+    return h, np.sqrt(h**2 + z**2), np.arctan2(y, x), np.arctan2(z, h)
+
+
+def dipole_shell(footpoint_latitude):
+    r"""Shell parameter L of the dipole field line through a magnetic latitude on the surface.
+
+    Parameters
+    ----------
+    footpoint_latitude : array_like
+        Geomagnetic latitude where the line meets the sphere r = R [rad], in (−π/2, π/2).
+
+    Returns
+    -------
+    ndarray
+        L = 1/cos²λ_f [-]: the line's distance from the centre at the magnetic equator, in R.
+
+    Notes
+    -----
+    Not in the thesis as a formula (its Fig. 2 draws the lines): a field line of a centred
+    dipole is r = L R cos²λ (Kovalenko (1975) ch. 2, eqs. (2.1)–(2.2): dr/(r dλ) = B_r/B_λ =
+    −2 tan λ), so the line through (R, λ_f) has L = 1/cos²λ_f.
+
+    Examples
+    --------
+    >>> round(float(dipole_shell(np.radians(60.0))), 12)
+    4.0
+    """
+    lam = as_finite("footpoint_latitude", footpoint_latitude)
+    if np.any(np.abs(lam) >= np.pi / 2):
+        raise ValueError(f"footpoint_latitude must lie in (-pi/2, pi/2) rad (the pole's line is the axis), "
+                         f"got {shown(lam[np.abs(lam) >= np.pi / 2].ravel()[0])}")
+    return 1.0 / np.cos(lam) ** 2
+
+
+def dipole_field_line(shell, magnetic_latitude, tilt=0.0, side=1.0):
+    r"""Points of a centred dipole's field line in the meridian plane, above the surface.
+
+    Parameters
+    ----------
+    shell : float
+        L of the line (:func:`dipole_shell`) [-], >= 1.
+    magnetic_latitude : array_like
+        Geomagnetic latitudes λ to sample, in [−π/2, π/2] [rad].
+    tilt : float, optional
+        Angle of the dipole axis from the rotation axis [rad]; default 0.
+    side : {1.0, -1.0}, optional
+        Which half of the meridian plane (+1: the positive x side of the magnetic axis) [-].
+
+    Returns
+    -------
+    x : ndarray
+        Distance from the rotation axis, signed [R] (Earth radii).
+    z : ndarray
+        Distance along the rotation axis, north positive [R].
+
+    Notes
+    -----
+    Not in the thesis as a formula: its Fig. 2 (geomagnetic coordinates, after Kovalenko
+    (1975) ch. 2). The line r = L cos²λ (in R, eqs. (2.1)–(2.2) integrated), kept where
+    r ≥ 1, turned from magnetic to geographic axes by the tilt in the plane of both axes.
+
+    Examples
+    --------
+    >>> x, z = dipole_field_line(2.0, np.array([0.0]))
+    >>> float(x[0]), float(z[0])
+    (2.0, 0.0)
+    """
+    L = float(as_finite("shell", shell))
+    if L < 1.0:
+        raise ValueError(f"shell must be >= 1 (lines inside the Earth are not drawn), got {shown(L)}")
+    lam = as_in_range("magnetic_latitude", magnetic_latitude, -np.pi / 2, np.pi / 2, unit="rad")
+    t = float(as_finite("tilt", tilt))
+    if side not in (1.0, -1.0):
+        raise ValueError(f"side must be 1.0 or -1.0, got {shown(side)}")
+    c, s = np.cos(t), np.sin(t)
+    r = L * np.cos(lam) ** 2
+    keep = r >= 1.0
+    xm, zm = side * r[keep] * np.cos(lam[keep]), r[keep] * np.sin(lam[keep])
+    return c * xm + s * zm, -s * xm + c * zm
 
 
 def dipole_from_gauss_coefficients(g10, g11, h11, reference_radius):

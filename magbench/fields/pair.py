@@ -13,7 +13,7 @@ from ._inputs import _finite_scalar, _nonnegative_scalar, _positive_scalar
 from .loop import _coaxial_b
 
 __all__ = ["helmholtz_b", "helmholtz_center_h", "helmholtz_ampere_turns", "pair_radius_for_center_h",
-           "planar_pair_center_h"]
+           "pair_peak_center_h", "planar_pair_center_h"]
 
 
 def helmholtz_b(points, radius, separation, current, turns):
@@ -183,6 +183,41 @@ def pair_radius_for_center_h(center_h, ampere_turns, separation):
     while field(hi) > h:
         hi *= 2.0
     return float(optimize.brentq(lambda a: field(a) - h, a_peak, hi, xtol=1e-15, rtol=1e-15))
+
+
+def pair_peak_center_h(ampere_turns, separation):
+    r"""Largest midpoint field a coaxial pair of given spacing and ampere-turns gives, over all radii.
+
+    Parameters
+    ----------
+    ampere_turns : array_like
+        N·I per coil [A].
+    separation : array_like
+        Distance between the coil planes d [m], > 0.
+
+    Returns
+    -------
+    ndarray
+        H at the midpoint for the best radius a = d/√2 [A/m].
+
+    Notes
+    -----
+    Not in the thesis: the maximum over a of thesis eq. (16),
+    H(a) = NI a²/(a² + d²/4)^{3/2}, reached at a = d/√2:
+
+    .. math:: H_\text{peak} = \frac{4 NI}{3\sqrt3\,d}.
+
+    No coil radius gives a larger midpoint field (:func:`pair_radius_for_center_h`
+    raises above it).
+
+    Examples
+    --------
+    >>> round(float(pair_peak_center_h(253.0, 0.51)), 1)
+    381.9
+    """
+    ni = as_finite("ampere_turns", ampere_turns)
+    d = as_positive("separation", separation, unit="m")
+    return 4.0 * ni / (3.0 * np.sqrt(3.0) * d)
 
 
 def planar_pair_center_h(ampere_turns, radius, separation):

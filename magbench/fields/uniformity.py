@@ -14,7 +14,7 @@ from .loop import _coaxial_unit
 from .._validate import shown
 
 __all__ = ["sphere_nonuniformity", "cylinder_nonuniformity", "uniform_sphere_radius", "uniform_cylinder",
-           "optimal_separation", "pair_distance_to_h", "uniform_zone_length"]
+           "optimal_separation", "pair_distance_to_h", "uniform_zone_length", "zone_tolerance_for_length"]
 
 
 def _pair_deviation(rho, z, separation_ratio):
@@ -395,3 +395,58 @@ def uniform_zone_length(radius, separation, tolerance, direction):
         raise ValueError(f"tolerance must lie in (0, 1), got {shown(tol)}")
     dev = _line_deviation(direction, d / a)
     return 2.0 * a * _first_crossing(dev, tol, 3.0)
+
+
+def zone_tolerance_for_length(radius, separation, length, direction, tolerances):
+    r"""Smallest tolerance band whose uniform zone on a line through a coil pair reaches a length.
+
+    Parameters
+    ----------
+    radius : float
+        Coil radius a [m], > 0.
+    separation : float
+        Distance between the coil planes d [m], >= 0.
+    length : float
+        Zone length to reach [m], > 0 (e.g. one read off a plot).
+    direction : {"axial", "transverse"}
+        The coil axis or a line through the centre parallel to the coil planes [-].
+    tolerances : array_like, shape (n,)
+        Increasing bands δ to scan [-], each in (0, 1).
+
+    Returns
+    -------
+    float
+        δ [-] at which :func:`uniform_zone_length` first equals ``length``: the first
+        scanned band whose zone reaches it brackets it with the band before, and Brent's
+        method refines it to 1e-9. NaN when no scanned band reaches the length, or the
+        first one already does (the answer lies outside the scan).
+
+    Notes
+    -----
+    Not in the thesis: its uniform zones "of order 25 cm" and "30 cm" (thesis §2.3,
+    Figs. 6–7) name no band; this asks which band each reading implies. The zone length
+    grows with δ but not continuously (a zone can jump where the deviation has a local
+    maximum below δ), so the scan finds the first bracket before the refinement.
+
+    Examples
+    --------
+    >>> t = zone_tolerance_for_length(0.5, 0.5, 0.314, "axial", np.geomspace(1e-4, 0.1, 61))
+    >>> round(t, 4)
+    0.01
+    """
+    a = _positive_scalar("radius", radius, unit="m")
+    d = _nonnegative_scalar("separation", separation, unit="m")
+    target = _positive_scalar("length", length, unit="m")
+    tol = np.asarray(tolerances, dtype=float)
+    if tol.ndim != 1 or tol.size < 2 or np.any(~np.isfinite(tol)) or np.any(np.diff(tol) <= 0):
+        raise ValueError(f"tolerances must be an increasing 1-D array of at least two values, got {shown(tol)}")
+    if tol[0] <= 0.0 or tol[-1] >= 1.0:
+        raise ValueError(f"tolerances must lie in (0, 1), got {shown(tol[0])} … {shown(tol[-1])}")
+    lengths = np.array([uniform_zone_length(a, d, t, direction) for t in tol])
+    if not np.any(lengths >= target):
+        return float("nan")
+    j = int(np.argmax(lengths >= target))
+    if j == 0:
+        return float("nan")
+    return float(optimize.brentq(lambda t: uniform_zone_length(a, d, t, direction) - target, tol[j - 1], tol[j],
+                                 xtol=1e-9))

@@ -6,28 +6,29 @@ error models).
 Pure functions of numpy arrays, SI. Re-exports the public functions of its modules.
 """
 
-from .sensors import (HMC5883L_MAX_OUTPUT_RATE, HMC5883L_NOISE_FLOOR, MPU6050_ACCEL_NOISE_DENSITY,
+from .sensors import (HMC5883L_GAINS, HMC5883L_MAX_COUNT, HMC5883L_MAX_OUTPUT_RATE, HMC5883L_NOISE_FLOOR, MPU6050_ACCEL_NOISE_DENSITY,
                       MPU6050_ACCEL_ZERO_G_TOLERANCE, MPU6050_DLPF_BANDWIDTH, MPU6050_GYRO_NOISE_DENSITY,
                       MPU6050_GYRO_TOTAL_RMS_NOISE, MPU6050_GYRO_ZRO_TOLERANCE, accelerometer_readings,
-                      gyro_readings, magnetometer_readings, noise_std_from_density)
+                      gyro_readings, magnetometer_full_scale, magnetometer_readings, noise_std_from_density)
 from .turn import SHAPES, Turn, awg_diameter, turn_area, turn_length, wire_area, wire_diameter
 from .magnetorquer import (coil_current, coil_mass, coil_mass_for_moment, coil_resistance,
                            current_for_moment, dipole_moment, joule_power, joule_power_for_moment,
                            joule_power_for_winding_length, mass_power_product,
                            mass_power_product_kovalenko, moment_from_voltage, supply_voltage,
                            turn_resistance, turns_from_resistance, turns_from_winding_length,
-                           turns_per_volt_bounds, winding_density, winding_length,
-                           wire_area_for_moment, wire_diameter_from_resistance)
+                           turns_per_layer, turns_per_volt_bounds, winding_band, winding_density, winding_length,
+                           wire_area_for_moment, wire_diameter_from_resistance, wire_turn_limits)
 from .driver import coil_full_scale_moment, quantise_duty
 from .coil_design import binding_limit, coil_designs, design_magnetorquer
-from .cores import (core_central_magnetization, effective_permeability, electromagnet_design,
+from .cores import (core_central_magnetization, effective_permeability, electromagnet_design, electromagnet_moment,
                     field_for_magnetization, magnetization_curve, rod_demagnetizing_factor)
 from .magnets import (magnet_mass_for_torque, magnet_moment_per_mass, magnet_torque_per_mass,
                       permanent_magnet_min_mass)
 from .hysteresis import (hysteresis_damping_torque, hysteresis_loop_energy, hysteresis_response,
                          hysteresis_slope, limb_constants, limb_induction, limiting_loop_energy,
                          rod_cycle_energy)
-from .winding import winding_mass, winding_power, winding_resistance, winding_voltage
+from .winding import (ampere_turns_power, coaxial_system_scale_for_power, winding_mass, winding_power,
+                      winding_resistance, winding_voltage)
 
 __all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
            "rod_cycle_energy", "limiting_loop_energy", "hysteresis_damping_torque", "SHAPES", "Turn", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
@@ -39,9 +40,11 @@ __all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_r
            "wire_diameter_from_resistance", "coil_full_scale_moment", "quantise_duty", "coil_designs", "binding_limit",
            "design_magnetorquer", "rod_demagnetizing_factor", "effective_permeability",
            "magnetization_curve", "field_for_magnetization", "core_central_magnetization",
-           "electromagnet_design", "magnet_torque_per_mass", "magnet_mass_for_torque",
+           "electromagnet_design", "electromagnet_moment", "turns_per_layer", "winding_band", "wire_turn_limits",
+           "magnet_torque_per_mass", "magnet_mass_for_torque",
            "magnet_moment_per_mass", "permanent_magnet_min_mass", "winding_resistance", "winding_voltage",
-           "winding_power", "winding_mass", "MPU6050_GYRO_NOISE_DENSITY", "MPU6050_GYRO_TOTAL_RMS_NOISE",
+           "winding_power", "winding_mass", "ampere_turns_power", "coaxial_system_scale_for_power",
+           "MPU6050_GYRO_NOISE_DENSITY", "MPU6050_GYRO_TOTAL_RMS_NOISE",
            "MPU6050_GYRO_ZRO_TOLERANCE", "MPU6050_ACCEL_NOISE_DENSITY", "MPU6050_ACCEL_ZERO_G_TOLERANCE",
-           "MPU6050_DLPF_BANDWIDTH", "HMC5883L_NOISE_FLOOR", "HMC5883L_MAX_OUTPUT_RATE",
-           "noise_std_from_density", "gyro_readings", "accelerometer_readings", "magnetometer_readings"]
+           "MPU6050_DLPF_BANDWIDTH", "HMC5883L_NOISE_FLOOR", "HMC5883L_MAX_OUTPUT_RATE", "HMC5883L_GAINS", "HMC5883L_MAX_COUNT",
+           "noise_std_from_density", "gyro_readings", "accelerometer_readings", "magnetometer_readings", "magnetometer_full_scale"]

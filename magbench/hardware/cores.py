@@ -11,7 +11,7 @@ import numpy as np
 from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, shown
 
 __all__ = ["rod_demagnetizing_factor", "effective_permeability", "magnetization_curve",
-           "field_for_magnetization", "core_central_magnetization", "electromagnet_design"]
+           "field_for_magnetization", "core_central_magnetization", "electromagnet_design", "electromagnet_moment"]
 
 
 def rod_demagnetizing_factor(elongation, formula="power"):
@@ -292,3 +292,46 @@ def electromagnet_design(moment, elongation, design_magnetization, design_field,
         "core_mass": core_mass, "conductor_mass": conductor_mass,
         "mass": core_mass + conductor_mass,
     }
+
+
+def electromagnet_moment(central_magnetization, core_diameter, length, averaging_factor):
+    r"""Moment of a rod electromagnet's core from the magnetisation of its central section.
+
+    Parameters
+    ----------
+    central_magnetization : array_like
+        Magnetisation of the core's central section J_ц [A/m], e.g. from
+        :func:`core_central_magnetization` (the state the winding actually produces).
+    core_diameter : array_like
+        Core diameter D₁ [m], > 0.
+    length : array_like
+        Core length l [m], > 0.
+    averaging_factor : array_like
+        k = J_c/J_ц, mean over central magnetisation [-], in (0, 1].
+
+    Returns
+    -------
+    ndarray
+        L = k J_ц π D₁² l / 4 [A·m²].
+
+    Notes
+    -----
+    Not in the thesis: Kovalenko (1975) §9.3, eq. (9.64) read the other way (the moment
+    of a core of volume πD₁²l/4 magnetised to k J_ц on average). At the design state J°
+    of :func:`electromagnet_design` it gives back the required moment; with the
+    magnetisation from the material's curve it shows whether the core saturates first.
+
+    Examples
+    --------
+    >>> em = electromagnet_design(0.4, 40.0, 1.1e6, 500.0, 0.79, 2e6, 0.5, 0.0175e-6,
+    ...                           8.0e3, 8.9e3, 12.0)
+    >>> round(float(electromagnet_moment(1.1e6, em["core_diameter"], em["length"], 0.79)), 12)
+    0.4
+    """
+    j = as_finite("central_magnetization", central_magnetization)
+    d = as_positive("core_diameter", core_diameter, unit="m")
+    length_ = as_positive("length", length, unit="m")
+    k = as_in_range("averaging_factor", averaging_factor, 0.0, 1.0)
+    if np.any(k == 0):
+        raise ValueError("averaging_factor must lie in (0, 1] [-], got 0.0")
+    return k * j * math.pi * d ** 2 * length_ / 4

@@ -11,9 +11,11 @@ eqs. (17)–(31) is correct; thesis §3.2 says the square formulas differ from "
 (30) is identical to (26): the mass × power product does not depend on the shape.
 """
 
+import math
+
 import numpy as np
 
-from .._validate import as_finite, as_in_range, as_nonnegative, as_positive
+from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, shown
 from .turn import _length_factor, turn_area, turn_length, wire_area  # noqa: F401 - wire_area: doctests
 
 __all__ = ["dipole_moment", "current_for_moment", "coil_current", "turn_resistance", "coil_resistance",
@@ -21,7 +23,8 @@ __all__ = ["dipole_moment", "current_for_moment", "coil_current", "turn_resistan
            "turns_from_winding_length", "winding_length", "joule_power_for_winding_length", "coil_mass",
            "coil_mass_for_moment", "mass_power_product", "winding_density", "mass_power_product_kovalenko",
            "supply_voltage", "turns_per_volt_bounds", "turns_from_resistance",
-           "wire_diameter_from_resistance"]
+           "wire_diameter_from_resistance",
+           "turns_per_layer", "winding_band", "wire_turn_limits"]
 
 
 # Relative slack when an exactly-at-the-limit design (the thesis's N = 240) is compared
@@ -785,3 +788,124 @@ def wire_diameter_from_resistance(resistance, turns, side, resistivity, shape="r
     n = as_positive("turns", turns)
     rho = as_positive("resistivity", resistivity, unit="Ω·m")
     return np.sqrt(4.0 * rho * turn_length(side, shape) * n / (np.pi * r))
+
+
+def turns_per_layer(side, wire_pitch):
+    r"""Turns of a wire that fit side by side in one layer across a former.
+
+    Parameters
+    ----------
+    side : array_like
+        Width available for the winding, the turn's side l [m], > 0.
+    wire_pitch : array_like
+        Distance between neighbouring turns, the insulated wire's overall diameter [m], > 0.
+
+    Returns
+    -------
+    ndarray
+        ⌊l / pitch⌋ [-].
+
+    Notes
+    -----
+    Thesis §3.2 (its dense single-layer winding, N = L/√S_r along the side) with the
+    insulated diameter as the pitch.
+
+    Examples
+    --------
+    >>> float(turns_per_layer(0.1, 0.226e-3))
+    442.0
+    """
+    l = as_positive("side", side, unit="m")
+    pitch = as_positive("wire_pitch", wire_pitch, unit="m")
+    return np.floor(l / pitch)
+
+
+def winding_band(turns, side, wire_pitch):
+    r"""Layers and width of the band a winding of N turns makes on a former of side l.
+
+    Parameters
+    ----------
+    turns : float
+        Number of turns N [-], >= 1.
+    side : float
+        Width available across the former, the turn's side l [m], > 0.
+    wire_pitch : float
+        Distance between neighbouring turns [m], > 0 and at most ``side``.
+
+    Returns
+    -------
+    layers : int
+        ⌈N / n₁⌉ layers, n₁ = :func:`turns_per_layer` [-].
+    width : float
+        Band width ⌈N / layers⌉ · pitch [m]: the turns shared evenly between the layers.
+
+    Notes
+    -----
+    Thesis §3.2 assumes a dense single layer (N·pitch ≤ l); turns that do not fit are
+    wound in as many layers as they need (not in the thesis).
+
+    Examples
+    --------
+    >>> winding_band(1000, 0.1, 0.226e-3)
+    (3, 0.075484)
+    """
+    n = float(as_finite("turns", turns))
+    if n < 1:
+        raise ValueError(f"turns must be >= 1 [-], got {shown(n)}")
+    l = float(as_positive("side", side, unit="m"))
+    pitch = float(as_positive("wire_pitch", wire_pitch, unit="m"))
+    per_layer = math.floor(l / pitch)
+    if per_layer < 1:
+        raise ValueError(f"wire_pitch {shown(pitch)} m is wider than the side {shown(l)} m: not one turn fits")
+    layers = math.ceil(n / per_layer)
+    return layers, math.ceil(n / layers) * pitch
+
+
+def wire_turn_limits(voltage, side, wire_area, max_power, max_mass, resistivity, density, shape="round"):
+    r"""Fewest turns that keep a coil within its power limit, and most within its mass limit.
+
+    Parameters
+    ----------
+    voltage : array_like
+        Supply voltage U [V].
+    side : array_like
+        Turn diameter (round) or side (square) l [m], > 0.
+    wire_area : array_like
+        Conductor cross-section S_r [m²], > 0.
+    max_power : array_like
+        Joule power limit W_max [W], > 0.
+    max_mass : array_like
+        Conductor mass limit M_max [kg], > 0.
+    resistivity : array_like
+        Conductor resistivity ρ [Ω·m], > 0.
+    density : array_like
+        Conductor density ρ̃ [kg/m³], > 0.
+    shape : {"round", "square"}, optional
+        Turn shape [-].
+
+    Returns
+    -------
+    fewest, most : ndarray
+        ⌈U² / (R₁ W_max)⌉ and ⌊M_max / (ρ̃ ℓ S_r)⌋ turns [-], R₁ = ρℓ/S_r the resistance of
+        one turn of length ℓ. The wire is feasible where fewest ≤ most.
+
+    Notes
+    -----
+    Thesis eqs. (22)–(24) and (28)–(29) for a given wire (rather than the wire of eq.
+    (21)): P = U²/(N R₁) falls and M = N ρ̃ ℓ S_r grows with N.
+
+    Examples
+    --------
+    >>> lo, hi = wire_turn_limits(12.0, 0.1, wire_area(0.2e-3), 2.0, 0.1, 0.0175e-6, 8.9e3, "square")
+    >>> float(lo), float(hi)
+    (324.0, 894.0)
+    """
+    u = as_finite("voltage", voltage)
+    s_r = as_positive("wire_area", wire_area, unit="m²")
+    w_max = as_positive("max_power", max_power, unit="W")
+    m_max = as_positive("max_mass", max_mass, unit="kg")
+    rho = as_positive("resistivity", resistivity, unit="Ω·m")
+    g = as_positive("density", density, unit="kg/m³")
+    perim = turn_length(side, shape)
+    r_turn = rho * perim / s_r
+    return np.ceil(u**2 / (r_turn * w_max)), np.floor(m_max / (g * perim * s_r))

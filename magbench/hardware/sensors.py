@@ -43,7 +43,10 @@ __all__ = [
     "MPU6050_DLPF_BANDWIDTH",
     "HMC5883L_NOISE_FLOOR",
     "HMC5883L_MAX_OUTPUT_RATE",
+    "HMC5883L_GAINS",
+    "HMC5883L_MAX_COUNT",
     "noise_std_from_density",
+    "magnetometer_full_scale",
     "gyro_readings",
     "accelerometer_readings",
     "magnetometer_readings",
@@ -82,6 +85,16 @@ HMC5883L_NOISE_FLOOR = 2e-3 * 1e-4
 #: HMC5883L maximum output rate in continuous-measurement mode [Hz] (75 Hz, same table).
 HMC5883L_MAX_OUTPUT_RATE = 75.0
 
+#: HMC5883L gain settings, in the datasheet's units (form 900405 rev. E, "Configuration
+#: Register B", gain table): recommended field range [gauss] and gain [counts per gauss],
+#: for GN = 0 … 7. Multiply the gain by 1e4 for counts per tesla.
+HMC5883L_GAINS = ((0.88, 1370.0), (1.3, 1090.0), (1.9, 820.0), (2.5, 660.0), (4.0, 440.0),
+                  (4.7, 390.0), (5.6, 330.0), (8.1, 230.0))
+
+#: Largest HMC5883L output [counts]: the data registers hold −2048 … 2047 and read
+#: −4096 on overflow (same datasheet, "Data Output Registers").
+HMC5883L_MAX_COUNT = 2047
+
 
 def _check_rng(rng):
     if not isinstance(rng, np.random.Generator):
@@ -107,6 +120,37 @@ def _channel(name, value, sample_shape, *, nonnegative=False):
         raise ValueError(
             f"{name} must broadcast against one sample of shape {sample_shape}, got shape {arr.shape}"
         ) from None
+
+
+def magnetometer_full_scale(gain, max_count=HMC5883L_MAX_COUNT):
+    r"""Largest flux density a digital magnetometer reports before its output overflows.
+
+    Parameters
+    ----------
+    gain : array_like
+        Gain setting [counts/T], > 0 (the HMC5883L's 1090 counts/G is 1.09e7 counts/T).
+    max_count : array_like, optional
+        Largest output count [counts], > 0; default :data:`HMC5883L_MAX_COUNT`.
+
+    Returns
+    -------
+    ndarray
+        Full scale B_max = max_count / gain [T].
+
+    Notes
+    -----
+    Not in the thesis: Honeywell HMC5883L datasheet, form 900405 rev. E (gain table and
+    output registers). The thesis measured its simulator's centre field with this sensor
+    (thesis §2.4); a field above the full scale of the chosen gain reads as overflow.
+
+    Examples
+    --------
+    >>> round(float(magnetometer_full_scale(1090.0e4)) * 1e4, 4)   # gauss, at GN = 1
+    1.878
+    """
+    g = as_positive("gain", gain, unit="counts/T")
+    n = as_positive("max_count", max_count, unit="counts")
+    return n / g
 
 
 def noise_std_from_density(density, dt, bandwidth=None):

@@ -1,4 +1,5 @@
-"""Electrics and mass of a winding: resistance, voltage, power, mass.
+"""Electrics and mass of a winding: resistance, voltage, power, mass; the power of a coil
+system of given ampere-turns.
 
 Thesis §2.2 (the winding formulas after eq. (16)): R = 2πaρN/S₀, U = RI, P = UI, and
 eq. (24) for the mass. One API for every coil: the first argument is the turn's
@@ -7,9 +8,13 @@ and a magnetorquer alike), or a number, read as the radius of a round turn (the
 simulator coils of chapter 2). SI throughout.
 """
 
+import numpy as np
+
+from .. import fields
+from ..constants import MU_0
 from .._validate import as_finite, as_positive
 from .magnetorquer import coil_mass, coil_resistance
-from .turn import Turn, wire_area
+from .turn import Turn, turn_length, wire_area
 
 
 def _turn(turn):
@@ -18,7 +23,8 @@ def _turn(turn):
         return turn
     return Turn.round(turn)
 
-__all__ = ["winding_resistance", "winding_voltage", "winding_power", "winding_mass"]
+__all__ = ["winding_resistance", "winding_voltage", "winding_power", "winding_mass", "ampere_turns_power",
+           "coaxial_system_scale_for_power"]
 
 
 def winding_resistance(turn, turns, wire_diameter, resistivity):
@@ -165,3 +171,108 @@ def winding_mass(turn, turns, wire_diameter, density):
     t = _turn(turn)
     return coil_mass(turns, t.side, wire_area(as_positive("wire_diameter", wire_diameter, unit="m")),
                      density, shape=t.shape)
+
+
+def ampere_turns_power(turn, ampere_turns, winding_area, resistivity):
+    r"""Ohmic power of a winding that carries given ampere-turns in a given copper cross-section.
+
+    Parameters
+    ----------
+    turn : Turn or array_like
+        The turn's geometry (:class:`~magbench.hardware.turn.Turn`), or the coil radius
+        a_c of a round turn [m], > 0.
+    ampere_turns : array_like
+        N·I of the winding [A].
+    winding_area : array_like
+        Copper cross-section of the whole winding A = N S₀ [m²], > 0.
+    resistivity : array_like
+        Conductor resistivity ρ [Ω·m], > 0.
+
+    Returns
+    -------
+    ndarray
+        P [W], whatever the split of N·I into turns and current.
+
+    Notes
+    -----
+    Thesis §2.2 (R = 2πa_cρN/S₀, P = UI, after eq. (16)) with the winding's copper
+    cross-section A = N S₀ held fixed: I = NI/N and R = ρ N ℓ / S₀ give
+
+    .. math:: P = \frac{\rho\,\ell\,(NI)^2}{A},
+
+    ℓ the length of one turn (2πa_c for a round coil).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> area = 110 * np.pi * 0.75e-3**2 / 4
+    >>> round(float(ampere_turns_power(0.5, 110 * 2.3, area, 0.0175e-6)), 1)   # = winding_power
+    72.4
+    """
+    ni = as_finite("ampere_turns", ampere_turns)
+    area = as_positive("winding_area", winding_area, unit="m²")
+    rho = as_positive("resistivity", resistivity, unit="Ω·m")
+    return rho * _turn(turn).length * ni**2 / area
+
+
+def coaxial_system_scale_for_power(shapes, sizes, positions, weights, center_h, power, winding_area,
+                                   resistivity):
+    r"""Size and ampere-turns at which a coaxial coil system gives a centre field at a given power.
+
+    Parameters
+    ----------
+    shapes : sequence of {"round", "square"}
+        Shape of each coil [-].
+    sizes : array_like, shape (n,)
+        Radius of each round coil, side of each square, at the reference size [m], > 0.
+    positions : array_like, shape (n,)
+        z of each coil's plane at the reference size [m].
+    weights : array_like, shape (n,)
+        Relative ampere-turns of the coils [-] (only the ratios count).
+    center_h : float
+        Field wanted at the centre H₀ [A/m], > 0.
+    power : float
+        Total power of all coils P [W], > 0.
+    winding_area : float
+        Copper cross-section of every coil's winding A [m²], > 0 (one kind of former for all).
+    resistivity : float
+        Conductor resistivity ρ [Ω·m], > 0.
+
+    Returns
+    -------
+    scale : float
+        Factor L [-] by which every length of the reference system is multiplied.
+    ampere_turns : ndarray, shape (n,)
+        N·I of each coil [A] at that size.
+
+    Notes
+    -----
+    Not in the thesis: its Fig. 3 and Kovalenko (1975) §3.4 compare candidate systems;
+    this puts them on an equal footing. With ampere-turns w_k X the system of size L
+    dissipates P = ρ X² L Σ w_k² ℓ_k / A (:func:`ampere_turns_power`, ℓ_k the turn
+    lengths at the reference size) and gives H₀ = h₀ X / L (h₀ the centre field of the
+    reference system per unit weight, :func:`magbench.fields.coaxial_system_b`), so
+
+    .. math:: L = \left(\frac{P A h_0^2}{\rho H_0^2 \sum_k w_k^2 \ell_k}\right)^{1/3},
+              \qquad X = H_0 L / h_0 .
+
+    Examples
+    --------
+    >>> scale, ni = coaxial_system_scale_for_power(["round"] * 2, [1.0, 1.0], [-0.5, 0.5], [1.0, 1.0],
+    ...                                            250.0, 100.0, 1e-4, 0.0175e-6)
+    >>> round(scale, 3), np.round(ni, 1).tolist()
+    (0.72, [251.4, 251.4])
+    """
+    w = as_finite("weights", weights)
+    h0_target = float(as_positive("center_h", center_h, unit="A/m"))
+    p = float(as_positive("power", power, unit="W"))
+    area = float(as_positive("winding_area", winding_area, unit="m²"))
+    rho = float(as_positive("resistivity", resistivity, unit="Ω·m"))
+    h0 = float(np.linalg.norm(fields.coaxial_system_b(np.zeros(3), shapes, sizes, positions, w))) / MU_0
+    if h0 == 0.0:
+        raise ValueError("weights must not make the centre field zero (the system cannot reach center_h)")
+    lengths = np.array([turn_length(2.0 * size if shape == "round" else size, shape)
+                        for shape, size in zip(shapes, as_positive("sizes", sizes, unit="m"))])
+    c = float(np.sum(w**2 * lengths))
+    scale = (p * area * h0**2 / (rho * h0_target**2 * c)) ** (1 / 3)
+    return scale, w * h0_target * scale / h0

@@ -115,3 +115,26 @@ def test_zero_noise_is_identity():
 def test_bad_input(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def test_magnetometer_full_scale_from_the_datasheet():
+    # Gain 1090 counts/G and the largest count 2047: 2047/1090 G (exact arithmetic; rounding only).
+    assert_allclose(sensors.magnetometer_full_scale(1090.0e4), 2047 / 1090 * 1e-4, rtol=1e-15)
+    assert sensors.HMC5883L_GAINS[1] == (1.3, 1090.0)
+
+
+def test_every_recommended_range_lies_inside_its_full_scale():
+    # The datasheet recommends each range within what the registers can hold: a property of
+    # the table, not of our choice. Ranges in gauss, gains in counts per gauss.
+    for rng, gain in sensors.HMC5883L_GAINS:
+        assert sensors.magnetometer_full_scale(gain * 1e4) * 1e4 >= rng
+    gains = [g for _, g in sensors.HMC5883L_GAINS]
+    assert gains == sorted(gains, reverse=True)      # wider range, lower gain
+
+
+@pytest.mark.parametrize("kw, name", [({"gain": 0.0}, "gain"), ({"gain": -1.0}, "gain"),
+                                      ({"max_count": 0}, "max_count")])
+def test_magnetometer_full_scale_bad_input(kw, name):
+    args = {"gain": 1090.0e4} | kw
+    with pytest.raises(ValueError, match=name):
+        sensors.magnetometer_full_scale(**args)

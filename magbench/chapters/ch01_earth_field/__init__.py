@@ -89,11 +89,7 @@ def geomagnetic_rows(params=None, *, epochs=None):
     f = igrf.igrf_field(lat, lon, year)
 
     def lab_elements(moment, pole_lat, pole_lon):
-        phi = earth.geomagnetic_latitude(lat, lon, pole_lat, pole_lon)
-        return np.array([earth.dipole_total_b(phi, moment, p["earth_radius"]),
-                         earth.dipole_horizontal_b(phi, moment, p["earth_radius"]),
-                         earth.dipole_vertical_b(phi, moment, p["earth_radius"]),
-                         earth.dipole_inclination(phi)])
+        return np.array(earth.dipole_elements(lat, lon, moment, pole_lat, pole_lon, p["earth_radius"]))
 
     model = lab_elements(m, plat, plon)
     spread = [_printed_digit_spread(lambda *v, k=k: lab_elements(*v)[k], (m, plat, plon),

@@ -33,35 +33,21 @@ def _dipole_parameters():
     }
 
 
-def _ned_basis(latitude, longitude):
-    """Rows: north, east, down unit vectors in Earth-fixed axes at a place."""
-    sl, cl, so, co = np.sin(latitude), np.cos(latitude), np.sin(longitude), np.cos(longitude)
-    return np.array([[-sl * co, -sl * so, cl], [-so, co, 0.0], [-cl * co, -cl * so, -sl]])
-
-
-def dipole_ned_b(latitude, longitude, moment, pole_latitude, pole_longitude, radius):
-    """Thesis dipole field at a place on the sphere, as (north, east, down) [T]."""
-    m_vec = earth.earth_dipole_moment_vector(moment, pole_latitude, pole_longitude)
-    clat = np.cos(latitude)
-    point = radius * np.array([clat * np.cos(longitude), clat * np.sin(longitude), np.sin(latitude)])
-    return _ned_basis(latitude, longitude) @ earth.dipole_b(point, m_vec)
-
-
 # --- thesis Fig. 1: elements of the geomagnetic field ------------------------------------
 
 def compute_fig01(earth_dipole_moment, geomagnetic_pole_latitude, geomagnetic_pole_longitude,
                   earth_radius, latitude, longitude, year):
     """Field elements X, Y, Z, H, T, D, J at one place: thesis dipole and IGRF-14."""
-    b = dipole_ned_b(latitude, longitude, earth_dipole_moment, geomagnetic_pole_latitude,
-                     geomagnetic_pole_longitude, earth_radius)
+    b = earth.dipole_ned_b(latitude, longitude, earth_dipole_moment, geomagnetic_pole_latitude,
+                           geomagnetic_pole_longitude, earth_radius)
     f = igrf.igrf_field(latitude, longitude, year)
     series = []
     for label, (x, y, z) in (("thesis dipole", b), (f"IGRF-14 {year:.0f}", (f.north, f.east, f.down))):
-        h = np.hypot(x, y)
+        h, total, declination, inclination = earth.field_elements(x, y, z)
         series.append(Series(label, {
             "X_north": ("uT", [x * 1e6]), "Y_east": ("uT", [y * 1e6]), "Z_down": ("uT", [z * 1e6]),
-            "H": ("uT", [h * 1e6]), "T": ("uT", [np.sqrt(h**2 + z**2) * 1e6]),
-            "D": ("deg", [np.degrees(np.arctan2(y, x))]), "J": ("deg", [np.degrees(np.arctan2(z, h))]),
+            "H": ("uT", [h * 1e6]), "T": ("uT", [total * 1e6]),
+            "D": ("deg", [np.degrees(declination)]), "J": ("deg", [np.degrees(inclination)]),
         }))
     return FigureData("thesis-fig01", "Elements of the geomagnetic field", SOURCE, {}, series)
 
@@ -136,14 +122,10 @@ def compute_fig02(earth_dipole_tilt, geomagnetic_latitude_deg_step):
         raise ValueError(f"geomagnetic_latitude_deg_step must lie in [1, 45] deg, got {shown(step)}")
     series = []
     lam = np.linspace(-np.pi / 2, np.pi / 2, 721)
-    c, s = np.cos(earth_dipole_tilt), np.sin(earth_dipole_tilt)
     for foot in np.arange(step, 90.0, step):
-        shell = 1.0 / np.cos(np.radians(foot)) ** 2          # L = 1/cos²(footpoint latitude)
-        r = shell * np.cos(lam) ** 2
-        keep = r >= 1.0
+        shell = float(earth.dipole_shell(np.radians(foot)))
         for side in (1.0, -1.0):
-            xm, zm = side * r[keep] * np.cos(lam[keep]), r[keep] * np.sin(lam[keep])
-            x, z = c * xm + s * zm, -s * xm + c * zm          # rotate magnetic → geographic axes
+            x, z = earth.dipole_field_line(shell, lam, earth_dipole_tilt, side)
             series.append(Series(f"L = {shell:.3g} ({'east' if side > 0 else 'west'} side)",
                                  {"x": ("R_E", x), "z": ("R_E", z)}))
     return FigureData("thesis-fig02", "Geomagnetic coordinates: the tilted centred dipole", SOURCE,

@@ -15,6 +15,7 @@ from ... import fields
 from ... import hardware
 from ...chapters import ch02_field_simulator
 from ...constants import MU_0
+from ...hardware import HMC5883L_GAINS
 from ...io import load_measurements
 from . import CHAPTER
 from .._base import chapter_parameters
@@ -22,14 +23,6 @@ from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
 
 SOURCE = "Bui (2016), thesis §2"
-
-#: HMC5883L gain settings (Honeywell datasheet, "Configuration Register B", gain table):
-#: recommended field range [gauss] and gain [counts per gauss]. The output register
-#: holds −2048…2047 counts; on overflow it reads −4096.
-HMC5883L_GAINS = ((0.88, 1370.0), (1.3, 1090.0), (1.9, 820.0), (2.5, 660.0), (4.0, 440.0),
-                  (4.7, 390.0), (5.6, 330.0), (8.1, 230.0))
-HMC5883L_MAX_COUNT = 2047
-GAUSS_TO_A_PER_M = 1e-4 / MU_0
 
 
 def _defaults():
@@ -205,8 +198,6 @@ def plot_line(data):
 
 def compute_zone_criterion(coil_radius, design_spacing_ratio, comsol_spacing, built_spacing):
     """Zone lengths on the axis and across it against δ; the δ that matches each reading."""
-    from scipy import optimize
-
     a = coil_radius
     tol = np.geomspace(1e-4, 0.1, 61)
     m = _measured()
@@ -217,14 +208,7 @@ def compute_zone_criterion(coil_radius, design_spacing_ratio, comsol_spacing, bu
         for direction, reading in readings.items():
             lengths = np.array([fields.uniform_zone_length(a, d, t, direction) for t in tol])
             cols[f"{direction}_length"] = ("m", lengths)
-            # The smallest band whose zone reaches the reading (zones grow with δ, with jumps).
-            j = int(np.argmax(lengths >= reading)) if np.any(lengths >= reading) else None
-            if j is None or j == 0:
-                matches[(label, direction)] = float("nan")
-            else:
-                matches[(label, direction)] = float(optimize.brentq(
-                    lambda t: fields.uniform_zone_length(a, d, t, direction) - reading, tol[j - 1], tol[j],
-                    xtol=1e-9))
+            matches[(label, direction)] = fields.zone_tolerance_for_length(a, d, reading, direction, tol)
             cols[f"{direction}_matching_tolerance"] = ("1", [matches[(label, direction)]])
         series.append(Series(label, cols))
     return FigureData("ch02-zone-criterion", "", "", {}, series, extra={"readings": readings})
@@ -344,18 +328,13 @@ def coil_systems():
     ]
 
 
-def _turn_lengths(shapes, sizes):
-    return np.array([2 * np.pi * s if sh == "round" else 4 * s for sh, s in zip(shapes, sizes)])
-
-
 def compute_fig03(tolerance, center_h, power, winding_area, copper_resistivity):
     """Each system scaled to the same centre field and the same total power.
 
     Every coil's winding has the same copper cross-section ``winding_area`` (one kind of
-    former for all coils, as in the thesis). A system of size L with ampere-turns
-    w_k·X dissipates P = ρ X² L Σ w_k² ℓ_k / A_cu (ℓ_k: turn length at unit size) and
-    gives H0 = h0 X / L, so at fixed H0 and P its size is
-    L = (P A_cu h0² / (ρ H0² Σ w_k² ℓ_k))^{1/3} and its uniform sphere is s_δ L.
+    former for all coils, as in the thesis); the size L at which each system makes the
+    centre field at the power is :func:`magbench.hardware.coaxial_system_scale_for_power`,
+    and its uniform sphere is s_δ L.
     """
     if not 0 < tolerance < 0.5:
         raise ValueError(f"tolerance must lie in (0, 0.5), got {shown(tolerance)}")
@@ -366,14 +345,13 @@ def compute_fig03(tolerance, center_h, power, winding_area, copper_resistivity):
     series = []
     for name, shapes, sizes, positions, weights in coil_systems():
         w = np.asarray(weights) / max(weights)
-        h0 = float(np.linalg.norm(fields.coaxial_system_b(np.zeros(3), shapes, sizes, positions, w))) / MU_0
         s_unit = fields.coaxial_system_uniform_radius(shapes, sizes, positions, w, tolerance)
-        c = float(np.sum(w**2 * _turn_lengths(shapes, sizes)))
-        scale = (power * winding_area * h0**2 / (copper_resistivity * center_h**2 * c)) ** (1 / 3)
+        scale, ampere_turns = hardware.coaxial_system_scale_for_power(shapes, sizes, positions, w, center_h, power,
+                                                                      winding_area, copper_resistivity)
         series.append(Series(name, {
             "shape_is_square": ("1", [1.0 if s == "square" else 0.0 for s in shapes]),
             "size": ("m", np.asarray(sizes) * scale), "position": ("m", np.asarray(positions) * scale),
-            "ampere_turns": ("A", w * center_h * scale / h0),
+            "ampere_turns": ("A", ampere_turns),
             "scale": ("m", [scale]), "uniform_radius": ("m", [s_unit * scale]),
             "uniform_radius_per_size": ("1", [s_unit]),
             "half_length": ("m", [float(np.max(np.abs(positions))) * scale]),
@@ -430,7 +408,7 @@ def _thesis_design_power(p):
     a = p["sim_coil_radius"]
     ni = float(fields.helmholtz_ampere_turns(p["sim_design_h"], a, p["sim_spacing_ratio"] * a))
     area = p["sim_turns"] * np.pi * p["sim_wire_diameter"] ** 2 / 4
-    return 2 * p["copper_resistivity"] * 2 * np.pi * a * ni**2 / area
+    return 2 * float(hardware.ampere_turns_power(a, ni, area, p["copper_resistivity"]))
 
 
 def _fig03_parameters():
@@ -487,7 +465,7 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
     # Above the peak field 4NI/(3√3 d) no radius gives the measurement; the probe's
     # offset and tilt are solved for a reading below the model's only (a tilt cannot
     # raise it): when the measurement is not below, those hypotheses are excluded.
-    h_peak = 4.0 * n * i / (3.0 * np.sqrt(3.0) * d)
+    h_peak = float(fields.pair_peak_center_h(n * i, d))
     a_eff = fields.pair_radius_for_center_h(measured_center_h, n * i, d) if measured_center_h <= h_peak else np.nan
     reading_lower = 0.0 < frac < 1.0
     reversed_h = float(np.linalg.norm(fields.coaxial_system_b(
@@ -518,8 +496,9 @@ def hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper
 
 
 def hmc5883l_full_scale():
-    """Largest field each HMC5883L gain setting can report before overflow [A/m]."""
-    return [(rng, gain, HMC5883L_MAX_COUNT / gain * GAUSS_TO_A_PER_M) for rng, gain in HMC5883L_GAINS]
+    """``[(range [G], gain [counts/G], full scale [A/m])]`` of each HMC5883L gain setting
+    (:data:`magbench.hardware.HMC5883L_GAINS`)."""
+    return [(rng, gain, float(hardware.magnetometer_full_scale(gain * 1e4)) / MU_0) for rng, gain in HMC5883L_GAINS]
 
 
 def compute_hypotheses(turns, current, coil_radius, built_spacing, wire_diameter, copper_resistivity):
@@ -641,26 +620,6 @@ def _hypotheses_parameters():
 
 # --- chapter 2: a three-axis simulator ------------------------------------------------------
 
-def _vector_uniform_radius(field, target, reference, tolerance, s_max):
-    """First radius at which |B − target| on a sphere reaches tolerance·reference [m]."""
-    from scipy import optimize
-
-    dirs = fields.SPHERE_DIRECTIONS
-
-    def dev(s):
-        b = field(s * dirs)
-        return float(np.max(np.linalg.norm(b - target, axis=-1))) / reference
-
-    grid = np.linspace(0.0, s_max, 81)[1:]
-    values = np.array([dev(s) for s in grid])
-    above = np.flatnonzero(values > tolerance)
-    if above.size == 0:
-        return s_max
-    j = above[0]
-    lo = grid[j - 1] if j > 0 else 0.0
-    return float(optimize.brentq(lambda s: dev(s) - tolerance, lo, grid[j], xtol=1e-7))
-
-
 def compute_three_axis(radius_north, radius_east, radius_down, turns, target_h_north, target_h_east,
                        target_h_down, latitude, longitude, year, tolerance):
     """Currents of three Helmholtz pairs (axes north, east, down) for a target and for zero.
@@ -677,15 +636,11 @@ def compute_three_axis(radius_north, radius_east, radius_down, turns, target_h_n
     series = []
     for label, target in cases:
         i = fields.three_axis_pair_currents(target, background, radii, radii, turns)
-
-        def field(pts, i=i):
-            return background + fields.three_axis_pair_b(pts, i, radii, radii, turns)
-
-        reference = float(np.linalg.norm(target)) or float(np.linalg.norm(background))
-        r_u = _vector_uniform_radius(field, target, reference, tolerance, 0.99 * float(radii.min()))
+        r_u = fields.three_axis_uniform_radius(i, radii, radii, turns, background, target, tolerance)
         series.append(Series(label, {
             "current": ("A", i), "target": ("T", target), "background": ("T", background),
-            "centre_field": ("T", field(np.zeros(3))), "uniform_radius": ("m", [r_u]),
+            "centre_field": ("T", background + fields.three_axis_pair_b(np.zeros(3), i, radii, radii, turns)),
+            "uniform_radius": ("m", [r_u]),
             "radii": ("m", radii)}))
     return FigureData("ch02-three-axis", "", "", {}, series, extra={"tolerance": tolerance})
 

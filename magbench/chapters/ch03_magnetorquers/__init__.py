@@ -156,7 +156,7 @@ def magnetorquer_design_checks():
     mass_round = float(hardware.coil_mass_for_moment(m_req, u, n, rho, gamma, "round"))
     p_built = float(hardware.joule_power(u, r_built))
     # The fewest turns that keep the built wire within the power limit: W = U²/R, R ∝ N.
-    n_for_limit = int(np.ceil(n * (u**2 / w_max) / r_built))
+    n_for_limit = int(hardware.wire_turn_limits(u, side, s_built, w_max, m_max, rho, gamma, "square")[0])
     sq = f"square turn of side l = {side:g} m (eqs. 28–31)"
 
     def check(id, row, location, computed, unit, explanation, computation, *, quantity=None, scale=1.0):

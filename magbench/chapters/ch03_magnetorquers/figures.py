@@ -1,7 +1,5 @@
 """Figures of thesis chapter 3: the magnetorquers (eqs. 17–32, Fig. 9) and Kovalenko's actuators."""
 
-import math
-
 import numpy as np
 
 from ... import hardware
@@ -55,12 +53,10 @@ def compute_fig09(mtq_side, mtq_turns, wire_pitch, coils):
         raise ValueError(f"mtq_side, mtq_turns and wire_pitch must be positive, got "
                          f"{mtq_side!r}, {mtq_turns!r}, {wire_pitch!r}")
     h = mtq_side / 2.0
-    per_layer = math.floor(mtq_side / wire_pitch)
-    if per_layer < 1:
-        raise ValueError(f"wire_pitch {wire_pitch!r} m is wider than the side mtq_side {mtq_side!r} m: "
+    if wire_pitch > mtq_side:
+        raise ValueError(f"wire_pitch {shown(wire_pitch)} m is wider than the side mtq_side {shown(mtq_side)} m: "
                          "not one turn fits")
-    layers = math.ceil(mtq_turns / per_layer)
-    width = math.ceil(mtq_turns / layers) * wire_pitch
+    layers, width = hardware.winding_band(mtq_turns, mtq_side, wire_pitch)
     corners = np.array([[-h, -h], [h, -h], [h, h], [-h, h], [-h, -h]])
     series = []
     # cube edges as one polyline per face pair
@@ -152,14 +148,13 @@ def compute_design_space(mtq_moment, mtq_voltage, mtq_side, mtq_max_power, mtq_m
     mass = hardware.coil_mass_for_moment(m, u, n, rho, g, "square")
     lo, hi = hardware.turns_per_volt_bounds(m, l, mtq_max_power, mtq_max_mass, rho, g, "square")
     d, od, _ = _wire_sizes()
-    perim, s_r = 4 * l, np.pi * d**2 / 4
-    r_turn = rho * perim / s_r
+    s_r = np.pi * d**2 / 4
+    n_min_power, n_max_mass = hardware.wire_turn_limits(u, l, s_r, mtq_max_power, mtq_max_mass, rho, g, "square")
     wires = {
         "wire_diameter": ("mm", d * 1e3),
         "moment": ("A m^2", hardware.moment_from_voltage(u, l, s_r, rho)),
-        "n_min_power": ("1", np.ceil(u**2 / (r_turn * mtq_max_power))),
-        "n_max_mass": ("1", np.floor(mtq_max_mass / (g * perim * s_r))),
-        "n_max_single_layer": ("1", np.floor(l / od)),
+        "n_min_power": ("1", n_min_power), "n_max_mass": ("1", n_max_mass),
+        "n_max_single_layer": ("1", hardware.turns_per_layer(l, od)),
     }
     res = hardware.design_magnetorquer(m, u, l, "square", mtq_max_power, mtq_max_mass, d, rho, g,
                                   require_fit=True, overall_diameters=od)
@@ -315,7 +310,7 @@ def compute_actuators(mtq_moment, mtq_voltage, mtq_side, mtq_max_power, mtq_max_
     # saturation check: the central magnetisation the winding's field actually produces
     j_c = float(hardware.core_central_magnetization(em["coil_field"], em["demagnetizing_factor"],
                                                permalloy_a, permalloy_b))
-    em_moment = core_averaging_factor * j_c * math.pi * em["core_diameter"] ** 2 * em["length"] / 4
+    em_moment = float(hardware.electromagnet_moment(j_c, em["core_diameter"], em["length"], core_averaging_factor))
     j_r = magnet_remanence / MU_0
     pm = [("permanent magnet, B_r = %.2g T" % magnet_remanence, j_r, alnico_elongation, magnet_density),
           ("permanent magnet, AlNiCo YuN13DK25BA", alnico_max_magnetization, alnico_elongation, magnet_density)]
