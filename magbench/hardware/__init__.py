@@ -15,9 +15,10 @@ from .magnetorquer import (coil_current, coil_mass, coil_mass_for_moment, coil_r
                            current_for_moment, dipole_moment, joule_power, joule_power_for_moment,
                            joule_power_for_winding_length, mass_power_product,
                            mass_power_product_kovalenko, moment_from_voltage, supply_voltage,
-                           turn_resistance, turns_from_resistance, turns_from_winding_length,
-                           turns_per_layer, turns_per_volt_bounds, winding_band, winding_density, winding_length,
-                           wire_area_for_moment, wire_diameter_from_resistance, wire_turn_limits)
+                           turn_resistance, turns_from_winding_length, winding_density, winding_length,
+                           wire_area_for_moment)
+from .coil_sizing import (turns_from_resistance, turns_per_layer, turns_per_volt_bounds, winding_band,
+                          wire_diameter_from_resistance, wire_turn_limits)
 from .driver import coil_full_scale_moment, quantise_duty
 from .coil_design import binding_limit, coil_designs, design_magnetorquer
 from .cores import (core_central_magnetization, effective_permeability, electromagnet_design, electromagnet_moment,

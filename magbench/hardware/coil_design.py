@@ -9,7 +9,7 @@ import math
 import numpy as np
 
 from .._validate import as_nonnegative, as_positive, shown
-from .magnetorquer import _RTOL
+from .coil_sizing import _RTOL
 from .turn import _check_shape, turn_area, turn_length
 
 __all__ = ["coil_designs", "binding_limit", "design_magnetorquer"]
