@@ -1,6 +1,6 @@
 """Hardware that makes or measures a field: turns and wires, air-core magnetorquers and
 their design space, windings, cored rods and electromagnets, permanent magnets, hysteresis rods, and the
-sensors (datasheet error models).
+sensors (datasheet error models, cosine-law sun sensors).
 
 Pure functions of numpy arrays, SI. Re-exports the public functions of its modules.
 """
@@ -9,6 +9,7 @@ from .sensors import (HMC5883L_MAX_OUTPUT_RATE, HMC5883L_NOISE_FLOOR, MPU6050_AC
                       MPU6050_ACCEL_ZERO_G_TOLERANCE, MPU6050_DLPF_BANDWIDTH, MPU6050_GYRO_NOISE_DENSITY,
                       MPU6050_GYRO_TOTAL_RMS_NOISE, MPU6050_GYRO_ZRO_TOLERANCE, accelerometer_readings,
                       gyro_readings, magnetometer_readings, noise_std_from_density)
+from .sun_sensor import sun_sensor_signals
 from .turn import SHAPES, Turn, awg_diameter, turn_area, turn_length, wire_area, wire_diameter
 from .magnetorquer import (coil_current, coil_mass, coil_mass_for_moment, coil_resistance,
                            current_for_moment, dipole_moment, joule_power, joule_power_for_moment,
@@ -42,4 +43,5 @@ __all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_r
            "winding_power", "winding_mass", "MPU6050_GYRO_NOISE_DENSITY", "MPU6050_GYRO_TOTAL_RMS_NOISE",
            "MPU6050_GYRO_ZRO_TOLERANCE", "MPU6050_ACCEL_NOISE_DENSITY", "MPU6050_ACCEL_ZERO_G_TOLERANCE",
            "MPU6050_DLPF_BANDWIDTH", "HMC5883L_NOISE_FLOOR", "HMC5883L_MAX_OUTPUT_RATE",
-           "noise_std_from_density", "gyro_readings", "accelerometer_readings", "magnetometer_readings"]
+           "noise_std_from_density", "gyro_readings", "accelerometer_readings", "magnetometer_readings",
+           "sun_sensor_signals"]
