@@ -306,6 +306,9 @@ def full_run_rows(params=None):
     ]
 
 
+#: Sun-sensor normals ДС1–ДС3 in body axes (+x, +z, −x; ours: only n1 = −n3 is in the text).
+SENSOR_NORMALS = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [-1.0, 0.0, 0.0]])
+
 #: The synthetic session (ours): length, sampling, noise and its seed; row 1's lost second
 #: phase is set to 1 rad (any value would do: the fit does not know it).
 SESSION_DURATION, SESSION_RATE, SESSION_NOISE, SESSION_SEED, SESSION_LOST_PHASE = 60.0, 10.0, 0.01, 1, 1.0
@@ -313,8 +316,9 @@ SESSION_DURATION, SESSION_RATE, SESSION_NOISE, SESSION_SEED, SESSION_LOST_PHASE 
 
 @cached_result(maxsize=2)
 def _session_fits(a, c):
+    from ...estimation import (fit_frequency_first, fit_multistart, fit_nested_grid, fold_start_time,
+                               session_identifiability, session_recovered, synthetic_session)
     from ...io.tns0 import load_table1
-    from . import sessions
 
     t1 = load_table1()
 
@@ -322,24 +326,18 @@ def _session_fits(a, c):
         v = float(t1.values[name][0])
         return default if np.isnan(v) else v
 
-    big_l, theta = value("angular_momentum", 0.0), value("nutation", 0.0)
     t0 = value("start_time", 0.0)
-    psi_rate = big_l / a
-    phi_rate = big_l * np.cos(theta) * (1.0 / c - 1.0 / a)
-    printed = np.array([big_l, theta, value("phase_a", 0.0), value("phase_b", SESSION_LOST_PHASE),
-                        value("sun_angle", 0.0)])
+    printed = np.array([value("angular_momentum", 0.0), value("nutation", 0.0), value("phase_a", 0.0),
+                        value("phase_b", SESSION_LOST_PHASE), value("sun_angle", 0.0)])
     # Table 1's t0 folded into the phases: the same motion with t0 = 0 (t0 is not identifiable).
-    truth = printed.copy()
-    truth[2] = np.mod(printed[2] - psi_rate * t0, 2 * np.pi)
-    truth[3] = np.mod(printed[3] - phi_rate * t0, 2 * np.pi)
-    time, signals = sessions.synthetic_session(truth, a, c, duration=SESSION_DURATION, rate=SESSION_RATE,
-                                               noise=SESSION_NOISE, seed=SESSION_SEED)
-    fits = [f(time, signals, a, c) for f in (sessions.fit_nested_grid, sessions.fit_multistart,
-                                             sessions.fit_frequency_first)]
+    truth = fold_start_time(printed, t0, a, c)
+    time, signals = synthetic_session(truth, SENSOR_NORMALS, a, c, duration=SESSION_DURATION, rate=SESSION_RATE,
+                                      noise=SESSION_NOISE, seed=SESSION_SEED)
+    fits = [f(time, signals, SENSOR_NORMALS, a, c) for f in (fit_nested_grid, fit_multistart, fit_frequency_first)]
     for fit in fits:
-        fit["recovered"] = sessions.recovered(fit, truth)
+        fit["recovered"] = session_recovered(fit, truth)
     return {"truth": truth, "printed": printed, "start_time": t0, "time": time, "signals": signals, "fits": fits,
-            "singular_values": sessions.identifiability(truth, time, a, c)}
+            "singular_values": session_identifiability(truth, time, SENSOR_NORMALS, a, c)}
 
 
 def session_fits(params=None):
