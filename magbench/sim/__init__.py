@@ -11,7 +11,8 @@ spacecraft and the passive satellite; the bench loop is imported from its module
 from .detumble import DetumbleRun, detumble_monte_carlo, detumble_time, simulate_detumble
 from ..integrate import rk4_step
 from .pid_loop import PidLoop, loop_torque, pid_continuous_rhs, simulate_pid
-from .passive import PassiveRun, PassiveSatellite, flat_spin_decay_rate, initial_passive_state, simulate_passive
+from .passive import (PassiveRun, PassiveSatellite, flat_spin_decay_rate, initial_passive_state, orbit_mean_field,
+                      passive_final_regime, simulate_passive)
 from .result import SimulationResult
 from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimensionless, rotor_finite_difference_monodromy,
                        rotor_floquet_multipliers, rotor_linearised_matrices, rotor_normalised_rhs,
@@ -22,6 +23,7 @@ from .spin_correction import relay_spin_correction
 __all__ = ["rk4_step", "SimulationResult", "PidLoop", "loop_torque", "pid_continuous_rhs", "simulate_pid", "DetumbleRun", "simulate_detumble", "detumble_time",
            "detumble_monte_carlo",
            "PassiveSatellite", "PassiveRun", "simulate_passive", "initial_passive_state", "flat_spin_decay_rate",
+           "orbit_mean_field", "passive_final_regime",
            "RotorSatellite", "RotorRun", "rotor_dimensionless",
            "rotor_satellite_from_dimensionless", "rotor_normalised_rhs", "rotor_linearised_matrices",
            "rotor_floquet_multipliers", "rotor_stability_map", "rotor_finite_difference_monodromy",
