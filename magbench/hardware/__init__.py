@@ -1,7 +1,7 @@
 """Hardware that makes or measures a field: turns and wires, air-core magnetorquers and
 their design space, the bench's coil driver (full-scale moment, PWM duty), windings, cored
 rods and electromagnets, permanent magnets, hysteresis rods, and the sensors (datasheet
-error models).
+error models, cosine-law sun sensors).
 
 Pure functions of numpy arrays, SI. Re-exports the public functions of its modules.
 """
@@ -27,12 +27,12 @@ from .magnets import (magnet_mass_for_torque, magnet_moment_per_mass, magnet_tor
                       permanent_magnet_min_mass)
 from .hysteresis import (hysteresis_damping_torque, hysteresis_loop_energy, hysteresis_response,
                          hysteresis_slope, limb_constants, limb_induction, limiting_loop_energy,
-                         rod_cycle_energy)
+                         rod_cycle_energy, settled_hysteresis_loop)
 from .winding import (ampere_turns_power, coaxial_system_scale_for_power, winding_mass, winding_power,
                       winding_resistance, winding_voltage)
 
 __all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
-           "rod_cycle_energy", "limiting_loop_energy", "hysteresis_damping_torque", "SHAPES", "Turn", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
+           "rod_cycle_energy", "settled_hysteresis_loop", "limiting_loop_energy", "hysteresis_damping_torque", "SHAPES", "Turn", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
            "dipole_moment", "current_for_moment", "coil_current", "turn_resistance", "coil_resistance",
            "moment_from_voltage", "wire_area_for_moment", "joule_power", "joule_power_for_moment",
            "turns_from_winding_length", "winding_length", "joule_power_for_winding_length", "coil_mass",
@@ -49,3 +49,4 @@ __all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_r
            "MPU6050_GYRO_ZRO_TOLERANCE", "MPU6050_ACCEL_NOISE_DENSITY", "MPU6050_ACCEL_ZERO_G_TOLERANCE",
            "MPU6050_DLPF_BANDWIDTH", "HMC5883L_NOISE_FLOOR", "HMC5883L_MAX_OUTPUT_RATE", "HMC5883L_GAINS", "HMC5883L_MAX_COUNT",
            "noise_std_from_density", "gyro_readings", "accelerometer_readings", "magnetometer_readings", "magnetometer_full_scale"]
+from .sun_sensor import sun_sensor_signals

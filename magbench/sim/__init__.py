@@ -4,7 +4,8 @@ bench loop (the :mod:`.bench` package), B-dot detumbling on orbit (:mod:`.detumb
 whose step follows the rate: :mod:`.detumble_segments`), the spinning spacecraft with a coaxial rotor
 (:mod:`.spinning`, its normalised model :mod:`.rotor_normalised`, the turning-field run
 :mod:`.turning_field`), Kovalenko's relay spin correction (:mod:`.spin_correction`) and the passive
-magnetic satellite (:mod:`.passive`, its flat spin's energy balance :mod:`.passive_balance`).
+magnetic satellite (:mod:`.passive`, its flat spin's energy balance :mod:`.passive_balance`, its final
+regime :mod:`.passive_regime`).
 
 Re-exports the integrator, the result type, the mock-up's PID loop, detumbling, the spinning
 spacecraft and the passive satellite; the bench loop is imported from its package.
@@ -15,6 +16,7 @@ from .detumble_segments import DETUMBLE_STEPS, detumble_step, simulate_detumble_
 from ..integrate import rk4_step
 from .pid_loop import PidLoop, loop_torque, pid_continuous_rhs, simulate_pid
 from .passive import PassiveRun, PassiveSatellite, initial_passive_state, simulate_passive
+from .passive_regime import orbit_mean_field, passive_final_regime
 from .passive_balance import flat_spin_decay_rate
 from .result import SimulationResult
 from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimensionless, rotor_finite_difference_monodromy,
@@ -26,6 +28,7 @@ from .spin_correction import relay_spin_correction
 __all__ = ["rk4_step", "SimulationResult", "PidLoop", "loop_torque", "pid_continuous_rhs", "simulate_pid", "DetumbleRun", "simulate_detumble", "detumble_time",
            "detumble_monte_carlo", "DETUMBLE_STEPS", "detumble_step", "simulate_detumble_segments",
            "PassiveSatellite", "PassiveRun", "simulate_passive", "initial_passive_state", "flat_spin_decay_rate",
+           "orbit_mean_field", "passive_final_regime",
            "RotorSatellite", "RotorRun", "rotor_dimensionless",
            "rotor_satellite_from_dimensionless", "rotor_normalised_rhs", "rotor_linearised_matrices",
            "rotor_floquet_multipliers", "rotor_stability_map", "rotor_finite_difference_monodromy",

@@ -160,18 +160,20 @@ def test_chapter_record():
 A, C = 0.0406, 0.00625
 
 
-def test_sensor_model_equals_the_euler_case_rotation():
-    # sensors.sensor_signals writes R e_x and R e_z out by hand; the figure's path rotates the
-    # normals with dynamics.euler_case_matrix (3-1-3 matrices). Same model: equal to rounding.
-    from magbench.estimation.spin_sessions import sensor_signals
+def test_chapter_session_model_is_the_estimation_model():
+    # The figure's path (dynamics.euler_case_matrix and hardware.sun_sensor_signals, with the
+    # albedo) and the fits' model (estimation.euler_case_sun_signals, written out) on row 1,
+    # whose albedo ratio is not printed (NaN, read as 0): the same signals to rounding.
+    from magbench.chapters.ch07_tns0 import SENSOR_NORMALS
+    from magbench.estimation import euler_case_sun_signals
+    from magbench.io.tns0 import load_table1
 
     data = figures.compute("tns0-session-model", row=1.0, transverse_inertia=A, axial_inertia=C)
     c = data.series[0].columns
     t = c["t"][1]
-    from magbench.io.tns0 import load_table1
     row = {k: float(v[0]) for k, v in load_table1().values.items()}
     params = [row["angular_momentum"], row["nutation"], row["phase_a"], 0.0, row["sun_angle"]]
-    ours = sensor_signals(t, params, A, C, start_time=row["start_time"])
+    ours = euler_case_sun_signals(t, params, SENSOR_NORMALS, A, C, start_time=row["start_time"])
     assert_allclose(ours, np.stack([c[f"s{j}"][1] for j in (1, 2, 3)]), rtol=0, atol=1e-12)  # rounding
 
 

@@ -176,3 +176,51 @@ def test_flat_spin_balance_matches_the_full_dynamics():
         assert_allclose(simulated, balance, rtol=0.04)
     with pytest.raises(ValueError, match="orbit_samples"):
         flat_spin_decay_rate(sat, TNS0_ORBIT, direction, 0.0, orbit_samples=2)
+
+
+def test_orbit_mean_field_is_the_dipole_average():
+    from scipy.integrate import quad
+
+    from magbench.sim import orbit_mean_field
+
+    # Direct dipole: |B| = (μ0 M/4π r³) √(1 + 3 sin²i sin²u) along the orbit; quad of the closed
+    # form against 720 equal steps of a smooth periodic function (spectrally accurate: 1e-12).
+    o = TNS0_ORBIT
+    b0 = MU_0 * o.earth_moment / (4 * np.pi * o.radius**3)
+    mean = quad(lambda u: b0 * np.sqrt(1 + 3 * (np.sin(o.inclination) * np.sin(u))**2), 0, 2 * np.pi,
+                epsabs=0, epsrel=1e-13)[0] / (2 * np.pi)
+    assert_allclose(orbit_mean_field(o), mean, rtol=1e-12)
+    with pytest.raises(ValueError, match="samples"):
+        orbit_mean_field(o, samples=0)
+
+
+def test_final_regime_of_a_run_with_known_trends():
+    from magbench.sim import PassiveRun, orbit_mean_field, passive_final_regime
+    from magbench.dynamics import conical_rotation_angle
+
+    sat = PassiveSatellite(A, C, 0.35)
+    interval = 60.0
+    last = int(np.ceil(TNS0_ORBIT.period / interval))
+    time = interval * np.arange(10 * last)
+    slope = np.array([[-1e-5], [2e-6]])                            # two members, angle linear in time
+    angle = 0.8 + slope * time
+    rate = np.broadcast_to([[0.02], [0.03]], angle.shape)
+    momentum = np.broadcast_to([[0.01], [0.02]], angle.shape)
+    run = PassiveRun(time, momentum, np.zeros_like(angle), angle, np.zeros_like(angle), rate, np.zeros((2, 4)),
+                     np.zeros((2, 3)), np.zeros((2, 2)), inputs={"sample_interval": interval})
+    final = passive_final_regime(run, sat, TNS0_ORBIT, orbits=4)
+    assert final["orbit_samples"] == last and final["orbit_means"].shape == (2, 4)
+    # A line's mean over the last orbit is its value at the middle sample, and the line through
+    # the orbit means has the line's slope (rounding of sums of ~100 terms: 1e-12 relative).
+    assert_allclose(final["final_angle"], angle[:, -last:].mean(axis=1), rtol=1e-12)
+    assert_allclose(final["final_angle"], 0.8 + slope[:, 0] * time[-last:].mean(), rtol=1e-12)
+    assert_allclose(final["drift"], slope[:, 0], rtol=1e-9)
+    assert_allclose(final["final_rate"], [0.02, 0.03], rtol=1e-14)
+    assert_allclose(final["conical_angle"], conical_rotation_angle([0.02, 0.03], orbit_mean_field(TNS0_ORBIT), 0.35,
+                                                                   A, C), rtol=1e-12)
+    with pytest.raises(ValueError, match="orbits"):
+        passive_final_regime(run, sat, TNS0_ORBIT, orbits=11)
+    with pytest.raises(ValueError, match="orbits"):
+        passive_final_regime(run, sat, TNS0_ORBIT, orbits=1)
+    with pytest.raises(ValueError, match="run"):
+        passive_final_regime(angle, sat, TNS0_ORBIT)

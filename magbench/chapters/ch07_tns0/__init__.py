@@ -115,14 +115,9 @@ def _capture(key):
     if members < 1:
         raise ValueError(f"capture_members must be >= 1, got {members}")
     directions = rng.normal(size=(members, 3))
-    orbit = orbit_from(p)
-    run = simulate_passive(satellite_from(p), orbit, np.full(members, p["capture_initial_momentum"]),
-                           p["capture_initial_nutation"], directions, p["capture_duration"],
-                           sample_interval=SAMPLE_INTERVAL)
-    last = max(2, int(np.ceil(orbit.period / SAMPLE_INTERVAL)))
-    sweep = np.linspace(0.0, orbit.period, 721)[:-1]
-    mean_field = float(np.mean(np.linalg.norm(orbit.field(sweep), axis=-1)))
-    return run, last, mean_field
+    return simulate_passive(satellite_from(p), orbit_from(p), np.full(members, p["capture_initial_momentum"]),
+                            p["capture_initial_nutation"], directions, p["capture_duration"],
+                            sample_interval=SAMPLE_INTERVAL)
 
 
 def capture_run(params=None):
@@ -142,21 +137,17 @@ def capture_run(params=None):
         averaged over an orbit) [T], ``final_drift`` (per member, the slope of a line through
         the angle's means over the last three orbits) [rad/s] and
         ``conical_angle`` (the relation
-        Ω²(A − C) cos θ′ = mB at the final rate; NaN where it has no solution) [rad].
+        Ω²(A − C) cos θ′ = mB at the final rate; NaN where it has no solution) [rad]
+        (:func:`magbench.sim.passive_final_regime`).
     """
-    from ...dynamics import conical_rotation_angle
+    from ...sim import passive_final_regime
 
     p = _params(params)
-    run, last, mean_field = _capture(p)
-    final_angle = run.axis_field_angle[:, -last:].mean(axis=1)
-    final_rate = run.rate[:, -last:].mean(axis=1)
-    # the trend at the stop: a line through the orbit means of the last three orbits, per member
-    means = run.axis_field_angle[:, -3 * last:].reshape(run.axis_field_angle.shape[0], 3, last).mean(axis=2)
-    drift = np.polyfit(np.arange(3) * (run.time[-1] - run.time[-1 - last]), means.T, 1)[0]
-    return {"run": run, "final_angle": final_angle, "final_rate": final_rate, "final_drift": drift,
-            "final_momentum": run.angular_momentum[:, -last:].mean(axis=1), "mean_field": mean_field,
-            "conical_angle": conical_rotation_angle(final_rate, mean_field, p["magnet_moment"],
-                                                    p["transverse_inertia"], p["axial_inertia"])}
+    run = _capture(p)
+    final = passive_final_regime(run, satellite_from(p), orbit_from(p), orbits=3)
+    return {"run": run, "final_angle": final["final_angle"], "final_rate": final["final_rate"],
+            "final_drift": final["drift"], "final_momentum": final["final_momentum"],
+            "mean_field": final["mean_field"], "conical_angle": final["conical_angle"]}
 
 
 def decay_balance(params=None):
@@ -231,30 +222,24 @@ def full_run(params=None):
         between B and the axis averaged over each of the last :data:`FINAL_ORBITS` orbits)
         [rad]; ``direction`` (initial L̂) [-].
     """
-    from ...dynamics import conical_rotation_angle
     from ...io.tns0 import table1_hours
+    from ...sim import passive_final_regime
 
     p = _params(params)
     run, direction = _full(p)
-    orbit = orbit_from(p)
+    final = passive_final_regime(run, satellite_from(p), orbit_from(p), orbits=FINAL_ORBITS)
     hours = run.time / 3600.0
-    last = max(2, int(np.ceil(orbit.period / FULL_RUN_SAMPLE_INTERVAL)))
-    final_l = float(run.angular_momentum[-last:].mean())
-    final_rate = float(run.rate[-last:].mean())
+    final_l = float(final["final_momentum"])
     relaxed = np.flatnonzero(np.abs(run.nutation - np.pi / 2) < np.radians(1.0))
     captured = np.flatnonzero(run.angular_momentum <= 2.0 * final_l)
-    sweep = np.linspace(0.0, orbit.period, 721)[:-1]
-    mean_field = float(np.mean(np.linalg.norm(orbit.field(sweep), axis=-1)))
     session_hours = table1_hours()
     return {"run": run, "hours": hours, "session_hours": session_hours,
             "session_momentum": np.interp(session_hours, hours, run.angular_momentum),
             "relaxed_hours": float(hours[relaxed[0]]) if relaxed.size else float("nan"),
             "capture_hours": float(hours[captured[0]]),
-            "final_angle": float(run.axis_field_angle[-last:].mean()), "final_rate": final_rate,
-            "final_orbit_means": run.axis_field_angle[-FINAL_ORBITS * last:].reshape(FINAL_ORBITS, last).mean(axis=1),
-            "final_momentum": final_l, "mean_field": mean_field, "direction": direction,
-            "conical_angle": float(conical_rotation_angle(final_rate, mean_field, p["magnet_moment"],
-                                                          p["transverse_inertia"], p["axial_inertia"]))}
+            "final_angle": float(final["final_angle"]), "final_rate": float(final["final_rate"]),
+            "final_orbit_means": final["orbit_means"], "final_momentum": final_l, "mean_field": final["mean_field"],
+            "direction": direction, "conical_angle": float(final["conical_angle"])}
 
 
 #: Orbits at the end of the full run whose mean angles show how settled its final regime is.
@@ -306,6 +291,9 @@ def full_run_rows(params=None):
     ]
 
 
+#: Sun-sensor normals ДС1–ДС3 in body axes (+x, +z, −x; ours: only n1 = −n3 is in the text).
+SENSOR_NORMALS = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [-1.0, 0.0, 0.0]])
+
 #: The synthetic session (ours): length, sampling, noise and its seed; row 1's lost second
 #: phase is set to 1 rad (any value would do: the fit does not know it).
 SESSION_DURATION, SESSION_RATE, SESSION_NOISE, SESSION_SEED, SESSION_LOST_PHASE = 60.0, 10.0, 0.01, 1, 1.0
@@ -313,8 +301,9 @@ SESSION_DURATION, SESSION_RATE, SESSION_NOISE, SESSION_SEED, SESSION_LOST_PHASE 
 
 @cached_result(maxsize=2)
 def _session_fits(a, c):
+    from ...estimation import (fit_frequency_first, fit_multistart, fit_nested_grid, fold_start_time,
+                               session_identifiability, session_recovered, synthetic_session)
     from ...io.tns0 import load_table1
-    from ...estimation import spin_sessions as sessions
 
     t1 = load_table1()
 
@@ -322,24 +311,18 @@ def _session_fits(a, c):
         v = float(t1.values[name][0])
         return default if np.isnan(v) else v
 
-    big_l, theta = value("angular_momentum", 0.0), value("nutation", 0.0)
     t0 = value("start_time", 0.0)
-    psi_rate = big_l / a
-    phi_rate = big_l * np.cos(theta) * (1.0 / c - 1.0 / a)
-    printed = np.array([big_l, theta, value("phase_a", 0.0), value("phase_b", SESSION_LOST_PHASE),
-                        value("sun_angle", 0.0)])
+    printed = np.array([value("angular_momentum", 0.0), value("nutation", 0.0), value("phase_a", 0.0),
+                        value("phase_b", SESSION_LOST_PHASE), value("sun_angle", 0.0)])
     # Table 1's t0 folded into the phases: the same motion with t0 = 0 (t0 is not identifiable).
-    truth = printed.copy()
-    truth[2] = np.mod(printed[2] - psi_rate * t0, 2 * np.pi)
-    truth[3] = np.mod(printed[3] - phi_rate * t0, 2 * np.pi)
-    time, signals = sessions.synthetic_session(truth, a, c, duration=SESSION_DURATION, rate=SESSION_RATE,
-                                               noise=SESSION_NOISE, seed=SESSION_SEED)
-    fits = [f(time, signals, a, c) for f in (sessions.fit_nested_grid, sessions.fit_multistart,
-                                             sessions.fit_frequency_first)]
+    truth = fold_start_time(printed, t0, a, c)
+    time, signals = synthetic_session(truth, SENSOR_NORMALS, a, c, duration=SESSION_DURATION, rate=SESSION_RATE,
+                                      noise=SESSION_NOISE, seed=SESSION_SEED)
+    fits = [f(time, signals, SENSOR_NORMALS, a, c) for f in (fit_nested_grid, fit_multistart, fit_frequency_first)]
     for fit in fits:
-        fit["recovered"] = sessions.recovered(fit, truth)
+        fit["recovered"] = session_recovered(fit, truth)
     return {"truth": truth, "printed": printed, "start_time": t0, "time": time, "signals": signals, "fits": fits,
-            "singular_values": sessions.identifiability(truth, time, a, c)}
+            "singular_values": session_identifiability(truth, time, SENSOR_NORMALS, a, c)}
 
 
 def session_fits(params=None):

@@ -8,8 +8,7 @@ decay fits, a session model (model only) and the capture Monte Carlo.
 import numpy as np
 
 from ...constants import MU_0
-from ...estimation.spin_sessions import SENSOR_NORMALS
-from . import CHAPTER, capture_run, decay_balance, decay_fits, full_run, orbit_from, session_fits
+from . import CHAPTER, SENSOR_NORMALS, capture_run, decay_balance, decay_fits, full_run, orbit_from, session_fits
 from .._base import chapter_parameters
 from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
@@ -205,17 +204,11 @@ AMPLITUDES = (6.0, 12.0, 20.0, 30.0, 60.0)
 def compute_rod_loops(rod_coercivity, rod_remanence, rod_saturation, transit_field_amplitude,
                       transit_loop_energy, orbit_inclination, orbit_altitude, earth_dipole_moment):
     """Settled Flatley–Henretty loops at several amplitudes and the loop energy against the amplitude."""
-    from ...hardware import hysteresis_response, limiting_loop_energy, rod_cycle_energy
+    from ...hardware import limiting_loop_energy, rod_cycle_energy, settled_hysteresis_loop
 
     material = (rod_coercivity, rod_remanence, rod_saturation)
-    samples = 720
-    phase = np.linspace(0.0, 3.0 * 2.0 * np.pi, 3 * samples + 1)
-    ha = np.array(AMPLITUDES)
-    h = ha[:, None] * np.sin(phase)
-    b = hysteresis_response(h, *material)
-    last = slice(2 * samples, 3 * samples + 1)
-    series = [Series(f"Ha = {a:g} A/m", {"H": ("A/m", h[k, last]), "B": ("T", b[k, last])})
-              for k, a in enumerate(AMPLITUDES)]
+    h, b = settled_hysteresis_loop(np.array(AMPLITUDES), *material)
+    series = [Series(f"Ha = {a:g} A/m", {"H": ("A/m", h[k]), "B": ("T", b[k])}) for k, a in enumerate(AMPLITUDES)]
     sweep = np.geomspace(1.0, 2000.0, 40)
     energy = rod_cycle_energy(sweep, *material)
     series.append(Series("loop energy", {"Ha": ("A/m", sweep), "W": ("J/m^3", energy),
@@ -285,6 +278,7 @@ def _rod_parameters():
 def compute_session_model(row, duration, transverse_inertia, axial_inertia):
     """Euler-case model signals of ДС1–ДС3 for one Table 1 row (cosine law clipped at 0 + albedo)."""
     from ...dynamics import euler_case_matrix
+    from ...hardware import sun_sensor_signals
     from ...io.tns0 import load_table1
 
     tab = load_table1()
@@ -303,8 +297,7 @@ def compute_session_model(row, duration, transverse_inertia, axial_inertia):
     sigma, eps, alpha = value("sun_angle"), value("earth_polar_angle"), value("earth_azimuth")
     sun = np.array([np.sin(sigma), 0.0, np.cos(sigma)])
     earth = np.array([np.sin(eps) * np.cos(alpha), np.sin(eps) * np.sin(alpha), np.cos(eps)])
-    normals = np.einsum("tij,kj->tki", r, SENSOR_NORMALS)
-    signal = np.clip(normals @ sun, 0.0, None) + value("albedo_ratio") * np.clip(normals @ earth, 0.0, None)
+    signal = sun_sensor_signals(r, SENSOR_NORMALS, sun, earth=earth, albedo_ratio=value("albedo_ratio"))
     cols = {"t": ("s", t)}
     cols.update({f"s{j + 1}": ("1", signal[:, j]) for j in range(3)})
     return FigureData("", "", "", {}, [Series(f"Table 1 row {k + 1}", cols)], extra={"row": k + 1})
@@ -339,26 +332,29 @@ def _session_parameters():
 
 def compute_session_fit(transverse_inertia, axial_inertia):
     """A synthetic session from Table 1 row 1 (+ noise) and the three methods' fits."""
-    from ...estimation.spin_sessions import mirror, sensor_signals
+    from ...estimation import euler_case_sun_signals, mirror_solution
 
     fits = session_fits({"transverse_inertia": transverse_inertia, "axial_inertia": axial_inertia})
     t, data, truth = fits["time"], fits["signals"], fits["truth"]
     a, c = transverse_inertia, axial_inertia
+
+    def model(constants):
+        return euler_case_sun_signals(t, constants, SENSOR_NORMALS, a, c)
 
     def cols(signals):
         out = {"t": ("s", t)}
         out.update({f"s{j + 1}": ("1", signals[j]) for j in range(3)})
         return out
 
-    series = [Series("synthetic data", cols(data)), Series("truth", cols(sensor_signals(t, truth, a, c))),
-              Series("mirror of the truth", cols(sensor_signals(t, mirror(truth), a, c)))]
+    series = [Series("synthetic data", cols(data)), Series("truth", cols(model(truth))),
+              Series("mirror of the truth", cols(model(mirror_solution(truth))))]
     for fit in fits["fits"]:
-        series.append(Series(fit["method"], cols(sensor_signals(t, fit["params"], a, c))))
+        series.append(Series(fit["method"], cols(model(fit["params"]))))
     series.append(Series("methods", {"rms": ("1", [f["rms"] for f in fits["fits"]]),
                                      "evaluations": ("1", [f["evaluations"] for f in fits["fits"]]),
                                      "recovered": ("1", [float(f["recovered"]) for f in fits["fits"]])}))
     return FigureData("", "", "", {}, series, extra={"names": [f["method"] for f in fits["fits"]],
-                                                     "noise": float(np.std(data - sensor_signals(t, truth, a, c)))})
+                                                     "noise": float(np.std(data - model(truth)))})
 
 
 def plot_session_fit(data):
