@@ -8,12 +8,14 @@ without fast-math, so the two give the same numbers to the last bit (the tests h
 to it); the numpy loop stays as the reference and runs the one mode not compiled (duty
 with the "propagate" estimator).
 
-Why this layout: in each step one loop over the members carries the whole RK4 step in
-straight-line code (the law, the gravity gradient and the inertia form are chosen by
-selects, not branches), reading state, table and per-member data along their contiguous
-member axis, so the compiler runs several members per SIMD instruction. Vector lanes
-round each operation as the scalar code does, so this changes no number. The schedule's
-sampling instants (a few per hundred steps) run in their own scalar loop.
+Why this layout: the step is the library's compiled RK4 (:func:`magbench._rk4_kernel.rk4_step`)
+of :func:`member_rates`, which runs one loop over the members in straight-line code (the
+law, the gravity gradient and the inertia form are chosen by selects, not branches),
+reading state, table and per-member data along their contiguous member axis. The stages
+are arrays (7, M); against the earlier loop that carried a member's four stages in
+registers, this costs ~30 % at 200 members (the stage arrays' allocation and sums), the
+price of one RK4. The schedule's sampling instants (a few per hundred steps) run in their
+own scalar loop.
 
 The inertial field, its rate and the radial direction come from the numpy loop's field
 table (:class:`magbench.sim._detumble_loops._FieldTable`) one block of steps at a time.
@@ -25,7 +27,9 @@ import math
 import numpy as np
 from numba import njit
 
-__all__ = ["advance_block"]
+from .._rk4_kernel import rk4_step
+
+__all__ = ["advance_block", "member_rates"]
 
 #: How the coils are commanded (per member, kept across blocks): the law at every RK
 #: stage, or a held dipole.
@@ -143,8 +147,28 @@ def _sample(i, n, state, b, schedule, how, held, window, previous, gain, lim, pr
 
 
 @njit(cache=True, error_model="numpy")
+def member_rates(time, x, t_block, half, b, b_rate, radial, how, held, gain, lim, projected, gg, diag, jd, jt, jinv):
+    """(q̇, ω̇) of every member, x and the result (7, M): :func:`_rhs` member by member.
+
+    The field table holds the field at the block's step ends and midpoints, so the row of
+    ``time`` is its count of half steps from the block's start ``t_block``.
+    """
+    n = int(math.floor((time - t_block) / half + 0.5))
+    out = np.empty_like(x)
+    lim0, lim1, lim2 = lim[0], lim[1], lim[2]
+    for m in range(x.shape[1]):
+        out[0, m], out[1, m], out[2, m], out[3, m], out[4, m], out[5, m], out[6, m] = _rhs(
+            x[0, m], x[1, m], x[2, m], x[3, m], x[4, m], x[5, m], x[6, m], b[0, n, m], b[1, n, m], b[2, n, m],
+            b_rate[0, n, m], b_rate[1, n, m], b_rate[2, n, m], radial[0, n, m], radial[1, n, m], radial[2, n, m],
+            how[m] == LAW, held[0, m], held[1, m], held[2, m], gain[m], lim0, lim1, lim2, projected, gg, diag,
+            jd[0, m], jd[1, m], jd[2, m], jt, jinv)
+    return out
+
+
+@njit(cache=True, error_model="numpy")
 def advance_block(state, start, count, h, table, schedule, command, law_args, body, stride, rates):
-    """Advance every member over steps ``start`` … ``start + count − 1`` in place.
+    """Advance every member over steps ``start`` … ``start + count − 1`` in place, by the
+    library's compiled RK4 step (:func:`magbench._rk4_kernel.rk4_step`) of :func:`member_rates`.
 
     state (7, M); table = (b, b_rate, radial), each (3, 2·count + 1, M): the field table of
     the block; schedule = (mode, per_sample, n_off, n_on, hold, delta, t_off) with mode
@@ -152,56 +176,22 @@ def advance_block(state, start, count, h, table, schedule, command, law_args, bo
     (M,), held, window (3, M), previous (4, M)): each member's command (kept across blocks;
     previous[3] = 1 once sampled); law_args = (gain (M,), lim (3,), projected); body = (gg,
     diag, jd (3, M) principal moments (diag), jt, jinv (3, 3)); rates (M, K) |ω| at every
-    ``stride`` steps. The groups are unpacked once here: the stages below take scalars.
+    ``stride`` steps.
     """
     b, b_rate, radial = table
     how, held, window, previous = command
     gain, lim, projected = law_args
     gg, diag, jd, jt, jinv = body
     members = state.shape[1]
-    lim0, lim1, lim2 = lim[0], lim[1], lim[2]
-    half = 0.5 * h
-    sixth = h / 6.0
+    args = (start * h, 0.5 * h, b, b_rate, radial, how, held, gain, lim, projected, gg, diag, jd, jt, jinv)
     for i in range(start, start + count):
-        n = 2 * (i - start)
-        _sample(i, n, state, b, schedule, how, held, window, previous, gain, lim, projected)
+        _sample(i, 2 * (i - start), state, b, schedule, how, held, window, previous, gain, lim, projected)
+        y = rk4_step(member_rates, i * h, state, h, args)
         for m in range(members):
-            x0, x1, x2, x3, x4, x5, x6 = (state[0, m], state[1, m], state[2, m], state[3, m], state[4, m],
-                                          state[5, m], state[6, m])
-            law, k, h0, h1, h2 = how[m] == LAW, gain[m], held[0, m], held[1, m], held[2, m]
-            j0, j1, j2 = jd[0, m], jd[1, m], jd[2, m]
-            # the four stages written out in scalars: passing them through a helper as tuples
-            # stops the vectorisation across members (1.7 s -> 3.2 s for chapter 5's envelope)
-            k10, k11, k12, k13, k14, k15, k16 = _rhs(
-                x0, x1, x2, x3, x4, x5, x6, b[0, n, m], b[1, n, m], b[2, n, m], b_rate[0, n, m], b_rate[1, n, m],
-                b_rate[2, n, m], radial[0, n, m], radial[1, n, m], radial[2, n, m], law, h0, h1, h2, k,
-                lim0, lim1, lim2, projected, gg, diag, j0, j1, j2, jt, jinv)
-            k20, k21, k22, k23, k24, k25, k26 = _rhs(
-                x0 + half * k10, x1 + half * k11, x2 + half * k12, x3 + half * k13, x4 + half * k14,
-                x5 + half * k15, x6 + half * k16, b[0, n + 1, m], b[1, n + 1, m], b[2, n + 1, m],
-                b_rate[0, n + 1, m], b_rate[1, n + 1, m], b_rate[2, n + 1, m], radial[0, n + 1, m],
-                radial[1, n + 1, m], radial[2, n + 1, m], law, h0, h1, h2, k, lim0, lim1, lim2, projected, gg, diag,
-                j0, j1, j2, jt, jinv)
-            k30, k31, k32, k33, k34, k35, k36 = _rhs(
-                x0 + half * k20, x1 + half * k21, x2 + half * k22, x3 + half * k23, x4 + half * k24,
-                x5 + half * k25, x6 + half * k26, b[0, n + 1, m], b[1, n + 1, m], b[2, n + 1, m],
-                b_rate[0, n + 1, m], b_rate[1, n + 1, m], b_rate[2, n + 1, m], radial[0, n + 1, m],
-                radial[1, n + 1, m], radial[2, n + 1, m], law, h0, h1, h2, k, lim0, lim1, lim2, projected, gg, diag,
-                j0, j1, j2, jt, jinv)
-            k40, k41, k42, k43, k44, k45, k46 = _rhs(
-                x0 + h * k30, x1 + h * k31, x2 + h * k32, x3 + h * k33, x4 + h * k34, x5 + h * k35, x6 + h * k36,
-                b[0, n + 2, m], b[1, n + 2, m], b[2, n + 2, m], b_rate[0, n + 2, m], b_rate[1, n + 2, m],
-                b_rate[2, n + 2, m], radial[0, n + 2, m], radial[1, n + 2, m], radial[2, n + 2, m], law, h0, h1, h2,
-                k, lim0, lim1, lim2, projected, gg, diag, j0, j1, j2, jt, jinv)
-            y0 = x0 + sixth * (k10 + 2.0 * (k20 + k30) + k40)
-            y1 = x1 + sixth * (k11 + 2.0 * (k21 + k31) + k41)
-            y2 = x2 + sixth * (k12 + 2.0 * (k22 + k32) + k42)
-            y3 = x3 + sixth * (k13 + 2.0 * (k23 + k33) + k43)
+            y0, y1, y2, y3 = y[0, m], y[1, m], y[2, m], y[3, m]
             norm = math.sqrt(y0 * y0 + y1 * y1 + y2 * y2 + y3 * y3)
             state[0, m], state[1, m], state[2, m], state[3, m] = y0 / norm, y1 / norm, y2 / norm, y3 / norm
-            state[4, m] = x4 + sixth * (k14 + 2.0 * (k24 + k34) + k44)
-            state[5, m] = x5 + sixth * (k15 + 2.0 * (k25 + k35) + k45)
-            state[6, m] = x6 + sixth * (k16 + 2.0 * (k26 + k36) + k46)
+            state[4, m], state[5, m], state[6, m] = y[4, m], y[5, m], y[6, m]
         if (i + 1) % stride == 0:
             for m in range(members):
                 rates[m, (i + 1) // stride] = math.sqrt(state[4, m] * state[4, m] + state[5, m] * state[5, m]

@@ -15,6 +15,8 @@ import math
 import numpy as np
 from numba import njit
 
+from .._rk4_kernel import rk4_step
+
 __all__ = ["normalised_flow"]
 
 
@@ -50,32 +52,26 @@ def _rhs(tau, x0, x1, x2, x3, x4, a, c1, kappa, kappa_w, si, ci, real, real_fiel
 
 
 @njit(cache=True, error_model="numpy")
+def closed_loop_rates(tau, x, a, c1, kappa, kappa_w, si, ci, real, real_field):
+    """d/dτ of the states x (5, M) of every member, each by :func:`_rhs`."""
+    out = np.empty_like(x)
+    for m in range(x.shape[1]):
+        out[0, m], out[1, m], out[2, m], out[3, m], out[4, m] = _rhs(
+            tau, x[0, m], x[1, m], x[2, m], x[3, m], x[4, m], a, c1, kappa[m], kappa_w[m], si, ci, real, real_field)
+    return out
+
+
+@njit(cache=True, error_model="numpy")
 def normalised_flow(state, steps, h, a, c1, kappa, kappa_w, inclination, real, real_field, record, out):
-    """Advance state (5, M) in place by ``steps`` RK4 steps of h; when ``record``, out
-    (5, steps + 1, M) receives every state from the first."""
-    si, ci = math.sin(inclination), math.cos(inclination)
-    half = 0.5 * h
-    sixth = h / 6.0
-    for m in range(state.shape[1]):
-        x0, x1, x2, x3, x4 = state[0, m], state[1, m], state[2, m], state[3, m], state[4, m]
-        k, kw = kappa[m], kappa_w[m]
+    """Advance state (5, M) in place by ``steps`` RK4 steps of h (the library's compiled
+    step, :func:`magbench._rk4_kernel.rk4_step`); when ``record``, out (5, steps + 1, M)
+    receives every state from the first."""
+    args = (a, c1, kappa, kappa_w, math.sin(inclination), math.cos(inclination), real, real_field)
+    x = state.copy()
+    if record:
+        out[:, 0, :] = x
+    for n in range(steps):
+        x = rk4_step(closed_loop_rates, n * h, x, h, args)
         if record:
-            out[0, 0, m], out[1, 0, m], out[2, 0, m], out[3, 0, m], out[4, 0, m] = x0, x1, x2, x3, x4
-        for n in range(steps):
-            t = n * h
-            a0, a1, a2, a3, a4 = _rhs(t, x0, x1, x2, x3, x4, a, c1, k, kw, si, ci, real, real_field)
-            b0, b1, b2, b3, b4 = _rhs(t + half, x0 + half * a0, x1 + half * a1, x2 + half * a2, x3 + half * a3,
-                                      x4 + half * a4, a, c1, k, kw, si, ci, real, real_field)
-            c0, c1_, c2, c3, c4 = _rhs(t + half, x0 + half * b0, x1 + half * b1, x2 + half * b2, x3 + half * b3,
-                                       x4 + half * b4, a, c1, k, kw, si, ci, real, real_field)
-            d0, d1, d2, d3, d4 = _rhs(t + h, x0 + h * c0, x1 + h * c1_, x2 + h * c2, x3 + h * c3, x4 + h * c4,
-                                      a, c1, k, kw, si, ci, real, real_field)
-            x0 = x0 + sixth * (a0 + 2.0 * (b0 + c0) + d0)
-            x1 = x1 + sixth * (a1 + 2.0 * (b1 + c1_) + d1)
-            x2 = x2 + sixth * (a2 + 2.0 * (b2 + c2) + d2)
-            x3 = x3 + sixth * (a3 + 2.0 * (b3 + c3) + d3)
-            x4 = x4 + sixth * (a4 + 2.0 * (b4 + c4) + d4)
-            if record:
-                out[0, n + 1, m], out[1, n + 1, m], out[2, n + 1, m], out[3, n + 1, m], out[4, n + 1, m] = \
-                    x0, x1, x2, x3, x4
-        state[0, m], state[1, m], state[2, m], state[3, m], state[4, m] = x0, x1, x2, x3, x4
+            out[:, n + 1, :] = x
+    state[:] = x
