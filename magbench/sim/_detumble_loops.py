@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..earth.circular_orbit import CircularOrbit
+from ..integrate import rk4_step
 
 LAWS = ("bdot", "projected")
 MODES = ("continuous", "sampled", "duty")
@@ -206,13 +207,14 @@ class _Body:
         return out
 
     def rk4(self, fields, i, state, h, command, dipole):
-        """One classical RK4 step (the scheme of :func:`magbench.sim.rk4_step`) from step i."""
-        time = i * h
-        k1 = self.rhs(fields, i, 0, state, command, dipole, time)
-        k2 = self.rhs(fields, i, 1, state + 0.5 * h * k1, command, dipole, time + 0.5 * h)
-        k3 = self.rhs(fields, i, 1, state + 0.5 * h * k2, command, dipole, time + 0.5 * h)
-        k4 = self.rhs(fields, i, 2, state + h * k3, command, dipole, time + h)
-        return state + h / 6.0 * (k1 + 2.0 * (k2 + k3) + k4)
+        """One step of :func:`magbench.integrate.rk4_step` from step i; the field table's
+        stage is the count of half steps from i·h to the stage's time."""
+        start = i * h
+
+        def rates(time, x):
+            return self.rhs(fields, i, round((time - start) / (0.5 * h)), x, command, dipole, time)
+
+        return rk4_step(rates, start, state, h)
 
 
 class _Schedule:

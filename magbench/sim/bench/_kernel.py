@@ -20,6 +20,8 @@ import math
 import numpy as np
 from numba import njit
 
+from ..._rk4_kernel import rk4_step
+
 __all__ = ["ROWS", "sense", "control_and_step"]
 
 #: Rows of ``member`` (each (M,)); the optional error sources are flagged in ``present``.
@@ -87,9 +89,21 @@ def _accel(psi, rate, a1, a2, b0, kappa, neutral, inertia):
 
 
 @njit(cache=True, error_model="numpy")
+def plant_rates(time, x, applied, field, kappa, neutral, inertia):
+    """(ψ̇, ω̇) of every member, x and the result (2, M), the coils' body moments ``applied``
+    (2, M) held: :func:`_accel` member by member."""
+    out = np.empty_like(x)
+    for m in range(x.shape[1]):
+        out[0, m], out[1, m] = _accel(x[0, m], x[1, m], applied[0, m], applied[1, m], field[m], kappa[m],
+                                      neutral[m], inertia)
+    return out
+
+
+@njit(cache=True, error_model="numpy")
 def control_and_step(k, heading, gyro, bxy, state, member, present, setup, memory, held, records, stride):
     """controller_step on the readings and the numpy ``heading``, the records, the error
-    bands, and the plant's RK4 step over the sample with the new moments held.
+    bands, and the plant's step over the sample with the new moments held (the library's
+    compiled RK4, :func:`magbench._rk4_kernel.rk4_step`, of :func:`plant_rates`).
 
     Grouped arrays (numba takes tuples of arrays; each is written in place): ``memory``
     (estimate, integral, band, band_est), each (M,); ``held`` (commanded, applied), the
@@ -100,8 +114,6 @@ def control_and_step(k, heading, gyro, bxy, state, member, present, setup, memor
     states, moments, estimates = records
     first_in_window, every = stride
     dt = setup[DT]
-    half = 0.5 * dt
-    sixth = dt / 6.0
     for m in range(state.shape[1]):
         psi, rate = state[0, m], state[1, m]
         g, bx, by = gyro[m], bxy[0, m], bxy[1, m]
@@ -137,10 +149,5 @@ def control_and_step(k, heading, gyro, bxy, state, member, present, setup, memor
             a1, a2 = m1, m2
         commanded[0, m], commanded[1, m] = m1, m2
         applied[0, m], applied[1, m] = a1, a2
-        b0, kappa, neutral, inertia = member[FIELD, m], member[KAPPA, m], member[NEUTRAL, m], setup[INERTIA]
-        k10, k11 = _accel(psi, rate, a1, a2, b0, kappa, neutral, inertia)
-        k20, k21 = _accel(psi + half * k10, rate + half * k11, a1, a2, b0, kappa, neutral, inertia)
-        k30, k31 = _accel(psi + half * k20, rate + half * k21, a1, a2, b0, kappa, neutral, inertia)
-        k40, k41 = _accel(psi + dt * k30, rate + dt * k31, a1, a2, b0, kappa, neutral, inertia)
-        state[0, m] = psi + sixth * (k10 + 2.0 * (k20 + k30) + k40)
-        state[1, m] = rate + sixth * (k11 + 2.0 * (k21 + k31) + k41)
+    state[:] = rk4_step(plant_rates, k * dt, state, dt,
+                        (applied, member[FIELD], member[KAPPA], member[NEUTRAL], setup[INERTIA]))
