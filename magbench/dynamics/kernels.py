@@ -119,6 +119,56 @@ def gyrostat_turning_field_rhs(time, state, principal_inertia, rotor_momentum, d
     return out
 
 
+# The compiled twins of quaternion_rate and gyrostat_rates for one body in scalars (tuples
+# in, a tuple out): the compiled simulation loops (detumbling, passive) form their members'
+# right-hand sides from them, so the rigid body's equations are written once in numpy and
+# once compiled.
+__all__ += ["quaternion_rate_scalar", "gyrostat_rates_scalar"]
+
+
+@njit(cache=True, error_model="numpy")
+def quaternion_rate_scalar(q, rate):
+    """Compiled twin of :func:`quaternion_rate` for one body: q (4-tuple, scalar first) and
+    ω (3-tuple) in, q̇ (4-tuple) out.
+
+    ½ q ⊗ (0, ω) as :func:`magbench.rotations.hamilton_product` forms it, without its
+    products with the zero scalar part (they add exact zeros: the same numbers).
+    """
+    q0, q1, q2, q3 = q
+    w0, w1, w2 = rate
+    return (-0.5 * (q1 * w0 + q2 * w1 + q3 * w2), 0.5 * (q0 * w0 + q2 * w2 - q3 * w1),
+            0.5 * (q0 * w1 - q1 * w2 + q3 * w0), 0.5 * (q0 * w2 + q1 * w1 - q2 * w0))
+
+
+@njit(cache=True, error_model="numpy")
+def gyrostat_rates_scalar(rate, torque, inertia, rotor_momentum):
+    """Compiled twin of :func:`gyrostat_rates` (and, with ``rotor_momentum`` 0, of
+    :func:`euler_rates`) for one body: ω̇ = J⁻¹((τ − ω × h e1) − ω × Jω) as a 3-tuple.
+
+    ``inertia`` = (diag, j, jt, jinv): principal moments j (3-tuple) when ``diag``, else the
+    tensor jt (3, 3) and its inverse jinv, which multiplies where the numpy kernel solves
+    (equal to rounding; the principal form divides, as the numpy kernel does: equal to the
+    last bit). The rotor's term ω × h e1 = (0, ω3 h, −ω2 h) is the numpy kernel's cross
+    product without its products with zeros (an exact zero for a rigid body).
+    """
+    w0, w1, w2 = rate
+    t0, t1, t2 = torque
+    diag, j, jt, jinv = inertia
+    j0, j1, j2 = j
+    if diag:
+        a0, a1, a2 = j0 * w0, j1 * w1, j2 * w2
+    else:
+        a0 = jt[0, 0] * w0 + jt[0, 1] * w1 + jt[0, 2] * w2
+        a1 = jt[1, 0] * w0 + jt[1, 1] * w1 + jt[1, 2] * w2
+        a2 = jt[2, 0] * w0 + jt[2, 1] * w1 + jt[2, 2] * w2
+    t1, t2 = t1 - w2 * rotor_momentum, t2 + w1 * rotor_momentum
+    g0, g1, g2 = t0 - (w1 * a2 - w2 * a1), t1 - (w2 * a0 - w0 * a2), t2 - (w0 * a1 - w1 * a0)
+    if diag:
+        return g0 / j0, g1 / j1, g2 / j2
+    return (jinv[0, 0] * g0 + jinv[0, 1] * g1 + jinv[0, 2] * g2, jinv[1, 0] * g0 + jinv[1, 1] * g1 + jinv[1, 2] * g2,
+            jinv[2, 0] * g0 + jinv[2, 1] * g1 + jinv[2, 2] * g2)
+
+
 # Listed here, beside its function, so that other kernels added to this module merge cleanly.
 __all__ += ["rotor_reduced_rates"]
 

@@ -28,6 +28,7 @@ import numpy as np
 from numba import njit
 
 from .._rk4_kernel import rk4_step
+from ..dynamics.kernels import gyrostat_rates_scalar, quaternion_rate_scalar
 
 __all__ = ["advance_block", "member_rates"]
 
@@ -68,18 +69,10 @@ def _inertia_times(v0, v1, v2, diag, j0, j1, j2, jt):
 
 
 @njit(cache=True, error_model="numpy")
-def _inertia_solve(v0, v1, v2, diag, j0, j1, j2, jinv):
-    """J⁻¹ v, as :func:`_inertia_times` chooses J."""
-    d = (v0 / j0, v1 / j1, v2 / j2)
-    t = (jinv[0, 0] * v0 + jinv[0, 1] * v1 + jinv[0, 2] * v2, jinv[1, 0] * v0 + jinv[1, 1] * v1 + jinv[1, 2] * v2,
-         jinv[2, 0] * v0 + jinv[2, 1] * v1 + jinv[2, 2] * v2)
-    return d if diag else t
-
-
-@njit(cache=True, error_model="numpy")
 def _rhs(q0, q1, q2, q3, w0, w1, w2, bn0, bn1, bn2, br0, br1, br2, ra0, ra1, ra2, law, h0, h1, h2, k,
          lim0, lim1, lim2, projected, gg, diag, j0, j1, j2, jt, jinv):
-    """(q̇, ω̇) of one member: the numpy loop's ``_Body.rhs``, operation for operation."""
+    """(q̇, ω̇) of one member: the numpy loop's ``_Body.rhs``, operation for operation; the
+    body's equations are the family's compiled twins (:mod:`magbench.dynamics.kernels`)."""
     r00, r01, r02, r10, r11, r12, r20, r21, r22 = _rows(q0, q1, q2, q3)
     b0 = r00 * bn0 + r01 * bn1 + r02 * bn2
     b1 = r10 * bn0 + r11 * bn1 + r12 * bn2
@@ -97,11 +90,9 @@ def _rhs(q0, q1, q2, q3, w0, w1, w2, bn0, bn1, bn2, br0, br1, br2, ra0, ra1, ra2
     g0, g1, g2 = t0 + gg * (p1 * i2 - p2 * i1), t1 + gg * (p2 * i0 - p0 * i2), t2 + gg * (p0 * i1 - p1 * i0)
     if gg > 0.0:
         t0, t1, t2 = g0, g1, g2
-    a0, a1, a2 = _inertia_times(w0, w1, w2, diag, j0, j1, j2, jt)
-    d4, d5, d6 = _inertia_solve(t0 - (w1 * a2 - w2 * a1), t1 - (w2 * a0 - w0 * a2), t2 - (w0 * a1 - w1 * a0),
-                                diag, j0, j1, j2, jinv)
-    return (-0.5 * (q1 * w0 + q2 * w1 + q3 * w2), 0.5 * (q0 * w0 + q2 * w2 - q3 * w1),
-            0.5 * (q0 * w1 - q1 * w2 + q3 * w0), 0.5 * (q0 * w2 + q1 * w1 - q2 * w0), d4, d5, d6)
+    d4, d5, d6 = gyrostat_rates_scalar((w0, w1, w2), (t0, t1, t2), (diag, (j0, j1, j2), jt, jinv), 0.0)
+    d0, d1, d2, d3 = quaternion_rate_scalar((q0, q1, q2, q3), (w0, w1, w2))
+    return d0, d1, d2, d3, d4, d5, d6
 
 
 @njit(cache=True, error_model="numpy")
