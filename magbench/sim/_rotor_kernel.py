@@ -17,6 +17,8 @@ import math
 import numpy as np
 from numba import njit
 
+from ..dynamics.kernels import gyrostat_rates_scalar, quaternion_rate_scalar
+
 __all__ = ["rotor_constants", "rotor_controller", "rotor_rhs"]
 
 # Layout of the constants vector: the inertia tensor J and its inverse (row-major), then
@@ -99,7 +101,6 @@ def rotor_controller(t, q0, q1, q2, q3, w1, w2, w3, c):
 def rotor_rhs(t, y, c):
     """(q̇, ω̇) of the closed loop at time ``t`` [s], state y = (q, ω) (7,): a new array."""
     j00, j01, j02, j10, j11, j12, j20, j21, j22 = c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8]
-    i00, i01, i02, i10, i11, i12, i20, i21, i22 = c[9], c[10], c[11], c[12], c[13], c[14], c[15], c[16], c[17]
     n, hr = c[18], c[26]
     n2 = 3.0 * n * n
     q0, q1, q2, q3, w1, w2, w3 = y[0], y[1], y[2], y[3], y[4], y[5], y[6]
@@ -108,17 +109,11 @@ def rotor_rhs(t, y, c):
     t1 = m2 * bb3 - m3 * bb2 + n2 * (yy * jr3 - z * jr2)
     t2 = m3 * bb1 - m1 * bb3 + n2 * (z * jr1 - x * jr3)
     t3 = m1 * bb2 - m2 * bb1 + n2 * (x * jr2 - yy * jr1)
-    k1, k2, k3 = j00 * w1 + j01 * w2 + j02 * w3 + hr, j10 * w1 + j11 * w2 + j12 * w3, j20 * w1 + j21 * w2 + j22 * w3
-    g1 = t1 - (w2 * k3 - w3 * k2)
-    g2 = t2 - (w3 * k1 - w1 * k3)
-    g3 = t3 - (w1 * k2 - w2 * k1)
     v1, v2, v3 = w1 - n * o1, w2 - n * o2, w3 - n * o3
     out = np.empty(7)
-    out[0] = 0.5 * (-q1 * v1 - q2 * v2 - q3 * v3)
-    out[1] = 0.5 * (q0 * v1 + q2 * v3 - q3 * v2)
-    out[2] = 0.5 * (q0 * v2 + q3 * v1 - q1 * v3)
-    out[3] = 0.5 * (q0 * v3 + q1 * v2 - q2 * v1)
-    out[4] = i00 * g1 + i01 * g2 + i02 * g3
-    out[5] = i10 * g1 + i11 * g2 + i12 * g3
-    out[6] = i20 * g1 + i21 * g2 + i22 * g3
+    # the body: the family's compiled twins (attitude relative to the orbital frame, hence v)
+    out[0], out[1], out[2], out[3] = quaternion_rate_scalar((q0, q1, q2, q3), (v1, v2, v3))
+    out[4], out[5], out[6] = gyrostat_rates_scalar((w1, w2, w3), (t1, t2, t3),
+                                                   (False, (1.0, 1.0, 1.0), c[0:9].reshape(3, 3), c[9:18].reshape(3, 3)),
+                                                   hr)
     return out
