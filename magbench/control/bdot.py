@@ -9,23 +9,10 @@ SI: T, T/s, A·m².
 import numpy as np
 
 from .._validate import as_finite, as_in_range, as_positive, as_positive_or_infinite, as_vectors
+from . import kernels
 
 __all__ = ["bdot_dipole", "bdot_dipole_projected", "avanzini_giulietti_gain", "samsat_gain", "kovalenko_detumble_time",
            "held_bdot_rate_limit"]
-
-
-def _saturate(dipole, max_dipole):
-    return np.clip(dipole, -max_dipole, max_dipole)
-
-
-def _bdot(field_rate, gain, max_dipole):
-    return _saturate(-gain * field_rate, max_dipole)
-
-
-def _bdot_projected(field, field_rate, gain, max_dipole):
-    b2 = np.sum(field * field, axis=-1, keepdims=True)
-    perpendicular = field_rate - field * np.sum(field * field_rate, axis=-1, keepdims=True) / b2
-    return _saturate(-gain * perpendicular / b2, max_dipole)
 
 
 def bdot_dipole(field_rate, gain, max_dipole=np.inf):
@@ -62,7 +49,7 @@ def bdot_dipole(field_rate, gain, max_dipole=np.inf):
     rate = as_vectors("field_rate", field_rate)
     k = as_positive("gain", gain, unit="A·m²·s/T")
     limit = as_positive_or_infinite("max_dipole", max_dipole, unit="A·m²")
-    return _bdot(rate, np.asarray(k)[..., None] if k.ndim else k, limit)
+    return kernels.bdot_dipole(rate, np.asarray(k)[..., None] if k.ndim else k, limit)
 
 
 def bdot_dipole_projected(field, field_rate, gain, max_dipole=np.inf):
@@ -103,7 +90,7 @@ def bdot_dipole_projected(field, field_rate, gain, max_dipole=np.inf):
         raise ValueError("field must not contain a zero vector (the law divides by |B|²)")
     k = as_positive("gain", gain, unit="N·m·s")
     limit = as_positive_or_infinite("max_dipole", max_dipole, unit="A·m²")
-    return _bdot_projected(b, rate, np.asarray(k)[..., None] if k.ndim else k, limit)
+    return kernels.bdot_dipole_projected(b, rate, np.asarray(k)[..., None] if k.ndim else k, limit)
 
 
 def avanzini_giulietti_gain(mean_motion, geomagnetic_inclination, min_inertia):

@@ -1,5 +1,6 @@
-r"""The control family's array kernels: the rotor spacecraft's program field, the projected
-damping dipole and Kovalenko's relay spin law, unchecked.
+r"""The control family's array kernels: the B-dot laws (and their compiled twin), the rotor
+spacecraft's program field, the projected damping dipole and Kovalenko's relay spin law,
+unchecked.
 
 The checked public functions of :mod:`magbench.control.spin` call these after checking
 their arguments; the simulations (:mod:`magbench.sim`) call them directly inside their
@@ -10,8 +11,46 @@ arguments are. Like every kernel module, this one imports only numpy (import con
 """
 
 import numpy as np
+from numba import njit
 
-__all__ = ["program_field", "projected_dipole", "relay_dipole"]
+__all__ = ["bdot_dipole", "bdot_dipole_projected", "bdot_dipole_scalar", "program_field", "projected_dipole",
+           "relay_dipole"]
+
+
+def bdot_dipole(field_rate, gain, limit):
+    """m = sat(−k Ḃ) per axis, Ḃ = field_rate (..., 3) [T/s], k = gain [N·m·s] (scalar, or
+    (..., 1) per member), limit [A·m²] per axis; no checks. The checked form, which
+    documents the law, is :func:`magbench.control.bdot_dipole`."""
+    return np.clip(-gain * field_rate, -limit, limit)
+
+
+def bdot_dipole_projected(field, field_rate, gain, limit):
+    """m = sat(−(k/|B|²)[Ḃ − B(B·Ḃ)/|B|²]) per axis, B = field and Ḃ = field_rate (..., 3);
+    no checks (B must not vanish). The checked form, which documents the law (Kovalenko
+    (1975) eq. (6.7)), is :func:`magbench.control.bdot_dipole_projected`."""
+    f0, f1, f2 = field[..., 0], field[..., 1], field[..., 2]
+    b2 = (f0 * f0 + f1 * f1 + f2 * f2)[..., None]
+    along = (f0 * field_rate[..., 0] + f1 * field_rate[..., 1] + f2 * field_rate[..., 2])[..., None] / b2
+    return np.clip(-gain / b2 * (field_rate - field * along), -limit, limit)
+
+
+@njit(cache=True, error_model="numpy")
+def bdot_dipole_scalar(field, field_rate, gain, limit, projected):
+    """Compiled twin of :func:`~magbench.control.kernels.bdot_dipole` (``projected`` false) and
+    :func:`~magbench.control.kernels.bdot_dipole_projected` (true) for one body: B, Ḃ and the limits as 3-tuples, the
+    dipole as a 3-tuple. The same operations in the same order (equal to the last bit);
+    both laws are formed and one selected, so that a loop over members stays free of
+    branches."""
+    b0, b1, b2 = field
+    d0, d1, d2 = field_rate
+    lim0, lim1, lim2 = limit
+    bb = b0 * b0 + b1 * b1 + b2 * b2
+    along = (b0 * d0 + b1 * d1 + b2 * d2) / bb
+    scale = -gain / bb
+    p0, p1, p2 = scale * (d0 - b0 * along), scale * (d1 - b1 * along), scale * (d2 - b2 * along)
+    u0, u1, u2 = -gain * d0, -gain * d1, -gain * d2
+    v0, v1, v2 = (p0, p1, p2) if projected else (u0, u1, u2)
+    return (min(max(v0, -lim0), lim0), min(max(v1, -lim1), lim1), min(max(v2, -lim2), lim2))
 
 
 def program_field(u, i, b0):

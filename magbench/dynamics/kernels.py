@@ -128,8 +128,8 @@ __all__ += ["quaternion_rate_scalar", "gyrostat_rates_scalar"]
 
 @njit(cache=True, error_model="numpy")
 def quaternion_rate_scalar(q, rate):
-    """Compiled twin of :func:`quaternion_rate` for one body: q (4-tuple, scalar first) and
-    ω (3-tuple) in, q̇ (4-tuple) out.
+    """Compiled twin of :func:`~magbench.dynamics.kernels.quaternion_rate` for one body: q
+    (4-tuple, scalar first) and ω (3-tuple) in, q̇ (4-tuple) out.
 
     ½ q ⊗ (0, ω) as :func:`magbench.rotations.hamilton_product` forms it, without its
     products with the zero scalar part (they add exact zeros: the same numbers).
@@ -142,8 +142,9 @@ def quaternion_rate_scalar(q, rate):
 
 @njit(cache=True, error_model="numpy")
 def gyrostat_rates_scalar(rate, torque, inertia, rotor_momentum):
-    """Compiled twin of :func:`gyrostat_rates` (and, with ``rotor_momentum`` 0, of
-    :func:`euler_rates`) for one body: ω̇ = J⁻¹((τ − ω × h e1) − ω × Jω) as a 3-tuple.
+    """Compiled twin of :func:`~magbench.dynamics.kernels.gyrostat_rates` (and, with
+    ``rotor_momentum`` 0, of :func:`~magbench.dynamics.kernels.euler_rates`) for one body:
+    ω̇ = J⁻¹((τ − ω × h e1) − ω × Jω) as a 3-tuple.
 
     ``inertia`` = (diag, j, jt, jinv): principal moments j (3-tuple) when ``diag``, else the
     tensor jt (3, 3) and its inverse jinv, which multiplies where the numpy kernel solves

@@ -28,6 +28,7 @@ import numpy as np
 from numba import njit
 
 from .._rk4_kernel import rk4_step
+from ..control.kernels import bdot_dipole_scalar
 from ..dynamics.kernels import gyrostat_rates_scalar, quaternion_rate_scalar
 
 __all__ = ["advance_block", "member_rates"]
@@ -35,19 +36,6 @@ __all__ = ["advance_block", "member_rates"]
 #: How the coils are commanded (per member, kept across blocks): the law at every RK
 #: stage, or a held dipole.
 LAW, HELD = 0, 1
-
-
-@njit(cache=True, error_model="numpy")
-def _dipole(b0, b1, b2, d0, d1, d2, k, lim0, lim1, lim2, projected):
-    """m = sat(−kḂ) or the projected law, per axis clipped to ±lim (control.bdot); both
-    are formed and one selected, so that a loop over members stays free of branches."""
-    bb = b0 * b0 + b1 * b1 + b2 * b2
-    along = (b0 * d0 + b1 * d1 + b2 * d2) / bb
-    scale = -k / bb
-    p0, p1, p2 = scale * (d0 - b0 * along), scale * (d1 - b1 * along), scale * (d2 - b2 * along)
-    u0, u1, u2 = -k * d0, -k * d1, -k * d2
-    v0, v1, v2 = (p0, p1, p2) if projected else (u0, u1, u2)
-    return (min(max(v0, -lim0), lim0), min(max(v1, -lim1), lim1), min(max(v2, -lim2), lim2))
 
 
 @njit(cache=True, error_model="numpy")
@@ -79,8 +67,10 @@ def _rhs(q0, q1, q2, q3, w0, w1, w2, bn0, bn1, bn2, br0, br1, br2, ra0, ra1, ra2
     b2 = r20 * bn0 + r21 * bn1 + r22 * bn2
     # the on-board models: exact Ḃ in body axes (formed for every member, used where law)
     c0, c1, c2 = w1 * b2 - w2 * b1, w2 * b0 - w0 * b2, w0 * b1 - w1 * b0
-    l0, l1, l2 = _dipole(b0, b1, b2, (r00 * br0 + r01 * br1 + r02 * br2) - c0, (r10 * br0 + r11 * br1 + r12 * br2) - c1,
-                         (r20 * br0 + r21 * br1 + r22 * br2) - c2, k, lim0, lim1, lim2, projected)
+    l0, l1, l2 = bdot_dipole_scalar((b0, b1, b2), ((r00 * br0 + r01 * br1 + r02 * br2) - c0,
+                                                   (r10 * br0 + r11 * br1 + r12 * br2) - c1,
+                                                   (r20 * br0 + r21 * br1 + r22 * br2) - c2), k, (lim0, lim1, lim2),
+                                    projected)
     m0, m1, m2 = (l0, l1, l2) if law else (h0, h1, h2)
     t0, t1, t2 = m1 * b2 - m2 * b1, m2 * b0 - m0 * b2, m0 * b1 - m1 * b0
     p0 = r00 * ra0 + r01 * ra1 + r02 * ra2
@@ -118,9 +108,9 @@ def _sample(i, n, state, b, schedule, how, held, window, previous, gain, lim, pr
             if previous[3, m] == 0.0:
                 held[0, m], held[1, m], held[2, m] = 0.0, 0.0, 0.0
             else:
-                held[0, m], held[1, m], held[2, m] = _dipole(
-                    s0, s1, s2, (s0 - previous[0, m]) / delta, (s1 - previous[1, m]) / delta,
-                    (s2 - previous[2, m]) / delta, k, lim[0], lim[1], lim[2], projected)
+                held[0, m], held[1, m], held[2, m] = bdot_dipole_scalar(
+                    (s0, s1, s2), ((s0 - previous[0, m]) / delta, (s1 - previous[1, m]) / delta,
+                                   (s2 - previous[2, m]) / delta), k, (lim[0], lim[1], lim[2]), projected)
             previous[0, m], previous[1, m], previous[2, m], previous[3, m] = s0, s1, s2, 1.0
             how[m] = HELD
         elif phase_step == 0:
@@ -129,9 +119,9 @@ def _sample(i, n, state, b, schedule, how, held, window, previous, gain, lim, pr
             how[m] = HELD
         elif hold:
             e0, e1, e2 = _field_body(state, m, b, n)
-            held[0, m], held[1, m], held[2, m] = _dipole(
-                e0, e1, e2, (e0 - window[0, m]) / t_off, (e1 - window[1, m]) / t_off,
-                (e2 - window[2, m]) / t_off, k, lim[0], lim[1], lim[2], projected)
+            held[0, m], held[1, m], held[2, m] = bdot_dipole_scalar(
+                (e0, e1, e2), ((e0 - window[0, m]) / t_off, (e1 - window[1, m]) / t_off, (e2 - window[2, m]) / t_off),
+                k, (lim[0], lim[1], lim[2]), projected)
             how[m] = HELD
         else:
             how[m] = LAW

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..control.kernels import bdot_dipole, bdot_dipole_projected
 from ..earth.circular_orbit import CircularOrbit
 from ..integrate import rk4_step
 
@@ -46,14 +47,20 @@ def _cross3(a, b):
 
 
 def _law_bdot(b, b_rate, k, limit):
-    return tuple(np.clip(-k * d, -lim, lim) for d, lim in zip(b_rate, limit))
+    """The law on the loop's components (tuples of (M,) arrays):
+    :func:`magbench.control.kernels.bdot_dipole`."""
+    return tuple(np.moveaxis(bdot_dipole(np.stack(np.broadcast_arrays(*b_rate), axis=-1), _per_member(k), limit), -1, 0))
 
 
 def _law_projected(b, b_rate, k, limit):
-    b2 = b[0] * b[0] + b[1] * b[1] + b[2] * b[2]
-    along = (b[0] * b_rate[0] + b[1] * b_rate[1] + b[2] * b_rate[2]) / b2
-    scale = -k / b2
-    return tuple(np.clip(scale * (d - c * along), -lim, lim) for c, d, lim in zip(b, b_rate, limit))
+    """The same for :func:`magbench.control.kernels.bdot_dipole_projected`."""
+    return tuple(np.moveaxis(bdot_dipole_projected(np.stack(np.broadcast_arrays(*b), axis=-1),
+                                                   np.stack(np.broadcast_arrays(*b_rate), axis=-1),
+                                                   _per_member(k), limit), -1, 0))
+
+
+def _per_member(gain):
+    return np.asarray(gain)[..., None] if np.ndim(gain) else gain
 
 
 class _FieldTable:

@@ -113,7 +113,6 @@ def rotor_rhs(t, y, c):
     out = np.empty(7)
     # the body: the family's compiled twins (attitude relative to the orbital frame, hence v)
     out[0], out[1], out[2], out[3] = quaternion_rate_scalar((q0, q1, q2, q3), (v1, v2, v3))
-    out[4], out[5], out[6] = gyrostat_rates_scalar((w1, w2, w3), (t1, t2, t3),
-                                                   (False, (1.0, 1.0, 1.0), c[0:9].reshape(3, 3), c[9:18].reshape(3, 3)),
-                                                   hr)
+    tensor = (False, (1.0, 1.0, 1.0), c[0:9].reshape(3, 3), c[9:18].reshape(3, 3))
+    out[4], out[5], out[6] = gyrostat_rates_scalar((w1, w2, w3), (t1, t2, t3), tensor, hr)
     return out
