@@ -49,7 +49,8 @@ def _cross3(a, b):
 def _law_bdot(b, b_rate, k, limit):
     """The law on the loop's components (tuples of (M,) arrays):
     :func:`magbench.control.kernels.bdot_dipole`."""
-    return tuple(np.moveaxis(bdot_dipole(np.stack(np.broadcast_arrays(*b_rate), axis=-1), _per_member(k), limit), -1, 0))
+    m = bdot_dipole(np.stack(np.broadcast_arrays(*b_rate), axis=-1), _per_member(k), limit)
+    return tuple(np.moveaxis(m, -1, 0))
 
 
 def _law_projected(b, b_rate, k, limit):

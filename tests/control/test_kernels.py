@@ -46,3 +46,21 @@ def test_relay_dipole_torque_is_kovalenko_712():
     assert_array_equal(relay_dipole(np.array([0.0, 0.0, 1.0]), 1.0, 1.0), [-1.0, 1.0, 0.0])
     # no spin error, nothing to correct
     assert_array_equal(relay_spin_dipole(b, 2.5, 0.0), 0.0 * b)
+
+
+def test_bdot_twin_equals_the_numpy_laws():
+    # The detumbling kernel's law (bdot_dipole_scalar) against the numpy kernels the checked
+    # laws and the numpy loop call: the same operations in the same order, equal to the last
+    # bit, the saturation included (limits that clip some components, not all).
+    from magbench.control.kernels import bdot_dipole, bdot_dipole_projected, bdot_dipole_scalar
+
+    rng = np.random.default_rng(3)
+    b, rate = rng.normal(scale=3e-5, size=(50, 3)), rng.normal(scale=1e-6, size=(50, 3))
+    gain, limit = rng.uniform(1e3, 1e5, size=50), np.array([0.05, 0.1, 0.2])
+    for projected, numpy_law in ((False, lambda: bdot_dipole(rate, gain[:, None], limit)),
+                                 (True, lambda: bdot_dipole_projected(b, rate, gain[:, None], limit))):
+        twin = np.array([bdot_dipole_scalar(tuple(x), tuple(d), k, tuple(limit), projected)
+                         for x, d, k in zip(b, rate, gain)])
+        expected = numpy_law()
+        assert 0.1 < np.mean(np.abs(expected) == limit) < 0.9
+        np.testing.assert_array_equal(twin, expected)
