@@ -56,11 +56,13 @@ def test_bdot_twin_equals_the_numpy_laws():
 
     rng = np.random.default_rng(3)
     b, rate = rng.normal(scale=3e-5, size=(50, 3)), rng.normal(scale=1e-6, size=(50, 3))
-    gain, limit = rng.uniform(1e3, 1e5, size=50), np.array([0.05, 0.1, 0.2])
-    for projected, numpy_law in ((False, lambda: bdot_dipole(rate, gain[:, None], limit)),
-                                 (True, lambda: bdot_dipole_projected(b, rate, gain[:, None], limit))):
+    limit = np.array([0.05, 0.1, 0.2])
+    # gains [N·m·s] that put the dipoles around the limits: k Ḃ for the per-axis law,
+    # k Ḃ/|B|² (|B|² ~ 3e-9 T²) for the projected one
+    for projected, gain in ((False, rng.uniform(1e3, 1e5, size=50)), (True, rng.uniform(1e-5, 1e-3, size=50))):
         twin = np.array([bdot_dipole_scalar(tuple(x), tuple(d), k, tuple(limit), projected)
                          for x, d, k in zip(b, rate, gain)])
-        expected = numpy_law()
+        expected = (bdot_dipole_projected(b, rate, gain[:, None], limit) if projected
+                    else bdot_dipole(rate, gain[:, None], limit))
         assert 0.1 < np.mean(np.abs(expected) == limit) < 0.9
         np.testing.assert_array_equal(twin, expected)
