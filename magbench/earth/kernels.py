@@ -1,7 +1,8 @@
-r"""Compiled (numba) twin of :meth:`magbench.earth.CircularOrbit.field_rate_and_position`:
-the centred, tilted, rotating dipole's field, its rate and the radial direction along a
-circular orbit, from the cosines and sines of the argument of latitude u and of the pole's
-inertial longitude λ.
+r"""The dipole field along a circular orbit: compiled (numba) twin of
+:meth:`magbench.earth.CircularOrbit.field_rate_and_position` (the centred, tilted, rotating
+dipole's field, its rate and the radial direction in inertial axes, from the cosines and
+sines of the argument of latitude u and of the pole's inertial longitude λ), and the same
+field in orbital axes (:func:`magbench.earth.orbital_dipole_b`) with its compiled twin.
 
 Unchecked kernels, SI. The trigonometric functions are left to the caller: numpy's and the
 C library's sine may differ in the last bit, so a caller that must equal the numpy method
@@ -19,7 +20,7 @@ from numba import njit
 
 from ..constants import MU_0
 
-__all__ = ["orbit_geometry", "dipole_field_rate_radial", "field_table"]
+__all__ = ["orbit_geometry", "dipole_field_rate_radial", "field_table", "orbital_dipole_b", "orbital_dipole_b_scalar"]
 
 
 def orbit_geometry(orbit):
@@ -91,3 +92,27 @@ def field_table(cos_u, sin_u, cos_lam, sin_lam, geo, radius, b, b_rate, radial):
                 b[c, i, m] = f[c]
                 b_rate[c, i, m] = f[3 + c]
                 radial[c, i, m] = (radius * f[6 + c]) / radius
+
+
+def orbital_dipole_b(u, inclination, tilt, node_phase, b0):
+    """The tilted dipole's field in orbital axes (..., 3) [T] at argument of latitude u
+    [rad] (arrays broadcasting); no checks. The checked form, which documents it (Kovalenko
+    (1975) eq. (2.36)), is :func:`magbench.earth.orbital_dipole_b`."""
+    a = np.sin(inclination) * np.cos(tilt) - np.cos(inclination) * np.sin(tilt) * np.cos(node_phase)
+    s = np.sin(tilt) * np.sin(node_phase)
+    bx = np.cos(u) * a + np.sin(u) * s
+    by = np.sin(inclination) * np.sin(tilt) * np.cos(node_phase) + np.cos(inclination) * np.cos(tilt)
+    bz = -2.0 * (np.sin(u) * a - np.cos(u) * s)
+    return np.asarray(b0)[..., None] * np.stack(np.broadcast_arrays(bx, by, bz), axis=-1)
+
+
+@njit(cache=True, error_model="numpy")
+def orbital_dipole_b_scalar(cos_u, sin_u, cos_lam, sin_lam, angles, b0):
+    """Compiled twin of :func:`~magbench.earth.kernels.orbital_dipole_b` for one instant:
+    the cosines and sines of u and of the node phase Λ, ``angles`` = (sin i, cos i, sin δ,
+    cos δ) and b0 [T]; (Bx, By, Bz) [T]. The trigonometric functions are the caller's (see
+    the module notes); every other operation is the numpy kernel's, in its order."""
+    si, ci, sd, cd = angles
+    a = si * cd - ci * sd * cos_lam
+    s = sd * sin_lam
+    return (b0 * (cos_u * a + sin_u * s), b0 * (si * sd * cos_lam + ci * cd), b0 * (-2.0 * (sin_u * a - cos_u * s)))

@@ -7,6 +7,7 @@ direct dipole). SI throughout.
 import numpy as np
 
 from .._validate import as_finite, as_in_range
+from . import kernels
 from .dipole import dipole_equatorial_b
 
 __all__ = ["orbital_dipole_b"]
@@ -66,10 +67,4 @@ def orbital_dipole_b(argument_of_latitude, inclination, orbit_radius, moment, *,
     i = as_in_range("inclination", inclination, 0.0, np.pi, unit="rad")
     d = as_in_range("tilt", tilt, 0.0, np.pi, unit="rad")
     lam = as_finite("node_phase", node_phase)
-    b0 = dipole_equatorial_b(moment, orbit_radius)
-    a = np.sin(i) * np.cos(d) - np.cos(i) * np.sin(d) * np.cos(lam)
-    s = np.sin(d) * np.sin(lam)
-    bx = np.cos(u) * a + np.sin(u) * s
-    by = np.sin(i) * np.sin(d) * np.cos(lam) + np.cos(i) * np.cos(d)
-    bz = -2.0 * (np.sin(u) * a - np.cos(u) * s)
-    return b0[..., None] * np.stack(np.broadcast_arrays(bx, by, bz), axis=-1)
+    return kernels.orbital_dipole_b(u, i, d, lam, dipole_equatorial_b(moment, orbit_radius))

@@ -16,6 +16,7 @@ import numpy as np
 from numba import njit
 
 from .._rk4_kernel import rk4_step
+from ..earth.kernels import orbital_dipole_b_scalar
 
 __all__ = ["normalised_flow"]
 
@@ -27,11 +28,11 @@ def _rhs(tau, x0, x1, x2, x3, x4, a, c1, kappa, kappa_w, si, ci, real, real_fiel
     bo0, bo1, bo2 = 1.0 * (si * cu), 1.0 * (ci + 0.0 * tau), 1.0 * (-2.0 * si * su)
     if real:
         # orbital_dipole_b(τ, i, 1, 1, tilt, Λ) / dipole_equatorial_b(1, 1); real_field =
-        # (A, S, by, b0) with A, S and by its u-independent terms
-        big_a, big_s, by, b0 = real_field[0], real_field[1], real_field[2], real_field[3]
-        br0 = (b0 * (cu * big_a + su * big_s)) / b0
-        br1 = (b0 * by) / b0
-        br2 = (b0 * (-2.0 * (su * big_a - cu * big_s))) / b0
+        # (sin i, cos i, sin δ, cos δ, cos Λ, sin Λ, b0), numpy's sines and cosines
+        b0 = real_field[6]
+        f0, f1, f2 = orbital_dipole_b_scalar(cu, su, real_field[4], real_field[5],
+                                             (real_field[0], real_field[1], real_field[2], real_field[3]), b0)
+        br0, br1, br2 = f0 / b0, f1 / b0, f2 / b0
     else:
         br0, br1, br2 = bo0, bo1, bo2
     ca, sa, cb, sb = math.cos(x0), math.sin(x0), math.cos(x1), math.sin(x1)

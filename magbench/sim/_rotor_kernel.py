@@ -17,6 +17,7 @@ import math
 import numpy as np
 from numba import njit
 
+from ..earth.kernels import orbital_dipole_b_scalar
 from ..dynamics.kernels import gyrostat_rates_scalar, quaternion_rate_scalar
 
 __all__ = ["rotor_constants", "rotor_controller", "rotor_rhs"]
@@ -57,11 +58,7 @@ def rotor_controller(t, q0, q1, q2, q3, w1, w2, w3, c):
     su, cu = math.sin(u), math.cos(u)
     # real field: Kovalenko (1975) eq. (2.36), Λ = Ω − λ_N(t) − π/2
     lam = node - (lam0 + earth * t) - 0.5 * math.pi
-    av = si * cd - ci * sd * math.cos(lam)
-    sv = sd * math.sin(lam)
-    f1 = b0 * (cu * av + su * sv)
-    f2 = b0 * (si * sd * math.cos(lam) + ci * cd)
-    f3 = -2.0 * b0 * (su * av - cu * sv)
+    f1, f2, f3 = orbital_dipole_b_scalar(cu, su, math.cos(lam), math.sin(lam), (si, ci, sd, cd), b0)
     bb1 = r00 * f1 + r10 * f2 + r20 * f3
     bb2 = r01 * f1 + r11 * f2 + r21 * f3
     bb3 = r02 * f1 + r12 * f2 + r22 * f3

@@ -117,13 +117,11 @@ def _normalised_flow(a, c1, kappa, kappa_w, i, steps, orbits=1, record=False, re
         n = steps * orbits
         out = np.empty((5, n + 1, members) if record else (0, 0, 0))
         if real is None:
-            field = np.zeros(4)
+            field = np.zeros(7)
         else:
-            # orbital_dipole_b's terms that do not depend on u, computed as it computes them
+            # the twin's inputs, with numpy's sines and cosines as orbital_dipole_b takes them
             tilt, lam = real
-            field = np.array([np.sin(i) * np.cos(tilt) - np.cos(i) * np.sin(tilt) * np.cos(lam),
-                              np.sin(tilt) * np.sin(lam),
-                              np.sin(i) * np.sin(tilt) * np.cos(lam) + np.cos(i) * np.cos(tilt),
+            field = np.array([np.sin(i), np.cos(i), np.sin(tilt), np.cos(tilt), np.cos(lam), np.sin(lam),
                               dipole_equatorial_b(1.0, 1.0)], dtype=float)
         normalised_flow(state, n, h, float(a), float(c1), gains[0], gains[1], float(i), real is not None, field,
                         record, out)

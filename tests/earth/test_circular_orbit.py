@@ -142,3 +142,17 @@ def test_frozen_and_keyword_only():
         orbit.radius = 1.0
     with pytest.raises(TypeError):
         CircularOrbit(7000e3, 0.5, 8e22, 0.0, 1.0)   # ascending_node is keyword-only
+
+
+def test_orbital_dipole_twin_equals_the_numpy_kernel():
+    # The rotor kernels' field (orbital_dipole_b_scalar) against the numpy kernel the checked
+    # orbital_dipole_b calls: given numpy's sines and cosines, the same operations in the same
+    # order, equal to the last bit (tilted dipole, several node phases and inclinations).
+    from magbench.earth.kernels import orbital_dipole_b, orbital_dipole_b_scalar
+
+    u = np.linspace(0.0, 2.0 * np.pi, 37)
+    for inclination, tilt, node in ((1.2, 0.2, 0.3), (np.radians(51.6), np.radians(11.5), -2.0), (0.0, 0.0, 0.0)):
+        angles = (np.sin(inclination), np.cos(inclination), np.sin(tilt), np.cos(tilt))
+        twin = np.array([orbital_dipole_b_scalar(c, s, np.cos(node), np.sin(node), angles, 2.4e-5)
+                         for c, s in zip(np.cos(u), np.sin(u))])
+        np.testing.assert_array_equal(twin, orbital_dipole_b(u, inclination, tilt, node, 2.4e-5))
