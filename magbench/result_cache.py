@@ -26,7 +26,7 @@ import os
 from collections.abc import Mapping
 from pathlib import Path
 
-__all__ = ["RESULT_CACHE_ENV", "cached_result", "disabled", "disk_cached", "external_inputs", "inputs_fingerprint",
+__all__ = ["RESULT_CACHE_ENV", "ChapterInputs", "cached_result", "disabled", "disk_cached", "external_inputs", "inputs_fingerprint",
            "library_digests", "result_cache_folder"]
 
 #: The environment variable naming the folder of the on-disk result cache.
@@ -155,6 +155,58 @@ def disabled(studies=True):
             _unkeyed_disabled -= 1
 
 
+class ChapterInputs(Mapping):
+    """A chapter's inputs, name → SI value [SI], as one frozen, hashable value: the key on
+    which the chapters' studies and runs are cached, in memory and on disk.
+
+    Built from a mapping or (name, value) pairs, plus keyword changes; read as a dict.
+    Equal inputs are one key whatever their order or number type (7 and 7.0).
+
+    Examples
+    --------
+    >>> a = ChapterInputs({"gain": 2, "step": 0.5})
+    >>> a == ChapterInputs([("step", 0.5), ("gain", 2.0)]), a["gain"], dict(a.replace(step=1))
+    (True, 2.0, {'gain': 2.0, 'step': 1.0})
+    """
+
+    __slots__ = ("_values",)
+
+    def __init__(self, values=(), **changes):
+        merged = {**dict(values), **changes}
+        object.__setattr__(self, "_values", {str(k): float(merged[k]) for k in sorted(merged)})
+
+    def __setattr__(self, name, value):
+        raise AttributeError(f"ChapterInputs is frozen: use replace({name}=...)")
+
+    def __getitem__(self, name):
+        return self._values[name]
+
+    def __iter__(self):
+        return iter(self._values)
+
+    def __len__(self):
+        return len(self._values)
+
+    def __hash__(self):
+        return hash(tuple(self._values.items()))
+
+    def __eq__(self, other):
+        return isinstance(other, ChapterInputs) and self._values == other._values
+
+    def __repr__(self):
+        return f"ChapterInputs({self._values!r})"
+
+    def __reduce__(self):
+        return ChapterInputs, (tuple(self._values.items()),)
+
+    def replace(self, **changes):
+        """The same inputs with ``changes``; a name that is not among them raises ``KeyError``."""
+        unknown = sorted(set(changes) - set(self._values))
+        if unknown:
+            raise KeyError(f"{', '.join(unknown)} not among the inputs ({', '.join(self._values)})")
+        return ChapterInputs(self._values, **changes)
+
+
 def cached_result(func=None, *, maxsize=4, reads=None):
     """Decorator: keep ``func``'s results in memory (``maxsize`` per process) and, when the
     disk cache is on, on disk (see the module's description).
@@ -164,8 +216,8 @@ def cached_result(func=None, *, maxsize=4, reads=None):
 
     ``reads``, the names of the parameters ``func`` reads, makes it a *study*: its first
     argument is then a chapter's parameters (a mapping or (name, value) pairs, any
-    superset of ``reads``), and ``func`` is called with, and keyed on, the sorted
-    (name, float) pairs of ``reads`` alone. A study reading a name it does not declare
+    superset of ``reads``), and ``func`` is called with, and keyed on, the
+    :class:`ChapterInputs` of ``reads`` alone. A study reading a name it does not declare
     fails with a ``KeyError``; one whose names are all unchanged is not computed again,
     whatever else of the chapter changed (the input sweep relies on it).
     """
@@ -187,7 +239,7 @@ def cached_result(func=None, *, maxsize=4, reads=None):
         missing = [name for name in names if name not in given]
         if missing:
             raise KeyError(f"{func.__qualname__} reads {', '.join(missing)}, not among the parameters it was given")
-        return cached(tuple((name, float(given[name])) for name in names), *args, **kwargs)
+        return cached(ChapterInputs({name: given[name] for name in names}), *args, **kwargs)
 
     study.reads = names
     study.cache_clear = cached.cache_clear

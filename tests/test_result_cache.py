@@ -2,6 +2,7 @@
 next; a changed argument, library or overrides file is a different result; without the
 variable nothing is written."""
 
+import pickle
 import subprocess
 import sys
 from pathlib import Path
@@ -62,9 +63,25 @@ def test_a_study_is_keyed_on_the_inputs_it_reads(monkeypatch):
     assert _study({"a": 1.0, "b": 2.0, "c": 3.0}) == 3.0
     # Another value of an input it does not read, as a mapping or as pairs: the same result.
     assert _study([("c", 9.0), ("b", 2.0), ("a", 1.0)]) == 3.0
-    assert STUDY_CALLS == [(("a", 1.0), ("b", 2.0))]        # sorted pairs of its own inputs
+    # called with its own inputs alone, as one frozen mapping
+    assert STUDY_CALLS == [result_cache.ChapterInputs({"a": 1.0, "b": 2.0})]
+    assert list(STUDY_CALLS[0].items()) == [("a", 1.0), ("b", 2.0)]
     assert _study({"a": 1.0, "b": 5.0}) == 6.0 and _study({"a": 1.0, "b": 2.0}, scale=2.0) == 6.0
     assert len(STUDY_CALLS) == 3 and _study.reads == ("a", "b")
+
+
+def test_chapter_inputs_are_one_frozen_key():
+    a = result_cache.ChapterInputs({"b": 2, "a": 1.0})
+    # order and number type do not make another key; another value does
+    same = result_cache.ChapterInputs([("a", 1), ("b", 2.0)])
+    assert a == same and hash(a) == hash(same)
+    assert a != result_cache.ChapterInputs({"a": 1.0, "b": 3.0}) and a != {"a": 1.0, "b": 2.0}
+    with pytest.raises(AttributeError, match="frozen"):
+        a.gain = 1.0
+    with pytest.raises(KeyError, match="c not among the inputs"):
+        a.replace(c=1.0)
+    assert a.replace(b=4.0)["b"] == 4.0 and a["b"] == 2.0
+    assert pickle.loads(pickle.dumps(a)) == a
 
 
 def test_a_study_missing_an_input_or_reading_an_undeclared_one_fails():

@@ -8,14 +8,15 @@ from numpy.testing import assert_allclose
 
 from magbench import figures
 from magbench.chapters import chapter_parameters, errata
-from magbench.chapters.ch05_detumbling import INPUTS, parameter_key, study
+from magbench.chapters.ch05_detumbling import INPUTS, study
 from magbench.control import kovalenko_detumble_time
 from magbench.earth import dipole_max_field, mean_square_field
 from magbench.io import load_parameter_set
+from magbench.result_cache import ChapterInputs
 from magbench.sim import simulate_detumble_segments
 
 DEG = np.pi / 180.0
-KEY = parameter_key(chapter_parameters("ch05", overrides=""))
+KEY = ChapterInputs(chapter_parameters("ch05", overrides=""))
 
 
 def test_inputs_are_the_samsat_set():

@@ -17,10 +17,11 @@ from ...control import kovalenko_detumble_time
 from ...earth import dipole_max_field, mean_square_field
 from ...errata import printed_check, source_check
 from ...io import load_parameter_set, load_printed
+from ...result_cache import ChapterInputs
 from .._base import Chapter, chapter_parameters
 from ...units import DEG
 
-__all__ = ["CHAPTER", "INPUTS", "peer_rows", "detumbling_checks", "formula_checks", "parameter_key"]
+__all__ = ["CHAPTER", "INPUTS", "peer_rows", "detumbling_checks", "formula_checks"]
 
 #: The chapter's inputs: names in the SamSat-218D parameter set.
 INPUTS = (
@@ -46,13 +47,8 @@ INPUTS = (
 CP557 = {"runs": 100, "median": 4259.5, "p95": 5661.8, "mean": 4187.5, "max": 6304.6}
 
 
-def parameter_key(params):
-    """A hashable key of a parameter dict (the studies are cached on it)."""
-    return tuple(sorted((k, float(v)) for k, v in params.items()))
-
-
 def _source_key():
-    return parameter_key({name: load_parameter_set("samsat")[name].value_si for name in INPUTS})
+    return ChapterInputs({name: load_parameter_set("samsat")[name].value_si for name in INPUTS})
 
 
 def _bootstrap_sd(values, size, statistic, draws=2000, seed=0):

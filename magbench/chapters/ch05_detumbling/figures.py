@@ -15,7 +15,8 @@ from ...control import kovalenko_detumble_time
 from ...earth import dipole_max_field, field_direction_rate_range, mean_square_field
 from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 from ...units import DEG
-from . import parameter_key, study
+from ...result_cache import ChapterInputs
+from . import study
 
 SOURCE = "Kramlikh & Melnik (2016), SamSat-218D"
 ESTIMATORS = ("model", "hold", "propagate")
@@ -46,8 +47,7 @@ def _parameters(*names, **extra):
 def _key(**params):
     """The chapter's defaults with a figure's parameters over them, as a cache key."""
     p = _defaults()
-    p.update({k: v for k, v in params.items() if k in p})
-    return parameter_key(p)
+    return ChapterInputs(p, **{k: v for k, v in params.items() if k in p})
 
 
 _ORBIT = ("orbit_altitude", "orbit_inclination", "earth_radius", "dipole_g10", "dipole_g11", "dipole_h11",
