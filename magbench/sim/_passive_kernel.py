@@ -26,7 +26,7 @@ array: every array argument costs the right-hand side reference counting at each
 
 Cost of the one RK4: each step allocates its stages and rates as arrays (16 small arrays,
 with their reference counts), a fixed ~0.3 µs per step whatever the number of members. At one
-member (the full run from session 1) a step takes ~1.9 times as long as the earlier loop that
+member (the full run from session 1) a step takes ~1.85 times as long as the earlier loop that
 kept the stages in scalars; at the 64 members of the capture Monte Carlo the member loop
 amortises it and the step is ~1.5 times faster than that loop was (measured on two cores).
 
