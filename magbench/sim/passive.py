@@ -235,9 +235,10 @@ def simulate_passive(satellite, orbit, angular_momentum, nutation, momentum_dire
         Largest h·max(|ω|, |Ω_p|, 2n) of an RK4 step, Ω_p = (C − A)ω3/A the body precession
         rate, n the mean motion [rad].
     engine : {"compiled", "numpy"}, optional
-        ``"compiled"``: the numba kernel of :mod:`magbench.sim._passive_kernel` (one member at
-        a time, ~10³ times faster per step); ``"numpy"``: the vectorised reference. Both take
-        the same steps and agree to rounding (tested to 1e-10 on short spans) [-].
+        ``"compiled"``: the numba kernel of :mod:`magbench.sim._passive_kernel` (the same
+        RK4 step, compiled; ~10³ times faster per step at one member); ``"numpy"``: the
+        vectorised reference. Both take the same steps and agree to rounding (tested to 1e-10
+        on short spans) [-].
 
     Returns
     -------
@@ -304,18 +305,22 @@ def simulate_passive(satellite, orbit, angular_momentum, nutation, momentum_dire
 
 def _run_compiled(satellite, orbit, state, phase, axes, rod_constants, interval, n_samples, limit, records):
     """The numba loop (:func:`magbench.sim._passive_kernel.run_passive`, ``engine="compiled"``),
-    member by member; it fills ``records`` and returns the steps taken and the final states."""
+    all members in each step; it fills ``records`` and returns the steps taken and the final
+    states (M, 7 + rods)."""
     from ..earth.kernels import orbit_geometry
     from ._passive_kernel import run_passive
 
     hc, bs, k = rod_constants
     members = state.shape[0]
-    state = np.ascontiguousarray(state, dtype=float)
-    u0 = np.ascontiguousarray(np.broadcast_to(phase, (members,)), dtype=float)
-    rods = (np.ascontiguousarray(axes, dtype=float), float(satellite.rod_volume), float(hc), float(bs), float(k))
-    steps = run_passive(state, u0, orbit_geometry(orbit), satellite.inertia, float(satellite.magnet_moment), rods,
+    columns = np.ascontiguousarray(state.T, dtype=float)    # the kernel's layout (7 + k, M)
+    # a writable copy whether or not the phase has members: one compiled signature
+    u0 = np.array(np.broadcast_to(phase, (members,)), dtype=float)
+    # the axes as a tuple: the kernel's right-hand side takes them by value
+    rods = (tuple(tuple(float(v) for v in a) for a in axes), float(satellite.rod_volume), float(hc), float(bs),
+            float(k))
+    steps = run_passive(columns, u0, orbit_geometry(orbit), satellite.inertia, float(satellite.magnet_moment), rods,
                         float(interval), n_samples, float(limit), records)
-    return steps, state
+    return steps, np.ascontiguousarray(columns.T)
 
 
 def _run_numpy(state, times, records, record, args, interval, limit, orbit, inertia, a, c):
