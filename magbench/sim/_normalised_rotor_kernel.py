@@ -15,7 +15,7 @@ import math
 import numpy as np
 from numba import njit
 
-from .._rk4_kernel import rk4_step
+from .._rk4_kernel import rk4_advance
 from ..earth.kernels import orbital_dipole_b_scalar
 
 __all__ = ["normalised_flow"]
@@ -53,26 +53,23 @@ def _rhs(tau, x0, x1, x2, x3, x4, a, c1, kappa, kappa_w, si, ci, real, real_fiel
 
 
 @njit(cache=True, error_model="numpy")
-def closed_loop_rates(tau, x, a, c1, kappa, kappa_w, si, ci, real, real_field):
-    """d/dτ of the states x (5, M) of every member, each by :func:`_rhs`."""
-    out = np.empty_like(x)
+def closed_loop_rates(tau, x, out, a, c1, kappa, kappa_w, si, ci, real, real_field):
+    """d/dτ of the states x (5, M) of every member, each by :func:`_rhs`, into out (5, M)."""
     for m in range(x.shape[1]):
         out[0, m], out[1, m], out[2, m], out[3, m], out[4, m] = _rhs(
             tau, x[0, m], x[1, m], x[2, m], x[3, m], x[4, m], a, c1, kappa[m], kappa_w[m], si, ci, real, real_field)
-    return out
 
 
 @njit(cache=True, error_model="numpy")
 def normalised_flow(state, steps, h, a, c1, kappa, kappa_w, inclination, real, real_field, record, out):
     """Advance state (5, M) in place by ``steps`` RK4 steps of h (the library's compiled
-    step, :func:`magbench._rk4_kernel.rk4_step`); when ``record``, out (5, steps + 1, M)
+    step, :func:`magbench._rk4_kernel.rk4_advance`); when ``record``, out (5, steps + 1, M)
     receives every state from the first."""
     args = (a, c1, kappa, kappa_w, math.sin(inclination), math.cos(inclination), real, real_field)
-    x = state.copy()
+    stages = np.empty((5,) + state.shape)
     if record:
-        out[:, 0, :] = x
+        out[:, 0, :] = state
     for n in range(steps):
-        x = rk4_step(closed_loop_rates, n * h, x, h, args)
+        rk4_advance(closed_loop_rates, n * h, state, h, args, stages)
         if record:
-            out[:, n + 1, :] = x
-    state[:] = x
+            out[:, n + 1, :] = state

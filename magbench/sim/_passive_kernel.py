@@ -12,7 +12,7 @@ members; the quaternion is renormalised after every step; the field is the centr
 :meth:`magbench.earth.CircularOrbit.field_and_rate`, through its compiled twin
 (:mod:`magbench.earth.kernels`).
 
-Why this layout: the step is the library's compiled RK4 (:func:`magbench._rk4_kernel.rk4_step`)
+Why this layout: the step is the library's compiled RK4 (:func:`magbench._rk4_kernel.rk4_advance`)
 of :func:`member_rates`, which runs one loop over the members in straight-line code. The state
 is the (7 + k, M) array flattened (component i of member m at i·M + m): members contiguous,
 and the RK4 stages one-dimensional arrays, which numba forms faster than two-dimensional ones.
@@ -24,11 +24,13 @@ table of B and dB/dt at its step ends and midpoints by that recurrence, and
 entries bound the table whatever the step count. The rods' axes come as a tuple, not an
 array: every array argument costs the right-hand side reference counting at each stage.
 
-Cost of the one RK4: each step allocates its stages and rates as arrays (16 small arrays,
-with their reference counts), a fixed ~0.3 µs per step whatever the number of members. At one
-member (the full run from session 1) a step takes ~1.85 times as long as the earlier loop that
-kept the stages in scalars; at the 64 members of the capture Monte Carlo the member loop
-amortises it and the step is ~1.5 times faster than that loop was (measured on two cores).
+Cost of the one RK4: each step passes its arrays (state, stages, table) to the right-hand
+side four times, with numba's reference counting each time. At one member (the full run from
+session 1, 9.7e7 steps) the run takes 43 s against 34 s for the earlier loop that kept the
+stages in scalars; at the 64 members of the capture Monte Carlo the member loop amortises it
+and the run is twice as fast as that loop (0.43 s against 0.88 s), measured on two cores.
+The step allocates nothing (:func:`magbench._rk4_kernel.rk4_advance` works on stages
+allocated once per run).
 
 ``cache=True`` writes the compiled code next to this file (``__pycache__``, ignored by git) or,
 if that folder is not writable, to numba's per-user cache; it only saves the ~10 s compilation
@@ -40,14 +42,16 @@ import math
 import numpy as np
 from numba import njit
 
-from .._rk4_kernel import rk4_step
+from .._rk4_kernel import rk4_advance
 from ..constants import MU_0
+from ..dynamics.kernels import gyrostat_rates_scalar, quaternion_rate_scalar
 from ..earth.kernels import dipole_field_rate_radial
 
 __all__ = ["member_rates", "run_passive"]
 
 _TWO_OVER_PI = 2.0 / math.pi
 _INV_MU_0 = 1.0 / MU_0
+_EYE = np.eye(3)     # the twin's tensor slot, unused for principal moments
 #: Largest field table of a block of steps (floats): 6 · (2·steps + 1) · members.
 TABLE_VALUES = 1 << 15
 
@@ -62,10 +66,10 @@ def _to_body(w, x, y, z, v0, v1, v2):
 
 
 @njit(cache=True, error_model="numpy")
-def member_rates(time, x, t_block, half, table, axes, i0, i1, i2, magnet, volume, hc, bs, kk):
-    """(q̇, ω̇, Ḃ of the rods) of every member: the numpy reference's right-hand side.
+def member_rates(time, x, out, t_block, half, table, axes, i0, i1, i2, magnet, volume, hc, bs, kk):
+    """(q̇, ω̇, Ḃ of the rods) of every member into out: the numpy reference's right-hand side.
 
-    x and the result are the flattened (7 + k, M) states (component i of member m at
+    x and out are the flattened (7 + k, M) states (component i of member m at
     i·M + m). The field table (6, rows, M) holds inertial B and dB/dt at the block's step
     ends and midpoints, so the row of ``time`` is its count of half steps from the block's
     start ``t_block``. axes: the k rods' unit vectors (a tuple of 3-tuples); i0, i1, i2 the
@@ -73,9 +77,9 @@ def member_rates(time, x, t_block, half, table, axes, i0, i1, i2, magnet, volume
     Flatley–Henretty constants.
     """
     row = int(math.floor((time - t_block) / half + 0.5))
-    out = np.empty_like(x)
     M = table.shape[2]
     nrods = len(axes)
+    principal = (True, (i0, i1, i2), _EYE, _EYE)
     for m in range(M):
         q0, q1, q2, q3 = x[0 * M + m], x[1 * M + m], x[2 * M + m], x[3 * M + m]
         # normalised for the rotation, as magbench.dynamics.kernels.rotate does
@@ -110,16 +114,11 @@ def member_rates(time, x, t_block, half, table, axes, i0, i1, i2, magnet, volume
         else:
             for k in range(nrods):
                 out[(7 + k) * M + m] = 0.0
-        tq0, tq1, tq2 = m1 * b2 - m2 * b1, m2 * b0 - m0 * b2, m0 * b1 - m1 * b0
-        l0, l1, l2 = i0 * w0, i1 * w1, i2 * w2
-        out[4 * M + m] = (tq0 - (w1 * l2 - w2 * l1)) / i0
-        out[5 * M + m] = (tq1 - (w2 * l0 - w0 * l2)) / i1
-        out[6 * M + m] = (tq2 - (w0 * l1 - w1 * l0)) / i2
-        out[0 * M + m] = 0.5 * (q0 * 0.0 - q1 * w0 - q2 * w1 - q3 * w2)
-        out[1 * M + m] = 0.5 * (q0 * w0 + q1 * 0.0 + q2 * w2 - q3 * w1)
-        out[2 * M + m] = 0.5 * (q0 * w1 - q1 * w2 + q2 * 0.0 + q3 * w0)
-        out[3 * M + m] = 0.5 * (q0 * w2 + q1 * w1 - q2 * w0 + q3 * 0.0)
-    return out
+        torque = (m1 * b2 - m2 * b1, m2 * b0 - m0 * b2, m0 * b1 - m1 * b0)
+        # the body: the family's compiled twins (principal moments)
+        out[4 * M + m], out[5 * M + m], out[6 * M + m] = gyrostat_rates_scalar((w0, w1, w2), torque, principal, 0.0)
+        out[0 * M + m], out[1 * M + m], out[2 * M + m], out[3 * M + m] = quaternion_rate_scalar((q0, q1, q2, q3),
+                                                                                              (w0, w1, w2))
 
 
 @njit(cache=True, error_model="numpy")
@@ -158,7 +157,7 @@ def run_passive(state, u0, geo, inertia, magnet, rods, interval, n_samples, limi
     """Advance every member over n_samples intervals; fill records (n+1, 5, M); return the steps.
 
     state (7 + k, M) is advanced in place, by the library's compiled RK4 step
-    (:func:`magbench._rk4_kernel.rk4_step`) of :func:`member_rates`; u0 (M,) the members'
+    (:func:`magbench._rk4_kernel.rk4_advance`) of :func:`member_rates`; u0 (M,) the members'
     orbit phases; rods = (axes, volume, Hc, Bs, k_shape) with axes a tuple of k unit
     3-tuples, unpacked once here.
     """
@@ -171,6 +170,7 @@ def run_passive(state, u0, geo, inertia, magnet, rods, interval, n_samples, limi
     table = np.empty((6, 2 * block + 1, members))
     cu, su, cl, sl = np.empty(members), np.empty(members), np.empty(members), np.empty(members)
     x = state.copy().reshape(state.size)
+    stages = np.empty((5, x.size))
     for m in range(members):
         _record(x, m, 0.0, u0[m], geo, inertia, records, 0)
     steps = 0
@@ -205,7 +205,7 @@ def run_passive(state, u0, geo, inertia, magnet, rods, interval, n_samples, limi
             t_block = t + start * h
             args = (t_block, half, table, axes, inertia[0], inertia[1], inertia[2], magnet, volume, hc, bs, kk)
             for s in range(count):
-                x = rk4_step(member_rates, t_block + s * h, x, h, args)
+                rk4_advance(member_rates, t_block + s * h, x, h, args, stages)
                 for m in range(members):
                     x0, x1, x2, x3 = x[0 * M + m], x[1 * M + m], x[2 * M + m], x[3 * M + m]
                     norm = math.sqrt(x0 * x0 + x1 * x1 + x2 * x2 + x3 * x3)

@@ -112,7 +112,7 @@ def _normalised_flow(a, c1, kappa, kappa_w, i, steps, orbits=1, record=False, re
         x = np.asarray(x, dtype=float)
         shape = np.broadcast_shapes(x.shape[1:], np.shape(kappa), np.shape(kappa_w))
         members = int(np.prod(shape))
-        state = np.array(np.broadcast_to(x, (5,) + shape), dtype=float).reshape(5, members)   # a writable copy
+        state = np.array(np.broadcast_to(x, (5,) + shape), dtype=float, order="C").reshape(5, members)   # a writable C copy
         gains = [np.array(np.broadcast_to(g, shape), dtype=float).reshape(members) for g in (kappa, kappa_w)]
         n = steps * orbits
         out = np.empty((5, n + 1, members) if record else (0, 0, 0))

@@ -20,7 +20,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ..._rk4_kernel import rk4_step
+from ..._rk4_kernel import rk4_advance
 
 __all__ = ["ROWS", "sense", "control_and_step"]
 
@@ -89,21 +89,19 @@ def _accel(psi, rate, a1, a2, b0, kappa, neutral, inertia):
 
 
 @njit(cache=True, error_model="numpy")
-def plant_rates(time, x, applied, field, kappa, neutral, inertia):
-    """(ψ̇, ω̇) of every member, x and the result (2, M), the coils' body moments ``applied``
+def plant_rates(time, x, out, applied, field, kappa, neutral, inertia):
+    """(ψ̇, ω̇) of every member into out, x and out (2, M), the coils' body moments ``applied``
     (2, M) held: :func:`_accel` member by member."""
-    out = np.empty_like(x)
     for m in range(x.shape[1]):
         out[0, m], out[1, m] = _accel(x[0, m], x[1, m], applied[0, m], applied[1, m], field[m], kappa[m],
                                       neutral[m], inertia)
-    return out
 
 
 @njit(cache=True, error_model="numpy")
 def control_and_step(k, heading, gyro, bxy, state, member, present, setup, memory, held, records, stride):
     """controller_step on the readings and the numpy ``heading``, the records, the error
     bands, and the plant's step over the sample with the new moments held (the library's
-    compiled RK4, :func:`magbench._rk4_kernel.rk4_step`, of :func:`plant_rates`).
+    compiled RK4, :func:`magbench._rk4_kernel.rk4_advance`, of :func:`plant_rates`).
 
     Grouped arrays (numba takes tuples of arrays; each is written in place): ``memory``
     (estimate, integral, band, band_est), each (M,); ``held`` (commanded, applied), the
@@ -149,5 +147,5 @@ def control_and_step(k, heading, gyro, bxy, state, member, present, setup, memor
             a1, a2 = m1, m2
         commanded[0, m], commanded[1, m] = m1, m2
         applied[0, m], applied[1, m] = a1, a2
-    state[:] = rk4_step(plant_rates, k * dt, state, dt,
-                        (applied, member[FIELD], member[KAPPA], member[NEUTRAL], setup[INERTIA]))
+    plant = (applied, member[FIELD], member[KAPPA], member[NEUTRAL], setup[INERTIA])
+    rk4_advance(plant_rates, k * dt, state, dt, plant, np.empty((5,) + state.shape))
