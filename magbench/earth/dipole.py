@@ -30,7 +30,7 @@ _DIPOLE_PARAMETERS = {
     "geomagnetic_latitude": """geomagnetic_latitude : array_like
     Geomagnetic latitude Φ [rad], in [−π/2, π/2].""",
     "moment": """moment : array_like
-    Dipole moment magnitude M_З [A·m²], > 0.""",
+    Dipole moment magnitude M [A·m²], > 0.""",
     "radius": """radius : array_like
     Distance from the Earth's centre R [m], > 0.""",
     "latitude": """latitude : array_like
