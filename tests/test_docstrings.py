@@ -173,3 +173,54 @@ def test_each_kernel_names_the_checked_function_that_documents_it(module_name, f
         for attr in parts[cut:]:
             assert hasattr(obj, attr), f"{module_name}.{fname}: {ref} does not exist"
             obj = getattr(obj, attr)
+
+
+def test_no_docstring_keeps_a_shared_entry_unfilled():
+    """A ``{name}`` line is filled at import by :func:`magbench._docstrings.fill_docstring`; one
+    left over means a function lost its decorator."""
+    from magbench._docstrings import _SLOT
+
+    left = [p.id for p in _public_functions() if _SLOT.search(p.values[0].__doc__ or "")]
+    assert not left, left
+
+
+def test_fill_docstring_fills_indents_and_retypes():
+    from magbench._docstrings import fill_docstring
+
+    entries = {"side": "side : array_like\n    Turn side l [m].", "shape": "shape : str\n    Shape [-]."}
+
+    @fill_docstring(entries)
+    def f(side, shape):
+        """Doc.
+
+        Parameters
+        ----------
+        {side, shape}
+        """
+
+    @fill_docstring(entries)
+    def g(side):
+        """Doc.
+
+        Parameters
+        ----------
+        {side : float}
+        """
+
+    assert inspect.getdoc(f).endswith("side : array_like\n    Turn side l [m].\nshape : str\n    Shape [-].")
+    assert inspect.getdoc(g).endswith("side : float\n    Turn side l [m].")
+
+
+def test_fill_docstring_refuses_unknown_names_and_docstrings_without_slots():
+    from magbench._docstrings import fill_docstring
+
+    def unknown():
+        """{size}"""
+
+    def plain():
+        """No slot."""
+
+    with pytest.raises(KeyError, match="size"):
+        fill_docstring({"side": "side : float\n    l [m]."})(unknown)
+    with pytest.raises(ValueError, match="no {name} line"):
+        fill_docstring({"side": "side : float\n    l [m]."})(plain)

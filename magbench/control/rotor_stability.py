@@ -17,24 +17,33 @@ import math
 
 import numpy as np
 
+from .._docstrings import fill_docstring
 from .._validate import as_finite, as_in_range, as_positive, as_positive_scalar, shown
 from ..integrate import rk4_step
 from .floquet import floquet_multipliers
 
 __all__ = ["rotor_model_numbers", "rotor_linearised_matrices", "rotor_floquet_multipliers", "rotor_stability_map"]
 
+#: The normalised model's numbers as :func:`rotor_model_numbers` checks them, described once for
+#: every function that takes them (here and in :mod:`magbench.sim.rotor_normalised`).
+ROTOR_MODEL_PARAMETERS = {
+    "axial_ratio": """axial_ratio : float
+    a = A/B > 0 [-].""",
+    "momentum": """momentum : float
+    c1 = H0/(ω0 B) [-].""",
+    "inclination": """inclination : float
+    i in [0, π] with sin i ≠ 0 [rad].""",
+}
+_document_model = fill_docstring(ROTOR_MODEL_PARAMETERS)
 
+
+@_document_model
 def rotor_model_numbers(axial_ratio, momentum, inclination):
     r"""The normalised model's numbers a, c1 and i, checked.
 
     Parameters
     ----------
-    axial_ratio : float
-        a = A/B > 0 [-].
-    momentum : float
-        c1 = H0/(ω0 B) [-].
-    inclination : float
-        i in [0, π] with sin i ≠ 0 [rad].
+    {axial_ratio, momentum, inclination}
 
     Returns
     -------
@@ -86,6 +95,7 @@ def _linearised(tau, a, c1, i):
     return a0, a1, a2
 
 
+@_document_model
 def rotor_linearised_matrices(tau, axial_ratio, momentum, inclination):
     r"""The linearised closed loop about the reference, split by gain: A = A0 + κ A1 + κ_w A2.
 
@@ -93,12 +103,7 @@ def rotor_linearised_matrices(tau, axial_ratio, momentum, inclination):
     ----------
     tau : float or array_like
         τ = u [-].
-    axial_ratio : float
-        a = A/B [-].
-    momentum : float
-        c1 [-].
-    inclination : float
-        i, sin i ≠ 0 [rad].
+    {axial_ratio, momentum, inclination}
 
     Returns
     -------
@@ -145,21 +150,18 @@ def _monodromy(a, c1, i, kappa, kappa_w, steps):
     return np.moveaxis(x, 2, 0).reshape(shape + (5, 5))
 
 
+@_document_model
 def rotor_floquet_multipliers(axial_ratio, momentum, restoring, damping, inclination, *, steps=1000):
     r"""Floquet multipliers of the linearised closed loop over one orbit.
 
     Parameters
     ----------
-    axial_ratio : float
-        a = A/B [-].
-    momentum : float
-        c1 [-].
+    {axial_ratio, momentum}
     restoring : float or array_like
         κ [-]; broadcasts with ``damping``.
     damping : float or array_like
         κ_w ≥ 0 [-].
-    inclination : float
-        i, sin i ≠ 0 [rad].
+    {inclination}
     steps : int, optional
         RK4 steps per orbit [-] (1000: max|ρ| to about 1e-7 relative).
 
@@ -183,6 +185,7 @@ def rotor_floquet_multipliers(axial_ratio, momentum, restoring, damping, inclina
     return floquet_multipliers(_monodromy(a, c1, i, kappa, kappa_w, n))
 
 
+@_document_model
 def rotor_stability_map(restoring, damping, *, axial_ratio, momentum, inclination, steps=1000):
     r"""The stability map: max|ρ| over a grid of (restoring, damping) gains.
 
@@ -192,12 +195,7 @@ def rotor_stability_map(restoring, damping, *, axial_ratio, momentum, inclinatio
         κ values [-].
     damping : array_like, shape (n_damping,)
         κ_w values, ≥ 0 [-].
-    axial_ratio : float
-        a = A/B [-].
-    momentum : float
-        c1 [-].
-    inclination : float
-        i [rad].
+    {axial_ratio, momentum, inclination}
     steps : int, optional
         RK4 steps per orbit [-].
 

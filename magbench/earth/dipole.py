@@ -14,6 +14,7 @@ difference.
 
 import numpy as np
 
+from .._docstrings import fill_docstring
 from .._validate import as_finite, as_in_range, as_positive, as_vectors, shown
 from ..constants import MU_0
 from .coordinates import _unit_vector, geomagnetic_latitude
@@ -22,6 +23,26 @@ __all__ = ["dipole_equatorial_b", "dipole_vertical_b", "dipole_horizontal_b", "d
            "dipole_inclination", "dipole_b", "earth_dipole_moment_vector", "dipole_elements", "dipole_ned_b", "field_elements",
            "dipole_shell", "dipole_field_line", "dipole_from_gauss_coefficients", "dipole_mean_surface_b",
            "dipole_rms_surface_b", "lowes_spectrum"]
+
+#: The dipole and the place, described once for every function that takes them (each checks
+#: the ranges these texts give).
+_DIPOLE_PARAMETERS = {
+    "geomagnetic_latitude": """geomagnetic_latitude : array_like
+    Geomagnetic latitude Φ [rad], in [−π/2, π/2].""",
+    "moment": """moment : array_like
+    Dipole moment magnitude M [A·m²], > 0.""",
+    "radius": """radius : array_like
+    Distance from the Earth's centre R [m], > 0.""",
+    "latitude": """latitude : array_like
+    Geographic latitude of the place [rad], in [−π/2, π/2].""",
+    "longitude": """longitude : array_like
+    Geographic longitude of the place, east positive [rad].""",
+    "pole_latitude": """pole_latitude : array_like
+    Geographic latitude of the northern geomagnetic pole [rad].""",
+    "pole_longitude": """pole_longitude : array_like
+    Geographic longitude of the northern geomagnetic pole, east positive [rad].""",
+}
+_document_dipole = fill_docstring(_DIPOLE_PARAMETERS)
 
 
 def dipole_equatorial_b(moment, radius):
@@ -54,17 +75,13 @@ def dipole_equatorial_b(moment, radius):
     return MU_0 * m / (4.0 * np.pi * r**3)
 
 
+@_document_dipole
 def dipole_vertical_b(geomagnetic_latitude, moment, radius):
     r"""Downward (vertical) component Z of a centred dipole's field.
 
     Parameters
     ----------
-    geomagnetic_latitude : array_like
-        Geomagnetic latitude Φ [rad].
-    moment : array_like
-        Dipole moment magnitude M_З [A·m²].
-    radius : array_like
-        Distance from the centre R [m].
+    {geomagnetic_latitude, moment, radius}
 
     Returns
     -------
@@ -83,17 +100,13 @@ def dipole_vertical_b(geomagnetic_latitude, moment, radius):
     return 2.0 * dipole_equatorial_b(moment, radius) * np.sin(lat)
 
 
+@_document_dipole
 def dipole_horizontal_b(geomagnetic_latitude, moment, radius):
     r"""Horizontal component H of a centred dipole's field (towards geomagnetic north).
 
     Parameters
     ----------
-    geomagnetic_latitude : array_like
-        Geomagnetic latitude Φ [rad].
-    moment : array_like
-        Dipole moment magnitude M_З [A·m²].
-    radius : array_like
-        Distance from the centre R [m].
+    {geomagnetic_latitude, moment, radius}
 
     Returns
     -------
@@ -108,17 +121,13 @@ def dipole_horizontal_b(geomagnetic_latitude, moment, radius):
     return dipole_equatorial_b(moment, radius) * np.cos(lat)
 
 
+@_document_dipole
 def dipole_total_b(geomagnetic_latitude, moment, radius):
     r"""Magnitude T of a centred dipole's field.
 
     Parameters
     ----------
-    geomagnetic_latitude : array_like
-        Geomagnetic latitude Φ [rad].
-    moment : array_like
-        Dipole moment magnitude M_З [A·m²].
-    radius : array_like
-        Distance from the centre R [m].
+    {geomagnetic_latitude, moment, radius}
 
     Returns
     -------
@@ -141,13 +150,13 @@ def dipole_total_b(geomagnetic_latitude, moment, radius):
     return dipole_equatorial_b(moment, radius) * np.sqrt(1.0 + 3.0 * np.sin(lat) ** 2)
 
 
+@_document_dipole
 def dipole_inclination(geomagnetic_latitude):
     r"""Magnetic inclination (dip) J of a centred dipole's field.
 
     Parameters
     ----------
-    geomagnetic_latitude : array_like
-        Geomagnetic latitude Φ [rad].
+    {geomagnetic_latitude}
 
     Returns
     -------
@@ -212,17 +221,13 @@ def dipole_b(points, moment):
     return MU_0 / (4.0 * np.pi) * (3.0 * mdotr * rhat - m) / r**3
 
 
+@_document_dipole
 def earth_dipole_moment_vector(moment, pole_latitude, pole_longitude):
     r"""Earth's dipole moment as an Earth-fixed vector.
 
     Parameters
     ----------
-    moment : array_like
-        Dipole moment magnitude M_З [A·m²].
-    pole_latitude : array_like
-        Geographic latitude of the northern geomagnetic pole [rad].
-    pole_longitude : array_like
-        Geographic longitude of the northern geomagnetic pole, east positive [rad].
+    {moment, pole_latitude, pole_longitude}
 
     Returns
     -------
@@ -241,23 +246,13 @@ def earth_dipole_moment_vector(moment, pole_latitude, pole_longitude):
     return -m[..., None] * _unit_vector(plat, plon)
 
 
+@_document_dipole
 def dipole_elements(latitude, longitude, moment, pole_latitude, pole_longitude, radius):
     r"""Total, horizontal and vertical field and inclination of a tilted centred dipole at a place.
 
     Parameters
     ----------
-    latitude : array_like
-        Geographic latitude of the place [rad], in [−π/2, π/2].
-    longitude : array_like
-        Geographic longitude of the place, east positive [rad].
-    moment : array_like
-        Dipole moment M [A·m²], > 0.
-    pole_latitude : array_like
-        Geographic latitude of the northern geomagnetic pole [rad].
-    pole_longitude : array_like
-        Geographic longitude of the northern geomagnetic pole, east positive [rad].
-    radius : array_like
-        Distance from the Earth's centre [m], > 0.
+    {latitude, longitude, moment, pole_latitude, pole_longitude, radius}
 
     Returns
     -------
@@ -289,23 +284,13 @@ def _ned_basis(latitude, longitude):
     return np.array([[-sl * co, -sl * so, cl], [-so, co, 0.0], [-cl * co, -cl * so, -sl]])
 
 
+@_document_dipole
 def dipole_ned_b(latitude, longitude, moment, pole_latitude, pole_longitude, radius):
     r"""Field of the Earth's tilted centred dipole at a place, in the local north-east-down frame.
 
     Parameters
     ----------
-    latitude : float
-        Geographic latitude of the place [rad], in [−π/2, π/2].
-    longitude : float
-        Geographic longitude of the place, east positive [rad].
-    moment : float
-        Dipole moment magnitude M [A·m²], > 0.
-    pole_latitude : float
-        Geographic latitude of the northern geomagnetic pole [rad].
-    pole_longitude : float
-        Geographic longitude of the northern geomagnetic pole, east positive [rad].
-    radius : float
-        Distance of the place from the Earth's centre [m], > 0.
+    {latitude, longitude, moment, pole_latitude, pole_longitude, radius : float}
 
     Returns
     -------

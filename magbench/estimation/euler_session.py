@@ -19,6 +19,7 @@ import time as _time
 
 import numpy as np
 
+from .._docstrings import fill_docstring
 from .._validate import (as_axisymmetric_inertias, as_count, as_finite, as_nonnegative, as_positive_scalar,
                          as_vectors, shown)
 
@@ -32,6 +33,24 @@ SESSION_CONSTANTS = ("angular_momentum", "nutation", "precession0", "proper_rota
 #: Candidates per model evaluation in a grid search: bounds the memory of one (chunk, sensors,
 #: samples) array to a few tens of MB at a session's few thousand samples.
 _CHUNK = 2048
+
+#: A session's inputs and a fit's result, described once for every function that takes or
+#: returns them.
+_SESSION_DOCS = {
+    "time": """time : array_like, shape (n,)
+    Times of the session [s].""",
+    "signals": """signals : array_like, shape (k, n)
+    Measured signals [-].""",
+    "normals": """normals : array_like, shape (k, 3)
+    Unit sensor normals in body axes (z the symmetry axis) [-].""",
+    "inertias": """transverse_inertia, axial_inertia : float
+    A, C (> 0, C ≤ 2A) [kg·m²].""",
+    "constants": """constants : array_like, shape (5,)
+    L [kg·m²/s], θ, ψ0, φ0, σ [rad].""",
+    "fit": """dict
+    ``method``, ``params`` (5,) [SI], ``rms`` [-], ``evaluations``, ``seconds`` [s].""",
+}
+_document_session = fill_docstring(_SESSION_DOCS)
 
 
 # --- the signal model ------------------------------------------------------------------------
@@ -75,6 +94,13 @@ def _inertias(transverse_inertia, axial_inertia):
     return a, c
 
 
+def _five_constants(constants):
+    p = as_finite("constants", constants)
+    if p.shape != (5,):
+        raise ValueError(f"constants must have shape (5,) (L, θ, ψ0, φ0, σ), got shape {p.shape}")
+    return p
+
+
 def _session(time, signals, normals):
     t = as_finite("time", time)
     s = as_finite("signals", signals)
@@ -86,20 +112,17 @@ def _session(time, signals, normals):
     return t, s
 
 
+@_document_session
 def euler_case_sun_signals(time, constants, normals, transverse_inertia, axial_inertia, *, start_time=0.0):
     r"""Sun-sensor signals of an axisymmetric body in Euler-case motion, the Sun alone (no albedo).
 
     Parameters
     ----------
-    time : array_like, shape (n,)
-        Times of the session [s].
+    {time}
     constants : array_like, shape (..., 5)
         L [kg·m²/s], θ [rad], ψ0 [rad], φ0 [rad], σ (Sun angle from L) [rad]
         (:data:`SESSION_CONSTANTS`); leading axes are candidates evaluated at once.
-    normals : array_like, shape (k, 3)
-        Unit normals of the sensors in body axes (z the symmetry axis) [-].
-    transverse_inertia, axial_inertia : float
-        A, C (> 0, C ≤ 2A) [kg·m²].
+    {normals, inertias}
     start_time : float, optional
         t0 [s].
 
@@ -127,6 +150,7 @@ def euler_case_sun_signals(time, constants, normals, transverse_inertia, axial_i
     return _signals(t, p, n, a, c, float(as_finite("start_time", start_time)))
 
 
+@_document_session
 def fold_start_time(constants, start_time, transverse_inertia, axial_inertia):
     r"""The same motion with t0 = 0: t0 folded into the phases ψ0 and φ0 (taken modulo 2π).
 
@@ -136,8 +160,7 @@ def fold_start_time(constants, start_time, transverse_inertia, axial_inertia):
         L [kg·m²/s], θ, ψ0, φ0, σ [rad] at the start time t0.
     start_time : float
         t0 [s].
-    transverse_inertia, axial_inertia : float
-        A, C [kg·m²].
+    {inertias}
 
     Returns
     -------
@@ -149,9 +172,7 @@ def fold_start_time(constants, start_time, transverse_inertia, axial_inertia):
     TNS-0 preprint §2 (L141–L157): ψ̇ = L/A and φ̇ = L cos θ (1/C − 1/A) are constant, so
     ψ(t) = ψ̇ (t − t0) + ψ0 = ψ̇ t + (ψ0 − ψ̇ t0), and likewise φ.
     """
-    p = as_finite("constants", constants)
-    if p.shape != (5,):
-        raise ValueError(f"constants must have shape (5,) (L, θ, ψ0, φ0, σ), got shape {p.shape}")
+    p = _five_constants(constants)
     a, c = _inertias(transverse_inertia, axial_inertia)
     t0 = float(as_finite("start_time", start_time))
     out = p.copy()
@@ -160,6 +181,7 @@ def fold_start_time(constants, start_time, transverse_inertia, axial_inertia):
     return out
 
 
+@_document_session
 def synthetic_session(constants, normals, transverse_inertia, axial_inertia, *, duration=60.0, rate=10.0, noise=0.01,
                       seed=0):
     """Sensor signals of known constants plus white noise: a session with a known answer.
@@ -168,10 +190,7 @@ def synthetic_session(constants, normals, transverse_inertia, axial_inertia, *, 
     ----------
     constants : array_like, shape (5,)
         The truth (:data:`SESSION_CONSTANTS`) [SI].
-    normals : array_like, shape (k, 3)
-        Unit sensor normals in body axes [-].
-    transverse_inertia, axial_inertia : float
-        A, C [kg·m²].
+    {normals, inertias}
     duration : float, optional
         Length, > 0 [s].
     rate : float, optional
@@ -201,6 +220,7 @@ def synthetic_session(constants, normals, transverse_inertia, axial_inertia, *, 
     return t, clean + noise * np.random.default_rng(seed).normal(size=clean.shape)
 
 
+@_document_session
 def session_rms(constants, time, signals, normals, transverse_inertia, axial_inertia):
     """Root-mean-square residual of candidate constants against a session's signals.
 
@@ -208,14 +228,7 @@ def session_rms(constants, time, signals, normals, transverse_inertia, axial_ine
     ----------
     constants : array_like, shape (..., 5)
         Candidates (:data:`SESSION_CONSTANTS`) [SI].
-    time : array_like, shape (n,)
-        [s].
-    signals : array_like, shape (k, n)
-        Measured signals [-].
-    normals : array_like, shape (k, 3)
-        Unit sensor normals in body axes [-].
-    transverse_inertia, axial_inertia : float
-        A, C [kg·m²].
+    {time, signals, normals, inertias}
 
     Returns
     -------
@@ -244,17 +257,13 @@ def _rms_chunked(candidates, time, signals, normals, a, c):
     return out
 
 
+@_document_session
 def momentum_bound(time, signals, transverse_inertia, axial_inertia):
     r"""L_max = 2π I_max/Δt, Δt the shortest interval between neighbouring signal peaks.
 
     Parameters
     ----------
-    time : array_like, shape (n,)
-        [s].
-    signals : array_like, shape (k, n)
-        [-].
-    transverse_inertia, axial_inertia : float
-        A, C [kg·m²].
+    {time, signals, inertias}
 
     Returns
     -------
@@ -310,6 +319,7 @@ def _checked(time, signals, normals, transverse_inertia, axial_inertia):
     return (t, s, n) + _inertias(transverse_inertia, axial_inertia)
 
 
+@_document_session
 def fit_nested_grid(time, signals, normals, transverse_inertia, axial_inertia, *, points=5, levels=4):
     """The preprint's method: a grid over the five constants, refined around the best point.
 
@@ -319,14 +329,7 @@ def fit_nested_grid(time, signals, normals, transverse_inertia, axial_inertia, *
 
     Parameters
     ----------
-    time : array_like, shape (n,)
-        [s].
-    signals : array_like, shape (k, n)
-        [-].
-    normals : array_like, shape (k, 3)
-        Unit sensor normals in body axes [-].
-    transverse_inertia, axial_inertia : float
-        A, C [kg·m²].
+    {time, signals, normals, inertias}
     points : int, optional
         Grid points per constant and level, >= 1 [-].
     levels : int, optional
@@ -334,8 +337,7 @@ def fit_nested_grid(time, signals, normals, transverse_inertia, axial_inertia, *
 
     Returns
     -------
-    dict
-        ``method``, ``params`` (5,) [SI], ``rms`` [-], ``evaluations``, ``seconds`` [s].
+    {fit}
 
     Notes
     -----
@@ -364,19 +366,13 @@ def fit_nested_grid(time, signals, normals, transverse_inertia, axial_inertia, *
     return _result("nested grid (preprint)", best, session, evaluations, _time.perf_counter() - start)
 
 
+@_document_session
 def fit_multistart(time, signals, normals, transverse_inertia, axial_inertia, *, starts=20, seed=0):
     """Local least squares (Levenberg–Marquardt) from random starts within the grid's bounds.
 
     Parameters
     ----------
-    time : array_like, shape (n,)
-        [s].
-    signals : array_like, shape (k, n)
-        [-].
-    normals : array_like, shape (k, 3)
-        Unit sensor normals in body axes [-].
-    transverse_inertia, axial_inertia : float
-        A, C [kg·m²].
+    {time, signals, normals, inertias}
     starts : int, optional
         Random starts, >= 1 [-].
     seed : int, optional
@@ -384,8 +380,7 @@ def fit_multistart(time, signals, normals, transverse_inertia, axial_inertia, *,
 
     Returns
     -------
-    dict
-        ``method``, ``params`` (5,) [SI], ``rms`` [-], ``evaluations``, ``seconds`` [s].
+    {fit}
 
     Notes
     -----
@@ -428,6 +423,7 @@ def _sensor_roles(normals):
     return int(axial[0]), int(transverse[0])
 
 
+@_document_session
 def fit_frequency_first(time, signals, normals, transverse_inertia, axial_inertia, *, phase_points=24,
                         sun_points=12):
     r"""Rates from the spectra, then the phases and σ on a grid, then a polish of all five.
@@ -441,13 +437,11 @@ def fit_frequency_first(time, signals, normals, transverse_inertia, axial_inerti
     Parameters
     ----------
     time : array_like, shape (n,)
-        Uniformly sampled [s].
-    signals : array_like, shape (k, n)
-        [-].
+        Times of the session, uniformly sampled [s].
+    {signals}
     normals : array_like, shape (k, 3)
         Unit sensor normals in body axes: one along +z and one with z component 0 [-].
-    transverse_inertia, axial_inertia : float
-        A, C [kg·m²].
+    {inertias}
     phase_points : int, optional
         Grid points of each phase in [0, 2π), >= 1 [-].
     sun_points : int, optional
@@ -455,8 +449,7 @@ def fit_frequency_first(time, signals, normals, transverse_inertia, axial_inerti
 
     Returns
     -------
-    dict
-        ``method``, ``params`` (5,) [SI], ``rms`` [-], ``evaluations``, ``seconds`` [s].
+    {fit}
 
     Notes
     -----
@@ -497,13 +490,13 @@ def fit_frequency_first(time, signals, normals, transverse_inertia, axial_inerti
 
 # --- what a fit can and cannot tell --------------------------------------------------------
 
+@_document_session
 def mirror_solution(constants):
     r"""The mirror solution (π − θ, −φ0, π − σ): the same signals for sensors in the body x–z plane.
 
     Parameters
     ----------
-    constants : array_like, shape (5,)
-        L [kg·m²/s], θ, ψ0, φ0, σ [rad].
+    {constants}
 
     Returns
     -------
@@ -516,9 +509,7 @@ def mirror_solution(constants):
     terms of s·R e_x and s·R e_z keep their values (their sign changes come in pairs) while
     s·R e_y changes sign, so no sensor in the body x–z plane can tell the two apart.
     """
-    p = as_finite("constants", constants).astype(float, copy=True)
-    if p.shape != (5,):
-        raise ValueError(f"constants must have shape (5,) (L, θ, ψ0, φ0, σ), got shape {p.shape}")
+    p = _five_constants(constants).astype(float, copy=True)
     p[1], p[3], p[4] = np.pi - p[1], np.mod(-p[3], 2 * np.pi), np.pi - p[4]
     return p
 
@@ -555,20 +546,14 @@ def session_recovered(fit, truth, *, momentum_rtol=0.01, angle_atol=0.02):
                     and abs(x[4] - t[4]) <= angle_atol for t in (truth, mirror_solution(truth))))
 
 
+@_document_session
 def session_identifiability(constants, time, normals, transverse_inertia, axial_inertia, *, start_time=0.0,
                             step=1e-6):
     r"""Singular values of the signals' Jacobian in (L, θ, ψ0, φ0, σ, t0), largest first.
 
     Parameters
     ----------
-    constants : array_like, shape (5,)
-        L [kg·m²/s], θ, ψ0, φ0, σ [rad].
-    time : array_like, shape (n,)
-        [s].
-    normals : array_like, shape (k, 3)
-        Unit sensor normals in body axes [-].
-    transverse_inertia, axial_inertia : float
-        A, C [kg·m²].
+    {constants, time, normals, inertias}
     start_time : float, optional
         t0 [s].
     step : float, optional
@@ -587,9 +572,7 @@ def session_identifiability(constants, time, normals, transverse_inertia, axial_
     """
     n = _normals(normals)
     a, c = _inertias(transverse_inertia, axial_inertia)
-    p = as_finite("constants", constants)
-    if p.shape != (5,):
-        raise ValueError(f"constants must have shape (5,) (L, θ, ψ0, φ0, σ), got shape {p.shape}")
+    p = _five_constants(constants)
     t = as_finite("time", time)
     step = as_positive_scalar("step", step)
     cols = []

@@ -27,6 +27,19 @@ def _nonnegative_scalar(name, value, unit=""):
     return v
 
 
+#: The tolerance of a uniform zone, as :func:`_tolerance` checks it (numpydoc entry for
+#: :func:`magbench._docstrings.fill_docstring`).
+TOLERANCE_DOC = """tolerance : float
+    Allowed relative deviation δ = | |B| − B0 | / B0 [-], in (0, 1)."""
+
+
+def _tolerance(tolerance):
+    tol = _positive_scalar("tolerance", tolerance)
+    if tol >= 1.0:
+        raise ValueError(f"tolerance must lie in (0, 1), got {shown(tol)}")
+    return tol
+
+
 def _unit_normal(normal):
     n = as_vectors("normal", normal)
     if n.shape != (3,):

@@ -6,11 +6,12 @@ make together at the bench (thesis §4.4). SI throughout.
 """
 
 import numpy as np
-from scipy import optimize
 
 from ..constants import MU_0
+from .._docstrings import fill_docstring
 from .._validate import as_finite, as_nonnegative, as_positive, as_vectors, shown
-from ._inputs import _center, _nonnegative_scalar, _positive_scalar
+from ._inputs import TOLERANCE_DOC, _center, _nonnegative_scalar, _tolerance
+from ._search import _crossing_after_scan
 from .loop import loop_b_posed
 from .square import square_loop_b
 
@@ -18,6 +19,26 @@ __all__ = ["SPHERE_DIRECTIONS", "three_axis_pair_b", "three_axis_pair_currents",
            "coaxial_system_b",
            "coaxial_system_sphere_nonuniformity", "coaxial_system_cylinder_nonuniformity",
            "coaxial_system_uniform_radius", "horizontal_field"]
+
+#: The three pairs and the coaxial systems, described once for every function that takes them.
+_SYSTEM_PARAMETERS = {
+    "radii": """radii : array_like, shape (3,) or scalar
+    Coil radius of each pair [m], > 0.""",
+    "separations": """separations : array_like, shape (3,) or scalar
+    Distance between the coil planes of each pair [m], > 0.""",
+    "turns": """turns : array_like, shape (3,) or scalar
+    Turns per coil of each pair [-], > 0.""",
+    "shapes": """shapes : sequence of {"round", "square"}
+    Shape of each coil [-].""",
+    "sizes": """sizes : array_like, shape (n,)
+    Radius of each round coil, side of each square [m], > 0.""",
+    "positions": """positions : array_like, shape (n,)
+    z of each coil's plane [m].""",
+    "ampere_turns": """ampere_turns : array_like, shape (n,)
+    N·I of each coil [A] (sign gives the sense).""",
+    "tolerance": TOLERANCE_DOC,
+}
+_document_system = fill_docstring(_SYSTEM_PARAMETERS)
 
 
 def _pair_axes(axes):
@@ -38,6 +59,7 @@ def _three(name, value, unit):
     return arr
 
 
+@_document_system
 def three_axis_pair_b(points, currents, radii, separations, turns, axes=np.eye(3)):
     r"""Flux density of three coaxial coil pairs centred on the origin.
 
@@ -47,12 +69,7 @@ def three_axis_pair_b(points, currents, radii, separations, turns, axes=np.eye(3
         Observation points [m].
     currents : array_like, shape (3,)
         Current in each coil of pair k [A] (both coils of a pair carry it).
-    radii : array_like, shape (3,) or scalar
-        Coil radius of each pair [m], > 0.
-    separations : array_like, shape (3,) or scalar
-        Distance between the coil planes of each pair [m], > 0.
-    turns : array_like, shape (3,) or scalar
-        Turns per coil of each pair [-], > 0.
+    {radii, separations, turns}
     axes : array_like, shape (3, 3), optional
         Row k is the axis of pair k [-] (any non-zero length); default x, y, z.
 
@@ -92,6 +109,7 @@ def three_axis_pair_b(points, currents, radii, separations, turns, axes=np.eye(3
     return out
 
 
+@_document_system
 def three_axis_pair_currents(target_b, background_b, radii, separations, turns, axes=np.eye(3),
                              point=(0.0, 0.0, 0.0)):
     r"""Currents of three coil pairs that make the total field at a point equal a target.
@@ -102,12 +120,7 @@ def three_axis_pair_currents(target_b, background_b, radii, separations, turns, 
         Wanted total flux density at ``point`` [T] (zero cancels the background).
     background_b : array_like, shape (3,)
         Uniform background flux density, e.g. the Earth's field in the laboratory [T].
-    radii : array_like, shape (3,) or scalar
-        Coil radius of each pair [m], > 0.
-    separations : array_like, shape (3,) or scalar
-        Distance between the coil planes of each pair [m], > 0.
-    turns : array_like, shape (3,) or scalar
-        Turns per coil of each pair [-], > 0.
+    {radii, separations, turns}
     axes : array_like, shape (3, 3), optional
         Row k is the axis of pair k [-]; need not be orthogonal, but must span space.
     point : array_like, shape (3,), optional
@@ -145,6 +158,7 @@ def three_axis_pair_currents(target_b, background_b, radii, separations, turns, 
     return np.linalg.solve(coupling, target - background)
 
 
+@_document_system
 def three_axis_uniform_radius(currents, radii, separations, turns, background_b, target_b, tolerance,
                               axes=np.eye(3)):
     r"""Radius of the largest centred sphere in which three coil pairs and a background
@@ -154,12 +168,7 @@ def three_axis_uniform_radius(currents, radii, separations, turns, background_b,
     ----------
     currents : array_like, shape (3,)
         Current per coil of each pair [A] (e.g. from :func:`three_axis_pair_currents`).
-    radii : array_like, shape (3,) or scalar
-        Coil radius of each pair [m], > 0.
-    separations : array_like, shape (3,) or scalar
-        Distance between the coil planes of each pair [m], > 0.
-    turns : array_like, shape (3,) or scalar
-        Turns per coil of each pair [-], > 0.
+    {radii, separations, turns}
     background_b : array_like, shape (3,)
         Uniform background flux density [T].
     target_b : array_like, shape (3,)
@@ -200,9 +209,7 @@ def three_axis_uniform_radius(currents, radii, separations, turns, background_b,
     background = as_vectors("background_b", background_b)
     if target.shape != (3,) or background.shape != (3,):
         raise ValueError("target_b and background_b must be single 3-vectors")
-    tol = _positive_scalar("tolerance", tolerance)
-    if tol >= 1.0:
-        raise ValueError(f"tolerance must lie in (0, 1), got {shown(tol)}")
+    tol = _tolerance(tolerance)
     reference = float(np.linalg.norm(target)) or float(np.linalg.norm(background))
     if reference == 0.0:
         raise ValueError("target_b and background_b must not both be zero (no field to compare with)")
@@ -214,12 +221,7 @@ def three_axis_uniform_radius(currents, radii, separations, turns, background_b,
 
     grid = np.linspace(0.0, s_max, 81)[1:]
     values = np.array([dev(s) for s in grid])
-    above = np.flatnonzero(values > tol)
-    if above.size == 0:
-        return s_max
-    j = above[0]
-    lo = grid[j - 1] if j > 0 else 0.0
-    return float(optimize.brentq(lambda s: dev(s) - tol, lo, grid[j], xtol=1e-7))
+    return float(_crossing_after_scan(dev, tol, grid, values, s_max, xtol=1e-7))
 
 
 _SHAPES = ("round", "square")
@@ -240,6 +242,7 @@ def _system(shapes, sizes, positions, ampere_turns):
     return shapes, sz, pos, ni
 
 
+@_document_system
 def coaxial_system_b(points, shapes, sizes, positions, ampere_turns):
     r"""Flux density of a system of coaxial circular and square coils on the z axis.
 
@@ -247,14 +250,7 @@ def coaxial_system_b(points, shapes, sizes, positions, ampere_turns):
     ----------
     points : array_like, shape (..., 3)
         Observation points [m].
-    shapes : sequence of {"round", "square"}
-        Shape of each coil [-].
-    sizes : array_like, shape (n,)
-        Radius of each round coil, side of each square [m], > 0.
-    positions : array_like, shape (n,)
-        z of each coil's plane [m].
-    ampere_turns : array_like, shape (n,)
-        N·I of each coil [A] (sign gives the sense).
+    {shapes, sizes, positions, ampere_turns}
 
     Returns
     -------
@@ -314,19 +310,13 @@ def _system_deviation(points, system):
     return np.abs(b / b0 - 1.0)
 
 
+@_document_system
 def coaxial_system_sphere_nonuniformity(shapes, sizes, positions, ampere_turns, sphere_radius):
     r"""Largest deviation of |B| from its centre value inside a centred sphere.
 
     Parameters
     ----------
-    shapes : sequence of {"round", "square"}
-        Shape of each coil [-].
-    sizes : array_like, shape (n,)
-        Radius of each round coil, side of each square [m], > 0.
-    positions : array_like, shape (n,)
-        z of each coil's plane [m].
-    ampere_turns : array_like, shape (n,)
-        N·I of each coil [A].
+    {shapes, sizes, positions, ampere_turns}
     sphere_radius : float
         Radius of the sphere [m], >= 0, inside the coils.
 
@@ -354,20 +344,14 @@ def coaxial_system_sphere_nonuniformity(shapes, sizes, positions, ampere_turns, 
     return float(_system_deviation(pts.reshape(-1, 3), system).max())
 
 
+@_document_system
 def coaxial_system_cylinder_nonuniformity(shapes, sizes, positions, ampere_turns, cylinder_radius,
                                           cylinder_length):
     r"""Largest deviation of |B| from its centre value inside a centred coaxial cylinder.
 
     Parameters
     ----------
-    shapes : sequence of {"round", "square"}
-        Shape of each coil [-].
-    sizes : array_like, shape (n,)
-        Radius of each round coil, side of each square [m], > 0.
-    positions : array_like, shape (n,)
-        z of each coil's plane [m].
-    ampere_turns : array_like, shape (n,)
-        N·I of each coil [A].
+    {shapes, sizes, positions, ampere_turns}
     cylinder_radius : float
         Radius of the cylinder [m], >= 0.
     cylinder_length : float
@@ -400,21 +384,13 @@ def coaxial_system_cylinder_nonuniformity(shapes, sizes, positions, ampere_turns
     return float(_system_deviation(pts, system).max())
 
 
+@_document_system
 def coaxial_system_uniform_radius(shapes, sizes, positions, ampere_turns, tolerance):
     r"""Radius of the largest centred sphere in which |B| stays within a tolerance.
 
     Parameters
     ----------
-    shapes : sequence of {"round", "square"}
-        Shape of each coil [-].
-    sizes : array_like, shape (n,)
-        Radius of each round coil, side of each square [m], > 0.
-    positions : array_like, shape (n,)
-        z of each coil's plane [m].
-    ampere_turns : array_like, shape (n,)
-        N·I of each coil [A].
-    tolerance : float
-        Allowed deviation δ = | |B| − B0 | / B0 [-], in (0, 1).
+    {shapes, sizes, positions, ampere_turns, tolerance}
 
     Returns
     -------
@@ -435,9 +411,7 @@ def coaxial_system_uniform_radius(shapes, sizes, positions, ampere_turns, tolera
     0.314
     """
     system = _system(shapes, sizes, positions, ampere_turns)
-    tol = _positive_scalar("tolerance", tolerance)
-    if tol >= 1.0:
-        raise ValueError(f"tolerance must lie in (0, 1), got {shown(tol)}")
+    tol = _tolerance(tolerance)
     shapes_, sz, pos, _ = system
     # The nearest wire: a round coil's wire is at distance hypot(r, z); a square's sides at
     # hypot(side/2, z). Stop short of it.
@@ -450,12 +424,7 @@ def coaxial_system_uniform_radius(shapes, sizes, positions, ampere_turns, tolera
         return _system_deviation(pts.reshape(-1, 3), system).reshape(s.size, -1).max(axis=-1).reshape(s.shape)
 
     grid = np.linspace(0.0, s_max, 121)[1:]
-    above = np.flatnonzero(dev(grid) > tol)
-    if above.size == 0:
-        return s_max
-    j = above[0]
-    lo = grid[j - 1] if j > 0 else 0.0
-    return float(optimize.brentq(lambda t: float(dev(t)) - tol, lo, grid[j], xtol=1e-10))
+    return float(_crossing_after_scan(dev, tol, grid, dev(grid), s_max, xtol=1e-10))
 
 
 def horizontal_field(simulator_h, background_h=0.0, background_azimuth=0.0):

@@ -9,12 +9,30 @@ import math
 import numpy as np
 from scipy import optimize
 
-from ._inputs import _nonnegative_scalar, _positive_scalar
+from ._inputs import TOLERANCE_DOC, _nonnegative_scalar, _positive_scalar, _tolerance
+from ._search import _crossing_after_scan
 from .loop import _coaxial_unit
+from .._docstrings import fill_docstring
 from .._validate import shown
 
 __all__ = ["sphere_nonuniformity", "cylinder_nonuniformity", "uniform_sphere_radius", "uniform_cylinder",
            "optimal_separation", "pair_distance_to_h", "uniform_zone_length", "zone_tolerance_for_length"]
+
+#: The pair and the tolerance, described once for every function that takes them.
+_PAIR_PARAMETERS = {
+    "radius": """radius : float
+    Coil radius a [m], > 0.""",
+    "separation": """separation : float
+    Distance between the coil planes d [m], >= 0.""",
+    "tolerance": TOLERANCE_DOC,
+}
+_document_pair = fill_docstring(_PAIR_PARAMETERS)
+
+
+def _pair(radius, separation):
+    """The checked radius a and separation d [m] of a symmetric pair."""
+    return (_positive_scalar("radius", radius, unit="m"),
+            _nonnegative_scalar("separation", separation, unit="m"))
 
 
 def _pair_deviation(rho, z, separation_ratio):
@@ -62,23 +80,22 @@ def _first_crossing(f, tol, s_max):
     ``f`` is vectorised over s.
     """
     grid = _SCAN * s_max
-    above = np.flatnonzero(f(grid) > tol)
-    if above.size == 0:
-        return s_max
-    j = above[0]
-    lo = grid[j - 1] if j > 0 else 0.0
-    return optimize.brentq(lambda t: float(f(t)) - tol, lo, grid[j], xtol=1e-12 * s_max, rtol=1e-13)
+    return _crossing_after_scan(f, tol, grid, f(grid), s_max, xtol=1e-12 * s_max, rtol=1e-13)
 
 
+def _uniform_sphere(ratio, tol):
+    """Radius, in coil radii, of the largest sphere within ``tol`` for the separation ratio d/a."""
+    s_wire = math.hypot(1.0, ratio / 2.0)
+    return _first_crossing(lambda s: _sphere_boundary_dev(s, ratio), tol, s_wire)
+
+
+@_document_pair
 def sphere_nonuniformity(radius, separation, sphere_radius):
     r"""Largest relative deviation of |B| from its centre value on a centred sphere.
 
     Parameters
     ----------
-    radius : float
-        Coil radius a [m], > 0.
-    separation : float
-        Distance between the coil planes d [m], >= 0.
+    {radius, separation}
     sphere_radius : float
         Radius of the sphere [m], >= 0 and inside the coils' wires.
 
@@ -99,8 +116,7 @@ def sphere_nonuniformity(radius, separation, sphere_radius):
     >>> float(sphere_nonuniformity(0.5, 0.51, 0.10)) < 0.005
     True
     """
-    a = _positive_scalar("radius", radius, unit="m")
-    d = _nonnegative_scalar("separation", separation, unit="m")
+    a, d = _pair(radius, separation)
     s = _nonnegative_scalar("sphere_radius", sphere_radius, unit="m")
     wire = np.hypot(a, d / 2.0)      # distance from the centre to every point of both wires
     if s >= wire:
@@ -109,15 +125,13 @@ def sphere_nonuniformity(radius, separation, sphere_radius):
     return float(_sphere_boundary_dev(s / a, d / a))
 
 
+@_document_pair
 def cylinder_nonuniformity(radius, separation, cylinder_radius, cylinder_length):
     r"""Largest relative deviation of |B| from its centre value in a coaxial cylinder.
 
     Parameters
     ----------
-    radius : float
-        Coil radius a [m], > 0.
-    separation : float
-        Distance between the coil planes d [m], >= 0.
+    {radius, separation}
     cylinder_radius : float
         Radius of the centred coaxial cylinder [m], >= 0.
     cylinder_length : float
@@ -140,8 +154,7 @@ def cylinder_nonuniformity(radius, separation, cylinder_radius, cylinder_length)
     >>> round(100 * float(cylinder_nonuniformity(1.0, 1.0, 0.1, 0.2)), 4)
     0.0186
     """
-    a = _positive_scalar("radius", radius, unit="m")
-    d = _nonnegative_scalar("separation", separation, unit="m")
+    a, d = _pair(radius, separation)
     c = _nonnegative_scalar("cylinder_radius", cylinder_radius, unit="m") / a
     h = _nonnegative_scalar("cylinder_length", cylinder_length, unit="m") / (2.0 * a)
     g = np.linspace(0.0, 1.0, 101)
@@ -155,17 +168,13 @@ def cylinder_nonuniformity(radius, separation, cylinder_radius, cylinder_length)
     return max(inner, edge)
 
 
+@_document_pair
 def uniform_sphere_radius(radius, separation, tolerance):
     r"""Radius of the largest centred sphere in which |B| stays within a tolerance.
 
     Parameters
     ----------
-    radius : float
-        Coil radius a [m], > 0.
-    separation : float
-        Distance between the coil planes d [m], >= 0.
-    tolerance : float
-        Allowed relative deviation δ = | |B| − B0 | / B0 [-], in (0, 1).
+    {radius, separation, tolerance}
 
     Returns
     -------
@@ -184,27 +193,18 @@ def uniform_sphere_radius(radius, separation, tolerance):
     >>> round(float(uniform_sphere_radius(1.0, 1.0, 0.01)), 3)   # Helmholtz, δ = 1 %
     0.314
     """
-    a = _positive_scalar("radius", radius, unit="m")
-    d = _nonnegative_scalar("separation", separation, unit="m")
-    tol = _positive_scalar("tolerance", tolerance)
-    if tol >= 1.0:
-        raise ValueError(f"tolerance must lie in (0, 1), got {shown(tol)}")
-    ratio = d / a
-    s_wire = math.hypot(1.0, ratio / 2.0)
-    return a * _first_crossing(lambda s: _sphere_boundary_dev(s, ratio), tol, s_wire)
+    a, d = _pair(radius, separation)
+    tol = _tolerance(tolerance)
+    return a * _uniform_sphere(d / a, tol)
 
 
+@_document_pair
 def uniform_cylinder(radius, separation, tolerance, aspect=1.0):
     r"""Largest centred coaxial cylinder of a given shape in which |B| stays within a tolerance.
 
     Parameters
     ----------
-    radius : float
-        Coil radius a [m], > 0.
-    separation : float
-        Distance between the coil planes d [m], >= 0.
-    tolerance : float
-        Allowed relative deviation δ [-], in (0, 1).
+    {radius, separation, tolerance}
     aspect : float, optional
         Length / diameter of the cylinder [-], > 0 (1 is Kovalenko's 0.2a × 0.1a).
 
@@ -224,11 +224,8 @@ def uniform_cylinder(radius, separation, tolerance, aspect=1.0):
     >>> c > 0.1 and length == 2 * c
     True
     """
-    a = _positive_scalar("radius", radius, unit="m")
-    d = _nonnegative_scalar("separation", separation, unit="m")
-    tol = _positive_scalar("tolerance", tolerance)
-    if tol >= 1.0:
-        raise ValueError(f"tolerance must lie in (0, 1), got {shown(tol)}")
+    a, d = _pair(radius, separation)
+    tol = _tolerance(tolerance)
     k = _positive_scalar("aspect", aspect)
     ratio = d / a
     # The cylinder's rim (ρ = c, z = k c) reaches the wire (1, ratio/2) at the latest
@@ -238,13 +235,13 @@ def uniform_cylinder(radius, separation, tolerance, aspect=1.0):
     return a * c, 2.0 * k * a * c
 
 
+@_document_pair
 def optimal_separation(radius, tolerance):
     r"""Coil spacing that maximises the centred sphere of uniform |B|.
 
     Parameters
     ----------
-    radius : float
-        Coil radius a [m], > 0.
+    {radius}
     tolerance : float
         Allowed relative deviation δ [-], in (0, 0.5].
 
@@ -273,17 +270,13 @@ def optimal_separation(radius, tolerance):
     if tol > 0.5:
         raise ValueError(f"tolerance must lie in (0, 0.5], got {shown(tol)}")
 
-    def size(ratio):
-        s_wire = math.hypot(1.0, ratio / 2.0)
-        return _first_crossing(lambda s: _sphere_boundary_dev(s, ratio), tol, s_wire)
-
     ratios = np.arange(0.9, 1.3 + 1e-9, 0.01)
-    sizes = np.array([size(r) for r in ratios])
+    sizes = np.array([_uniform_sphere(r, tol) for r in ratios])
     j = int(np.argmax(sizes))
     if j == len(ratios) - 1 or j == 0:
         raise ValueError(f"tolerance {shown(tol)} puts the optimum outside d/a in [0.9, 1.3]")
     best = optimize.minimize_scalar(
-        lambda r: -size(r), bounds=(ratios[j - 1], ratios[j + 1]), method="bounded",
+        lambda r: -_uniform_sphere(r, tol), bounds=(ratios[j - 1], ratios[j + 1]), method="bounded",
         options={"xatol": 1e-7},
     )
     return a * float(best.x)
@@ -301,6 +294,7 @@ def _line_deviation(direction, ratio):
     return lambda s: _pair_deviation(s, 0.0 * np.asarray(s, dtype=float), ratio)
 
 
+@_document_pair
 def pair_distance_to_h(center_fraction, radius, separation, direction):
     r"""Distance from the midpoint of a coil pair at which |B| first falls to a fraction
     of its centre value, along the axis or along a line in the mid-plane.
@@ -309,8 +303,7 @@ def pair_distance_to_h(center_fraction, radius, separation, direction):
     ----------
     center_fraction : float
         |B| / |B(centre)| to reach [-], in (0, 1).
-    radius : float
-        Coil radius a [m], > 0.
+    {radius}
     separation : float
         Distance between the coil planes d [m], > 0.
     direction : {"axial", "transverse"}
@@ -356,17 +349,13 @@ def pair_distance_to_h(center_fraction, radius, separation, direction):
     return a * _first_crossing(dev, 1.0 - frac, 3.0)
 
 
+@_document_pair
 def uniform_zone_length(radius, separation, tolerance, direction):
     r"""Length of the uniform stretch of a line through the centre of a coil pair.
 
     Parameters
     ----------
-    radius : float
-        Coil radius a [m], > 0.
-    separation : float
-        Distance between the coil planes d [m], >= 0.
-    tolerance : float
-        Allowed deviation δ = | |B| − B0 | / B0 [-], in (0, 1).
+    {radius, separation, tolerance}
     direction : {"axial", "transverse"}
         The coil axis (thesis Fig. 7) or a line through the centre parallel to the coil
         planes (thesis Fig. 6) [-].
@@ -388,24 +377,19 @@ def uniform_zone_length(radius, separation, tolerance, direction):
     >>> round(float(uniform_zone_length(0.5, 0.5, 0.01, "axial")), 3)
     0.314
     """
-    a = _positive_scalar("radius", radius, unit="m")
-    d = _nonnegative_scalar("separation", separation, unit="m")
-    tol = _positive_scalar("tolerance", tolerance)
-    if tol >= 1.0:
-        raise ValueError(f"tolerance must lie in (0, 1), got {shown(tol)}")
+    a, d = _pair(radius, separation)
+    tol = _tolerance(tolerance)
     dev = _line_deviation(direction, d / a)
     return 2.0 * a * _first_crossing(dev, tol, 3.0)
 
 
+@_document_pair
 def zone_tolerance_for_length(radius, separation, length, direction, tolerances):
     r"""Smallest tolerance band whose uniform zone on a line through a coil pair reaches a length.
 
     Parameters
     ----------
-    radius : float
-        Coil radius a [m], > 0.
-    separation : float
-        Distance between the coil planes d [m], >= 0.
+    {radius, separation}
     length : float
         Zone length to reach [m], > 0 (e.g. one read off a plot).
     direction : {"axial", "transverse"}
@@ -434,8 +418,7 @@ def zone_tolerance_for_length(radius, separation, length, direction, tolerances)
     >>> round(t, 4)
     0.01
     """
-    a = _positive_scalar("radius", radius, unit="m")
-    d = _nonnegative_scalar("separation", separation, unit="m")
+    a, d = _pair(radius, separation)
     target = _positive_scalar("length", length, unit="m")
     tol = np.asarray(tolerances, dtype=float)
     if tol.ndim != 1 or tol.size < 2 or np.any(~np.isfinite(tol)) or np.any(np.diff(tol) <= 0):

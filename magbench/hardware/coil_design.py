@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 
+from .._docstrings import fill_docstring
 from .._validate import as_nonnegative, as_positive, shown
 from .coil_sizing import _RTOL
 from .turn import _check_shape, turn_area, turn_length
@@ -61,9 +62,7 @@ _PARAMETERS_DOC = """    Parameters
 """
 
 
-def _document_parameters(func):
-    func.__doc__ = func.__doc__.replace("{parameters}", _PARAMETERS_DOC)
-    return func
+_document_parameters = fill_docstring({"parameters": _PARAMETERS_DOC})
 
 
 _COLUMNS = ("turns", "wire_diameter", "wire_area", "resistance", "current", "power", "mass", "moment",
@@ -218,7 +217,9 @@ def coil_designs(moment, voltage, side, shape, max_power, max_mass, wire_diamete
     its moment is at least ``moment``, W ≤ ``max_power`` and M ≤ ``max_mass`` (and, with
     ``require_fit``, when its winding fits).
 
-{parameters}    Returns
+    {parameters}
+
+    Returns
     -------
     dict of str to ndarray
         One array entry per feasible design, ordered by wire diameter then turns:
@@ -240,7 +241,9 @@ def binding_limit(moment, voltage, side, shape, max_power, max_mass, wire_diamet
     (26)/(30), M·W = 16ρρ̃m²/l², is independent of N and U, so with the thinnest adequate
     wire it must not exceed M_max·W_max.
 
-{parameters}    Returns
+    {parameters}
+
+    Returns
     -------
     tuple of (str, dict) or None
         None when a design exists; else the kind (``"moment"``, ``"power and mass"``,
@@ -282,7 +285,9 @@ def design_magnetorquer(
     when its moment is at least ``moment``, W ≤ ``max_power`` and M ≤ ``max_mass``; every
     integer N for every listed wire is tried.
 
-{parameters}    Returns
+    {parameters}
+
+    Returns
     -------
     dict
         The table of :func:`coil_designs` (``"pitch"``: d + 2t or the overall diameter;

@@ -11,6 +11,7 @@ import math
 import numpy as np
 
 from .._validate import as_finite, as_positive, shown
+from ._parameters import document_coil
 from .magnetorquer import coil_mass_for_moment, joule_power_for_moment, turn_resistance
 from .turn import turn_length, wire_area
 
@@ -22,25 +23,13 @@ __all__ = ["turns_per_volt_bounds", "turns_from_resistance", "wire_diameter_from
 _RTOL = 1e-12
 
 
+@document_coil
 def turns_per_volt_bounds(moment, side, max_power, max_mass, resistivity, density, shape="round"):
     r"""Range of turns per volt N/U allowed by a power limit and a mass limit.
 
     Parameters
     ----------
-    moment : array_like
-        Required dipole moment m [A·m²].
-    side : array_like
-        Turn diameter (round) or side (square) l [m].
-    max_power : array_like
-        Joule power limit W_max [W].
-    max_mass : array_like
-        Conductor mass limit M_max [kg].
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m].
-    density : array_like
-        Conductor density ρ̃ [kg/m³].
-    shape : {"round", "square"}, optional
-        Turn shape [-].
+    {moment, side, max_power, max_mass, resistivity, density, shape}
 
     Returns
     -------
@@ -68,21 +57,13 @@ def turns_per_volt_bounds(moment, side, max_power, max_mass, resistivity, densit
     return power_coef / w_max, m_max / mass_coef
 
 
+@document_coil
 def turns_from_resistance(resistance, side, wire_area, resistivity, shape="round"):
     r"""Number of turns that gives a coil a given resistance.
 
     Parameters
     ----------
-    resistance : array_like
-        Coil resistance R [Ω].
-    side : array_like
-        Turn diameter (round) or side (square) l [m].
-    wire_area : array_like
-        Conductor cross-section S_r [m²].
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m].
-    shape : {"round", "square"}, optional
-        Turn shape [-].
+    {resistance, side, wire_area, resistivity, shape}
 
     Returns
     -------
@@ -103,21 +84,13 @@ def turns_from_resistance(resistance, side, wire_area, resistivity, shape="round
     return r / turn_resistance(side, wire_area, resistivity, shape)
 
 
+@document_coil
 def wire_diameter_from_resistance(resistance, turns, side, resistivity, shape="round"):
     r"""Bare wire diameter that gives a coil of N turns a given resistance.
 
     Parameters
     ----------
-    resistance : array_like
-        Coil resistance R [Ω].
-    turns : array_like
-        Number of turns N [-].
-    side : array_like
-        Turn diameter (round) or side (square) l [m].
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m].
-    shape : {"round", "square"}, optional
-        Turn shape [-].
+    {resistance, turns, side, resistivity, shape}
 
     Returns
     -------
@@ -211,27 +184,13 @@ def winding_band(turns, side, wire_pitch):
     return layers, math.ceil(n / layers) * pitch
 
 
+@document_coil
 def wire_turn_limits(voltage, side, wire_area, max_power, max_mass, resistivity, density, shape="round"):
     r"""Fewest turns that keep a coil within its power limit, and most within its mass limit.
 
     Parameters
     ----------
-    voltage : array_like
-        Supply voltage U [V].
-    side : array_like
-        Turn diameter (round) or side (square) l [m], > 0.
-    wire_area : array_like
-        Conductor cross-section S_r [m²], > 0.
-    max_power : array_like
-        Joule power limit W_max [W], > 0.
-    max_mass : array_like
-        Conductor mass limit M_max [kg], > 0.
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m], > 0.
-    density : array_like
-        Conductor density ρ̃ [kg/m³], > 0.
-    shape : {"round", "square"}, optional
-        Turn shape [-].
+    {voltage, side, wire_area, max_power, max_mass, resistivity, density, shape}
 
     Returns
     -------

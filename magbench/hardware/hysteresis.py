@@ -21,23 +21,36 @@ import numpy as np
 
 from ..integrate import rk4_step
 from . import kernels
+from .._docstrings import fill_docstring
 from .._validate import as_count, as_finite, as_nonnegative, as_positive, as_positive_scalar, shown
 
 __all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
            "rod_cycle_energy", "settled_hysteresis_loop", "limiting_loop_energy", "hysteresis_damping_torque"]
 
+#: The rod's loop and the sinusoidal field, described once for every function that takes them
+#: (each checks the loop through :func:`limb_constants`).
+_ROD_PARAMETERS = {
+    "coercivity": """coercivity : float
+    Coercive field Hc, > 0 [A/m].""",
+    "remanence": """remanence : float
+    Remanent induction Br, 0 < Br < Bs [T].""",
+    "saturation": """saturation : float
+    Saturation induction Bs, > 0 [T].""",
+    "field_amplitude": """field_amplitude : float or array_like
+    Amplitude Ha of H = bias + Ha sin φ, > 0 [A/m].""",
+    "bias": """bias : float or array_like, optional
+    Constant part of the field [A/m]; broadcasts with ``field_amplitude``.""",
+}
+_document_rod = fill_docstring(_ROD_PARAMETERS)
 
+
+@_document_rod
 def limb_constants(coercivity, remanence, saturation):
     r"""The checked constants of a rod's limiting loop.
 
     Parameters
     ----------
-    coercivity : float
-        Coercive field Hc, > 0 [A/m].
-    remanence : float
-        Remanent induction Br, 0 < Br < Bs [T].
-    saturation : float
-        Saturation induction Bs, > 0 [T].
+    {coercivity, remanence, saturation}
 
     Returns
     -------
@@ -63,6 +76,7 @@ def limb_constants(coercivity, remanence, saturation):
     return hc, br, bs, np.tan(0.5 * np.pi * br / bs) / hc
 
 
+@_document_rod
 def limb_induction(field, coercivity, remanence, saturation, *, ascending=True):
     r"""Induction on a limb of the limiting (major) loop.
 
@@ -70,12 +84,7 @@ def limb_induction(field, coercivity, remanence, saturation, *, ascending=True):
     ----------
     field : float or array_like
         Field strength H along the rod [A/m].
-    coercivity : float
-        Coercive field Hc, > 0 [A/m].
-    remanence : float
-        Remanent induction Br, 0 < Br < Bs [T].
-    saturation : float
-        Saturation induction Bs [T].
+    {coercivity, remanence, saturation}
     ascending : bool, optional
         The ascending limb B+ (H increasing) or the descending limb B− [-].
 
@@ -100,6 +109,7 @@ def _slope_along_h(h, b, direction, hc, bs, k):
     return kernels.hysteresis_slope(b, h, direction, hc, bs, k)
 
 
+@_document_rod
 def hysteresis_slope(induction, field, field_rate, coercivity, remanence, saturation):
     r"""Slope dB/dH of the Flatley–Henretty state equation, and the induction rate.
 
@@ -111,12 +121,7 @@ def hysteresis_slope(induction, field, field_rate, coercivity, remanence, satura
         Field strength H along the rod [A/m]; broadcasts with ``induction``.
     field_rate : array_like
         dH/dt along the rod [A/(m·s)]; its sign chooses the limb the state comes from.
-    coercivity : float
-        Hc [A/m].
-    remanence : float
-        Br [T].
-    saturation : float
-        Bs [T].
+    {coercivity, remanence, saturation}
 
     Returns
     -------
@@ -141,6 +146,7 @@ def hysteresis_slope(induction, field, field_rate, coercivity, remanence, satura
     return slope, slope * rate
 
 
+@_document_rod
 def hysteresis_response(field, coercivity, remanence, saturation, *, initial_induction=0.0):
     r"""Induction along a sampled field path, by the Flatley–Henretty state equation.
 
@@ -149,12 +155,7 @@ def hysteresis_response(field, coercivity, remanence, saturation, *, initial_ind
     field : array_like, shape (..., n)
         Field strength H along the rod at n ≥ 2 samples, the path trailing; leading axes are
         independent paths [A/m].
-    coercivity : float
-        Hc, > 0 [A/m].
-    remanence : float
-        Br, 0 < Br < Bs [T].
-    saturation : float
-        Bs [T].
+    {coercivity, remanence, saturation}
     initial_induction : float or array_like, optional
         B at the first sample, |B| < Bs; broadcasts with the leading axes [T].
 
@@ -234,21 +235,13 @@ def hysteresis_loop_energy(field, induction):
     return np.sum(0.5 * (h + h_next) * (b_next - b), axis=-1)
 
 
+@_document_rod
 def rod_cycle_energy(field_amplitude, coercivity, remanence, saturation, *, bias=0.0):
     r"""Energy dissipated per unit volume per cycle of a sinusoidal field, settled loop.
 
     Parameters
     ----------
-    field_amplitude : float or array_like
-        Amplitude Ha of H = bias + Ha sin φ, > 0 [A/m].
-    coercivity : float
-        Hc [A/m].
-    remanence : float
-        Br [T].
-    saturation : float
-        Bs [T].
-    bias : float or array_like, optional
-        Constant part of the field [A/m]; broadcasts with ``field_amplitude``.
+    {field_amplitude, coercivity, remanence, saturation, bias}
 
     Returns
     -------
@@ -271,21 +264,13 @@ def rod_cycle_energy(field_amplitude, coercivity, remanence, saturation, *, bias
     return hysteresis_loop_energy(h[..., :-1], b[..., :-1])
 
 
+@_document_rod
 def settled_hysteresis_loop(field_amplitude, coercivity, remanence, saturation, *, bias=0.0, samples=720):
     r"""The settled Flatley–Henretty loop of a sinusoidal field: the third cycle, started demagnetised.
 
     Parameters
     ----------
-    field_amplitude : float or array_like
-        Amplitude Ha of H = bias + Ha sin φ, > 0 [A/m].
-    coercivity : float
-        Hc [A/m].
-    remanence : float
-        Br [T].
-    saturation : float
-        Bs [T].
-    bias : float or array_like, optional
-        Constant part of the field [A/m]; broadcasts with ``field_amplitude``.
+    {field_amplitude, coercivity, remanence, saturation, bias}
     samples : int, optional
         Samples per cycle, >= 4 [-].
 
@@ -316,6 +301,7 @@ def _primitive(x):
     return x * np.arctan(x) - 0.5 * np.log1p(x * x)
 
 
+@_document_rod
 def limiting_loop_energy(field_amplitude, coercivity, remanence, saturation):
     r"""Area between the limbs of the limiting loop over |H| ≤ Ha, in closed form.
 
@@ -323,12 +309,7 @@ def limiting_loop_energy(field_amplitude, coercivity, remanence, saturation):
     ----------
     field_amplitude : float or array_like
         Ha, > 0 [A/m].
-    coercivity : float
-        Hc [A/m].
-    remanence : float
-        Br [T].
-    saturation : float
-        Bs [T].
+    {coercivity, remanence, saturation}
 
     Returns
     -------

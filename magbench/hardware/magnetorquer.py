@@ -14,6 +14,7 @@ eqs. (17)–(31) is correct; thesis §3.2 says the square formulas differ from "
 import numpy as np
 
 from .._validate import as_finite, as_in_range, as_nonnegative, as_positive
+from ._parameters import document_coil
 from .turn import _length_factor, turn_area, turn_length, wire_area  # noqa: F401 - wire_area: doctests
 
 __all__ = ["dipole_moment", "current_for_moment", "coil_current", "turn_resistance", "coil_resistance",
@@ -25,6 +26,7 @@ __all__ = ["dipole_moment", "current_for_moment", "coil_current", "turn_resistan
 
 
 
+@document_coil
 def dipole_moment(current, turns, area):
     r"""Magnetic dipole moment of a flat coil.
 
@@ -32,8 +34,7 @@ def dipole_moment(current, turns, area):
     ----------
     current : array_like
         Current I [A] (its sign gives the moment's sense).
-    turns : array_like
-        Number of turns N [-].
+    {turns}
     area : array_like
         Area enclosed by one turn S [m²] (see :func:`turn_area`).
 
@@ -57,15 +58,13 @@ def dipole_moment(current, turns, area):
     return i * s * n
 
 
+@document_coil
 def current_for_moment(moment, turns, area):
     r"""Current that gives a coil a required dipole moment.
 
     Parameters
     ----------
-    moment : array_like
-        Required dipole moment m [A·m²].
-    turns : array_like
-        Number of turns N [-].
+    {moment, turns}
     area : array_like
         Area enclosed by one turn S [m²].
 
@@ -91,17 +90,16 @@ def current_for_moment(moment, turns, area):
     return m / (s * n)
 
 
+@document_coil
 def coil_current(voltage, turn_resistance, turns):
     r"""Current drawn by a coil from a voltage source.
 
     Parameters
     ----------
-    voltage : array_like
-        Supply voltage U [V].
+    {voltage}
     turn_resistance : array_like
         Resistance of one turn r [Ω] (see :func:`turn_resistance`).
-    turns : array_like
-        Number of turns N [-].
+    {turns}
 
     Returns
     -------
@@ -123,19 +121,16 @@ def coil_current(voltage, turn_resistance, turns):
     return u / (r * n)
 
 
+@document_coil
 def turn_resistance(side, wire_area, resistivity, shape="round"):
     r"""Resistance of one turn.
 
     Parameters
     ----------
-    side : array_like
-        Turn diameter (round) or side (square) l [m].
-    wire_area : array_like
-        Conductor cross-section S_r [m²].
+    {side, wire_area}
     resistivity : array_like
         Conductor resistivity ρ [Ω·m] (the thesis's copper: 0.0175·10⁻⁶).
-    shape : {"round", "square"}, optional
-        Turn shape [-].
+    {shape}
 
     Returns
     -------
@@ -158,21 +153,13 @@ def turn_resistance(side, wire_area, resistivity, shape="round"):
     return rho * length / s
 
 
+@document_coil
 def coil_resistance(turns, side, wire_area, resistivity, shape="round"):
     r"""Resistance of a coil of N turns.
 
     Parameters
     ----------
-    turns : array_like
-        Number of turns N [-].
-    side : array_like
-        Turn diameter (round) or side (square) l [m].
-    wire_area : array_like
-        Conductor cross-section S_r [m²].
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m].
-    shape : {"round", "square"}, optional
-        Turn shape [-].
+    {turns, side, wire_area, resistivity, shape}
 
     Returns
     -------
@@ -193,19 +180,13 @@ def coil_resistance(turns, side, wire_area, resistivity, shape="round"):
     return n * turn_resistance(side, wire_area, resistivity, shape)
 
 
+@document_coil
 def moment_from_voltage(voltage, side, wire_area, resistivity):
     r"""Dipole moment of a coil driven at a fixed voltage.
 
     Parameters
     ----------
-    voltage : array_like
-        Supply voltage U [V].
-    side : array_like
-        Turn diameter (round) or side (square) l [m].
-    wire_area : array_like
-        Conductor cross-section S_r [m²].
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m].
+    {voltage, side, wire_area, resistivity}
 
     Returns
     -------
@@ -231,19 +212,13 @@ def moment_from_voltage(voltage, side, wire_area, resistivity):
     return u * l * s / (4.0 * rho)
 
 
+@document_coil
 def wire_area_for_moment(moment, voltage, side, resistivity):
     r"""Conductor cross-section that gives a required moment at a fixed voltage.
 
     Parameters
     ----------
-    moment : array_like
-        Required dipole moment m [A·m²].
-    voltage : array_like
-        Supply voltage U [V].
-    side : array_like
-        Turn diameter (round) or side (square) l [m].
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m].
+    {moment, voltage, side, resistivity}
 
     Returns
     -------
@@ -267,13 +242,13 @@ def wire_area_for_moment(moment, voltage, side, resistivity):
     return 4.0 * rho * m / (u * l)
 
 
+@document_coil
 def joule_power(voltage, resistance):
     r"""Joule power dissipated by a coil at a fixed voltage.
 
     Parameters
     ----------
-    voltage : array_like
-        Supply voltage U [V].
+    {voltage}
     resistance : array_like
         Coil resistance R = rN [Ω].
 
@@ -296,21 +271,13 @@ def joule_power(voltage, resistance):
     return u**2 / r
 
 
+@document_coil
 def joule_power_for_moment(moment, voltage, turns, side, shape="round"):
     r"""Joule power of a coil sized by eq. (21) for a required moment.
 
     Parameters
     ----------
-    moment : array_like
-        Dipole moment m [A·m²].
-    voltage : array_like
-        Supply voltage U [V].
-    turns : array_like
-        Number of turns N [-].
-    side : array_like
-        Turn diameter (round) or side (square) l [m].
-    shape : {"round", "square"}, optional
-        Turn shape [-].
+    {moment, voltage, turns, side, shape}
 
     Returns
     -------
@@ -333,13 +300,13 @@ def joule_power_for_moment(moment, voltage, turns, side, shape="round"):
     return m * u / (turn_area(side, shape) * n)
 
 
+@document_coil
 def turns_from_winding_length(winding_length, wire_area):
     r"""Turns of a dense single-layer winding of a given length.
 
     Parameters
     ----------
-    winding_length : array_like
-        Axial length of the winding L [m].
+    {winding_length}
     wire_area : array_like
         Conductor cross-section S_r [m²]; √S_r stands for the wire pitch.
 
@@ -363,15 +330,13 @@ def turns_from_winding_length(winding_length, wire_area):
     return length / np.sqrt(s)
 
 
+@document_coil
 def winding_length(turns, wire_area):
     r"""Axial length of a dense single-layer winding of N turns.
 
     Parameters
     ----------
-    turns : array_like
-        Number of turns N [-].
-    wire_area : array_like
-        Conductor cross-section S_r [m²].
+    {turns, wire_area}
 
     Returns
     -------
@@ -393,23 +358,13 @@ def winding_length(turns, wire_area):
     return n * np.sqrt(s)
 
 
+@document_coil
 def joule_power_for_winding_length(moment, voltage, winding_length, wire_area, side, shape="round"):
     r"""Joule power of a dense single-layer coil of a given winding length.
 
     Parameters
     ----------
-    moment : array_like
-        Dipole moment m [A·m²].
-    voltage : array_like
-        Supply voltage U [V].
-    winding_length : array_like
-        Axial length of the winding L [m].
-    wire_area : array_like
-        Conductor cross-section S_r [m²].
-    side : array_like
-        Turn diameter (round) or side (square) l [m].
-    shape : {"round", "square"}, optional
-        Turn shape [-].
+    {moment, voltage, winding_length, wire_area, side, shape}
 
     Returns
     -------
@@ -430,21 +385,16 @@ def joule_power_for_winding_length(moment, voltage, winding_length, wire_area, s
     return joule_power_for_moment(moment, voltage, n, side, shape)
 
 
+@document_coil
 def coil_mass(turns, side, wire_area, density, shape="round"):
     r"""Mass of the conductor in a coil.
 
     Parameters
     ----------
-    turns : array_like
-        Number of turns N [-].
-    side : array_like
-        Turn diameter (round) or side (square) l [m].
-    wire_area : array_like
-        Conductor cross-section S_r [m²].
+    {turns, side, wire_area}
     density : array_like
         Conductor density ρ̃ [kg/m³] (the thesis's copper: 8.9·10³).
-    shape : {"round", "square"}, optional
-        Turn shape [-].
+    {shape}
 
     Returns
     -------
@@ -466,23 +416,13 @@ def coil_mass(turns, side, wire_area, density, shape="round"):
     return g * turn_length(side, shape) * s * n
 
 
+@document_coil
 def coil_mass_for_moment(moment, voltage, turns, resistivity, density, shape="round"):
     r"""Conductor mass of a coil sized by eq. (21) for a required moment.
 
     Parameters
     ----------
-    moment : array_like
-        Dipole moment m [A·m²].
-    voltage : array_like
-        Supply voltage U [V].
-    turns : array_like
-        Number of turns N [-].
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m].
-    density : array_like
-        Conductor density ρ̃ [kg/m³].
-    shape : {"round", "square"}, optional
-        Turn shape [-].
+    {moment, voltage, turns, resistivity, density, shape}
 
     Returns
     -------
@@ -506,19 +446,13 @@ def coil_mass_for_moment(moment, voltage, turns, resistivity, density, shape="ro
     return 4.0 * _length_factor(shape) * g * rho * m * n / u
 
 
+@document_coil
 def mass_power_product(moment, side, resistivity, density):
     r"""Product of conductor mass and Joule power of a coil of given moment.
 
     Parameters
     ----------
-    moment : array_like
-        Dipole moment m [A·m²].
-    side : array_like
-        Turn diameter (round) or side (square) l [m].
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m].
-    density : array_like
-        Conductor density ρ̃ [kg/m³].
+    {moment, side, resistivity, density}
 
     Returns
     -------
@@ -577,6 +511,7 @@ def winding_density(fill_factor, conductor_density, insulation_density):
     return k * gp + (1.0 - k) * gn
 
 
+@document_coil
 def mass_power_product_kovalenko(moment, diameter, resistivity, density, fill_factor=1.0):
     r"""Kovalenko's mass × power product of a flat air-core coil, with a fill factor.
 
@@ -586,8 +521,7 @@ def mass_power_product_kovalenko(moment, diameter, resistivity, density, fill_fa
         Dipole moment L_K [A·m²].
     diameter : array_like
         Mean winding diameter D [m] (for a square coil: the side, as in eq. (30)).
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m].
+    {resistivity}
     density : array_like
         Mean winding density γ_к [kg/m³] (see :func:`winding_density`; with
         ``fill_factor=1`` it is the conductor density).
@@ -628,23 +562,13 @@ def mass_power_product_kovalenko(moment, diameter, resistivity, density, fill_fa
     return 16.0 * g * rho * m**2 / (k * d**2)
 
 
+@document_coil
 def supply_voltage(current, turns, side, wire_area, resistivity, shape="round"):
     r"""Voltage that drives a given current through a coil.
 
     Parameters
     ----------
-    current : array_like
-        Current I [A].
-    turns : array_like
-        Number of turns N [-].
-    side : array_like
-        Turn diameter (round) or side (square) l [m].
-    wire_area : array_like
-        Conductor cross-section S_r [m²].
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m].
-    shape : {"round", "square"}, optional
-        Turn shape [-].
+    {current, turns, side, wire_area, resistivity, shape}
 
     Returns
     -------

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._validate import as_finite, as_positive, shown
+from ._parameters import document_coil
 
 __all__ = ["SHAPES", "Turn", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter"]
 
@@ -76,15 +77,13 @@ class Turn:
         return turn_length(self.side, self.shape)
 
 
+@document_coil
 def turn_area(side, shape="round"):
     r"""Area enclosed by one turn.
 
     Parameters
     ----------
-    side : array_like
-        Turn diameter (round) or side (square), thesis symbol l [m].
-    shape : {"round", "square"}, optional
-        Turn shape [-].
+    {side, shape}
 
     Returns
     -------
@@ -104,15 +103,13 @@ def turn_area(side, shape="round"):
     return k * as_positive("side", side, unit="m") ** 2
 
 
+@document_coil
 def turn_length(side, shape="round"):
     r"""Length of conductor in one turn.
 
     Parameters
     ----------
-    side : array_like
-        Turn diameter (round) or side (square) l [m].
-    shape : {"round", "square"}, optional
-        Turn shape [-].
+    {side, shape}
 
     Returns
     -------

@@ -13,6 +13,7 @@ import numpy as np
 from .. import fields
 from ..constants import MU_0
 from .._validate import as_finite, as_positive
+from ._parameters import document_coil
 from .magnetorquer import coil_mass, coil_resistance
 from .turn import Turn, turn_length, wire_area
 
@@ -27,20 +28,13 @@ __all__ = ["winding_resistance", "winding_voltage", "winding_power", "winding_ma
            "coaxial_system_scale_for_power"]
 
 
+@document_coil
 def winding_resistance(turn, turns, wire_diameter, resistivity):
     r"""Resistance of a winding (simulator coil or magnetorquer).
 
     Parameters
     ----------
-    turn : Turn or array_like
-        The turn's geometry (:class:`~magbench.hardware.turn.Turn`), or the coil radius
-        a_c of a round turn [m], > 0.
-    turns : array_like
-        Number of turns N [-], > 0.
-    wire_diameter : array_like
-        Bare conductor diameter d_w [m], > 0.
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m], > 0.
+    {turn, turns, wire_diameter, resistivity}
 
     Returns
     -------
@@ -66,22 +60,13 @@ def winding_resistance(turn, turns, wire_diameter, resistivity):
                            resistivity, shape=t.shape)
 
 
+@document_coil
 def winding_voltage(turn, turns, wire_diameter, resistivity, current):
     r"""Supply voltage of a winding at a given current.
 
     Parameters
     ----------
-    turn : Turn or array_like
-        The turn's geometry (:class:`~magbench.hardware.turn.Turn`), or the coil radius
-        a_c of a round turn [m], > 0.
-    turns : array_like
-        Number of turns N [-], > 0.
-    wire_diameter : array_like
-        Conductor diameter d_w [m], > 0.
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m], > 0.
-    current : array_like
-        Current I [A].
+    {turn, turns, wire_diameter, resistivity, current}
 
     Returns
     -------
@@ -102,22 +87,13 @@ def winding_voltage(turn, turns, wire_diameter, resistivity, current):
     return winding_resistance(turn, turns, wire_diameter, resistivity) * i
 
 
+@document_coil
 def winding_power(turn, turns, wire_diameter, resistivity, current):
     r"""Ohmic power dissipated in a winding.
 
     Parameters
     ----------
-    turn : Turn or array_like
-        The turn's geometry (:class:`~magbench.hardware.turn.Turn`), or the coil radius
-        a_c of a round turn [m], > 0.
-    turns : array_like
-        Number of turns N [-], > 0.
-    wire_diameter : array_like
-        Conductor diameter d_w [m], > 0.
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m], > 0.
-    current : array_like
-        Current I [A].
+    {turn, turns, wire_diameter, resistivity, current}
 
     Returns
     -------
@@ -138,20 +114,13 @@ def winding_power(turn, turns, wire_diameter, resistivity, current):
     return winding_resistance(turn, turns, wire_diameter, resistivity) * i * i
 
 
+@document_coil
 def winding_mass(turn, turns, wire_diameter, density):
     r"""Conductor mass of a winding.
 
     Parameters
     ----------
-    turn : Turn or array_like
-        The turn's geometry (:class:`~magbench.hardware.turn.Turn`), or the coil radius
-        a_c of a round turn [m], > 0.
-    turns : array_like
-        Number of turns N [-], > 0.
-    wire_diameter : array_like
-        Conductor diameter d_w [m], > 0.
-    density : array_like
-        Conductor density ρ̃ [kg/m³], > 0.
+    {turn, turns, wire_diameter, density}
 
     Returns
     -------
@@ -173,20 +142,18 @@ def winding_mass(turn, turns, wire_diameter, density):
                      density, shape=t.shape)
 
 
+@document_coil
 def ampere_turns_power(turn, ampere_turns, winding_area, resistivity):
     r"""Ohmic power of a winding that carries given ampere-turns in a given copper cross-section.
 
     Parameters
     ----------
-    turn : Turn or array_like
-        The turn's geometry (:class:`~magbench.hardware.turn.Turn`), or the coil radius
-        a_c of a round turn [m], > 0.
+    {turn}
     ampere_turns : array_like
         N·I of the winding [A].
     winding_area : array_like
         Copper cross-section of the whole winding A = N S₀ [m²], > 0.
-    resistivity : array_like
-        Conductor resistivity ρ [Ω·m], > 0.
+    {resistivity}
 
     Returns
     -------

@@ -15,10 +15,11 @@ import math
 
 import numpy as np
 
+from .._docstrings import fill_docstring
 from .._validate import as_finite, as_in_range, as_positive_scalar
 from ..control.floquet import finite_difference_monodromy
 from ..control.kernels import program_field, projected_dipole
-from ..control.rotor_stability import rotor_model_numbers
+from ..control.rotor_stability import ROTOR_MODEL_PARAMETERS, rotor_model_numbers
 from ..dynamics.kernels import rotor_reduced_rates
 from ..earth.dipole import dipole_equatorial_b
 from ..earth.orbit import orbital_dipole_b
@@ -26,6 +27,8 @@ from ..integrate import rk4_step
 from .result import SimulationResult
 
 __all__ = ["rotor_normalised_rhs", "rotor_finite_difference_monodromy", "simulate_rotor_normalised"]
+
+_document_model = fill_docstring(ROTOR_MODEL_PARAMETERS)
 
 
 def _closed_loop(tau, x, a, c1, kappa, kappa_w, i, real=None):
@@ -46,6 +49,7 @@ def _closed_loop(tau, x, a, c1, kappa, kappa_w, i, real=None):
     return rotor_reduced_rates(x, t[..., 0], t[..., 1], t[..., 2], a)
 
 
+@_document_model
 def rotor_normalised_rhs(tau, state, axial_ratio, momentum, restoring, damping, inclination):
     r"""Closed-loop dimensionless model of the symmetric rotor spacecraft.
 
@@ -55,16 +59,12 @@ def rotor_normalised_rhs(tau, state, axial_ratio, momentum, restoring, damping, 
         τ = ω0 t = u, the argument of latitude [-].
     state : array_like, shape (5, ...)
         α, β [rad], h = H/(ω0 B), Ω2, Ω3 [-].
-    axial_ratio : float
-        a = A/B [-].
-    momentum : float
-        c1 = H0/(ω0 B) [-].
+    {axial_ratio, momentum}
     restoring : float or array_like
         κ = k B0²/(ω0² B) [-]; broadcasts against the trailing axes of ``state``.
     damping : float or array_like
         κ_w = k_w/(ω0 B) ≥ 0 [-]; broadcasts likewise.
-    inclination : float
-        i, sin i ≠ 0 [rad].
+    {inclination}
 
     Returns
     -------
@@ -132,22 +132,19 @@ def _normalised_flow(a, c1, kappa, kappa_w, i, steps, orbits=1, record=False, re
     return compiled_flow if _NORMALISED_ENGINE == "compiled" else flow
 
 
+@_document_model
 def rotor_finite_difference_monodromy(axial_ratio, momentum, restoring, damping, inclination, *, steps=2000,
                                       perturbation=1e-6):
     r"""Monodromy of the nonlinear closed loop by central differences about the reference.
 
     Parameters
     ----------
-    axial_ratio : float
-        a [-].
-    momentum : float
-        c1 [-].
+    {axial_ratio, momentum}
     restoring : float
         κ [-].
     damping : float
         κ_w ≥ 0 [-].
-    inclination : float
-        i [rad].
+    {inclination}
     steps : int, optional
         RK4 steps of the nonlinear model per orbit [-].
     perturbation : float, optional
@@ -173,22 +170,19 @@ def rotor_finite_difference_monodromy(axial_ratio, momentum, restoring, damping,
                                        perturbation)
 
 
+@_document_model
 def simulate_rotor_normalised(axial_ratio, momentum, restoring, damping, inclination, initial_state, orbits, *,
                               steps_per_orbit=1000, real_dipole_tilt=0.0, real_node_phase=0.0):
     r"""Simulate the dimensionless closed loop for many members at once (RK4).
 
     Parameters
     ----------
-    axial_ratio : float
-        a [-].
-    momentum : float
-        c1 [-].
+    {axial_ratio, momentum}
     restoring : float or array_like
         κ [-]; per member if an array (M,).
     damping : float or array_like
         κ_w ≥ 0 [-]; per member if an array (M,).
-    inclination : float
-        i [rad].
+    {inclination}
     initial_state : array_like, shape (5,) or (5, M)
         (α, β, h, Ω2, Ω3) at τ = 0 [rad, -].
     orbits : int
