@@ -14,14 +14,9 @@ from magbench import figures
 
 matplotlib.use("Agg")
 
-#: Figures whose defaults take several seconds, or need the BROAD recordings.
-SLOW = {"ch04-montecarlo", "ch04-period-ratio", "ch04-tau-sensitivity", "ch04-broad-tilt",
-        "ch04-offline-tilt", "ch04-offline-timing",
-        "thesis-fig03", "ch04-step-response", "rotor-simulation", "rotor-asymmetry", "tns0-capture",
-        "tns0-full-run", "samsat-fig2",
-        "ch05-rate-decay", "ch05-duty-estimators", "ch05-detumble-distribution", "ch05-basilisk-peer",
-        "ch05-gain-sweep", "rotor-products-of-inertia",
-        "ch04-budget-oat", "ch04-budget-sobol"}
+#: Figures whose defaults take several seconds, or need the BROAD recordings: each declares
+#: it when it registers (FigureSpec.slow).
+SLOW = {i for i in figures.figure_ids() if figures.get_spec(i).slow}
 MIN_FONT_PT = 7.0
 
 

@@ -92,7 +92,9 @@ class FigureSpec:
 
     ``parameter_table`` is the figure's inputs, ``{name: FigureParameter}``, or a
     function returning it: the defaults come from data files, so registering (and
-    listing) figures reads none; :attr:`parameters` reads them on first use.
+    listing) figures reads none; :attr:`parameters` reads them on first use. ``slow``
+    marks a figure whose defaults take several seconds (a simulation study) or need the
+    BROAD recordings: the quick test stages leave it to the slow ones.
     """
 
     id: str
@@ -101,6 +103,7 @@ class FigureSpec:
     compute: object
     plot: object
     parameter_table: object     # dict name -> FigureParameter, or a function returning it
+    slow: bool = False
 
     @property
     def parameters(self):

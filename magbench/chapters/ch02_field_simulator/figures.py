@@ -705,7 +705,7 @@ def _three_axis_parameters():
 
 
 register(FigureSpec("thesis-fig03", "Candidate coil systems at equal power (thesis Fig. 3)",
-                    "Bui (2016) Fig. 3; Kovalenko (1975) §3.4", compute_fig03, plot_fig03, _fig03_parameters))
+                    "Bui (2016) Fig. 3; Kovalenko (1975) §3.4", compute_fig03, plot_fig03, _fig03_parameters, slow=True))
 register(FigureSpec("thesis-fig05", "Field lines of the coil pair (thesis Fig. 5)", "Bui (2016) Fig. 5",
                     compute_fig05, plot_fig05, _geometry_parameters))
 register(FigureSpec("thesis-fig06", "|H| across the axis (thesis Fig. 6)", "Bui (2016) Fig. 6", compute_fig06, plot_line,

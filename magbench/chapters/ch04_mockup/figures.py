@@ -567,7 +567,7 @@ register(FigureSpec("thesis-fig12", "Angular velocity of the free mock-up (thesi
 register(FigureSpec("thesis-fig13", "Rotation angle of the free mock-up (thesis Fig. 13)",
                     "Bui (2016), Fig. 13, eq. (35)", compute_free_pendulum, plot_fig13, _free_parameters))
 register(FigureSpec("ch04-period-ratio", "Exact pendulum period against eq. (14)", "Bui (2016) eqs. (14), (15), (35)",
-                    compute_period_ratio, plot_period_ratio, _period_parameters))
+                    compute_period_ratio, plot_period_ratio, _period_parameters, slow=True))
 register(FigureSpec("thesis-fig14", "The PID loop (thesis Fig. 14)", "Bui (2016), Fig. 14, eqs. (36)–(38)",
                     compute_block_diagram, plot_block_diagram,
                     _plant_parameters))

@@ -223,4 +223,4 @@ register(FigureSpec("thesis-fig19", "Bench run for ψ_des = π/3: model predicti
 register(FigureSpec("thesis-fig20", "Bench run for ψ_des = 2π/3: model prediction (thesis Fig. 20)",
                     SOURCE, compute_trace, plot_trace, lambda: _trace_parameters(2.0 * np.pi / 3.0)))
 register(FigureSpec("ch04-montecarlo", "Monte Carlo of the bench's final error",
-                    SOURCE, compute_montecarlo, plot_montecarlo, _input_parameters))
+                    SOURCE, compute_montecarlo, plot_montecarlo, _input_parameters, slow=True))

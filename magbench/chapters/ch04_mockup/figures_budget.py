@@ -176,8 +176,8 @@ def plot_sobol(data):
 
 register(FigureSpec("ch04-budget-oat", "Error budget: each source alone across its range",
                     SOURCE, compute_oat, plot_oat, lambda: _budget_parameters({
-                        "budget_points": FigureParameter(5.0, "1", "values per source, ends included", high=20.0, whole=True)})))
+                        "budget_points": FigureParameter(5.0, "1", "values per source, ends included", high=20.0, whole=True)}), slow=True))
 register(FigureSpec("ch04-budget-sobol", "Error budget: Sobol indices and the error over the allowed space",
                     SOURCE, compute_sobol, plot_sobol, lambda: _budget_parameters({
                         "budget_base_samples": FigureParameter(128.0, "1", "N of Saltelli's sample (power of 2)", high=1024.0, whole=True),
-                        "budget_seed": FigureParameter(14.0, "1", "seed of the Sobol sequence and noise", whole=True)})))
+                        "budget_seed": FigureParameter(14.0, "1", "seed of the Sobol sequence and noise", whole=True)}), slow=True))

@@ -386,12 +386,12 @@ def plot_tau_sensitivity(data):
 register(FigureSpec("ch04-broad-tilt", "The 3-D complementary filter on BROAD: inclination error and RMSE",
                     BROAD_SOURCE, compute_broad_tilt, plot_broad_tilt,
                     {"tau": FigureParameter(3.0, "s", "accelerometer time constant (default)"),
-                     "order": FigureParameter(2.0, "1", "low-pass order (1 or 2)", whole=True)}))
+                     "order": FigureParameter(2.0, "1", "low-pass order (1 or 2)", whole=True)}, slow=True))
 register(FigureSpec("ch04-tau-sensitivity", "Sensitivity of the BROAD RMSE to the time constant",
                     BROAD_SOURCE, compute_tau_sensitivity, plot_tau_sensitivity,
                     {"tau_min": FigureParameter(0.3, "s", "smallest τ"),
                      "tau_max": FigureParameter(30.0, "s", "largest τ"),
-                     "default_tau": FigureParameter(3.0, "s", "the filter's default τ")}))
+                     "default_tau": FigureParameter(3.0, "s", "the filter's default τ")}, slow=True))
 
 
 # --- BROAD: the offline (post-processing) estimator -----------------------------------------
@@ -490,7 +490,7 @@ def plot_offline_tilt(data):
 
 register(FigureSpec("ch04-offline-tilt", "The whole-record smoother on BROAD beside the causal filters and VQF",
                     BROAD_SOURCE, compute_offline_tilt, plot_offline_tilt,
-                    {"tau": FigureParameter(3.0, "s", "offline_tilt's time constant (default)")}))
+                    {"tau": FigureParameter(3.0, "s", "offline_tilt's time constant (default)")}, slow=True))
 
 
 # --- BROAD: what limits the offline estimator (a diagnostic of the comparison's timing) -----
@@ -559,4 +559,4 @@ register(FigureSpec("ch04-offline-timing", "What limits the whole-record smoothe
                     BROAD_SOURCE, compute_offline_timing, plot_offline_timing,
                     {"earliest_shift": FigureParameter(-1.0, "1", "first shift [samples]"),
                      "latest_shift": FigureParameter(1.5, "1", "last shift [samples]"),
-                     "shift_step": FigureParameter(0.125, "1", "spacing of the shifts [samples]")}))
+                     "shift_step": FigureParameter(0.125, "1", "spacing of the shifts [samples]")}, slow=True))

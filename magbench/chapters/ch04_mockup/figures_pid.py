@@ -260,4 +260,4 @@ register(FigureSpec("thesis-fig18", "Rotation angle, Kd sweep (thesis Fig. 18)",
 register(FigureSpec("ch04-root-locus", "Root locus and margins of a stable SI design", "Not in the thesis",
                     compute_root_locus, plot_root_locus, _root_locus_parameters))
 register(FigureSpec("ch04-step-response", "Linear against nonlinear closed loop", "Not in the thesis",
-                    compute_step_response, plot_step_response, _step_parameters))
+                    compute_step_response, plot_step_response, _step_parameters, slow=True))

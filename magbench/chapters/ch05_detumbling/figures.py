@@ -388,28 +388,28 @@ register(FigureSpec("samsat-fig1", "Gain k against the initial separation rates 
 register(FigureSpec("samsat-fig2", "Damping time, continuous and discrete modes (SamSat-218D Fig. 2, "
                     "reconstruction)", f"{SOURCE}, Fig. 2", compute_fig2, plot_fig2,
                     partial(_parameters, *_DUTY, estimator=FigureParameter(
-                        0.0, "1", "Ḃ estimator of the discrete mode: 0 model, 1 hold, 2 propagate", whole=True))))
+                        0.0, "1", "Ḃ estimator of the discrete mode: 0 model, 1 hold, 2 propagate", whole=True)), slow=True))
 register(FigureSpec("ch05-rate-decay", "Rate decay, continuous and discrete", f"{SOURCE}, Rate damping",
                     compute_rate_decay, plot_rate_decay,
-                    partial(_parameters, *_DUTY)))
+                    partial(_parameters, *_DUTY), slow=True))
 register(FigureSpec("ch05-duty-estimators", "Damping kept by each duty-cycle estimator",
                     f"{SOURCE}, Rate damping (the estimators are ours)", compute_duty_estimators, plot_duty_estimators,
                     partial(_parameters, *_DUTY, span=FigureParameter(
-                        1020.0, "s", "span over which |ω| drops (60 cycles; ours)", high=1e5))))
+                        1020.0, "s", "span over which |ω| drops (60 cycles; ours)", high=1e5)), slow=True))
 register(FigureSpec("ch05-detumble-distribution", "3U envelope: detumble times beside Cp557 and Kovalenko (6.50)",
                     "Cp557/detumble; Kovalenko (1975) eq. (6.50)", compute_distribution, plot_distribution,
-                    partial(_parameters, *_ENVELOPE)))
+                    partial(_parameters, *_ENVELOPE), slow=True))
 register(FigureSpec("ch05-basilisk-peer", "Detumble times beside Basilisk's 18 runs",
                     "Basilisk 2.12.1, 18 runs of the same case", compute_basilisk, plot_basilisk,
                     partial(_parameters, "inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold",
                                 "envelope_altitude", "envelope_inclination", "envelope_dipole_field",
-                                "envelope_dipole_tilt", "envelope_gain")))
+                                "envelope_dipole_tilt", "envelope_gain"), slow=True))
 register(FigureSpec("ch05-gain-sweep", "Projected B-dot: unsaturated decay rate and saturated detumble time against k/k*",
                     "Avanzini & Giulietti (2012); Kovalenko (1975) eq. (6.7)", compute_gain_sweep, plot_gain_sweep,
                     partial(_parameters, "inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold",
                                 "earth_rotation_rate", "envelope_altitude", "envelope_inclination",
                                 "envelope_dipole_field", "envelope_dipole_tilt", "envelope_seed",
-                                "integration_step")))
+                                "integration_step"), slow=True))
 register(FigureSpec("ch05-triad-geometry", "TRIAD's error against the field–Sun angle", f"{SOURCE}, Attitude "
                     "determination; Shuster & Oh (1981)", compute_triad_geometry, plot_triad_geometry,
                     partial(_parameters, "field_sigma", "sun_sigma")))

@@ -341,7 +341,7 @@ register(FigureSpec("rotor-stability-map", "Stability in the gains (reconstructi
                     compute_stability_map, plot_stability_map, _map_parameters))
 register(FigureSpec("rotor-simulation", "The asymmetric spacecraft simulated (reconstruction of the lost slide)",
                     f"{SOURCE}, slide 'Simulation (asymmetric spacecraft)' (lost)",
-                    compute_simulation, plot_simulation, _simulation_parameters))
+                    compute_simulation, plot_simulation, _simulation_parameters, slow=True))
 register(FigureSpec("rotor-equilibrium-law", "The equilibrium dipole law over one orbit",
                     f"{SOURCE}, slides 'Creating the equilibrium' and 'Choice of control'",
                     compute_equilibrium_law, plot_equilibrium_law, _law_parameters))
@@ -566,7 +566,7 @@ register(FigureSpec("rotor-field-model", "Program field against the real one: a 
 register(FigureSpec("rotor-products-of-inertia", "Products of inertia: rate damping against momentum damping "
                     "(beyond the slides; slow)",
                     f"ours, beyond the {SOURCE}; Kovalenko (1975) eqs. (4.30)–(4.32), (7.5)",
-                    compute_products_of_inertia, plot_products_of_inertia, _inertia_parameters))
+                    compute_products_of_inertia, plot_products_of_inertia, _inertia_parameters, slow=True))
 register(FigureSpec("kovalenko-spin-relay", "Kovalenko's relay spin law over a turn of the field",
                     "Kovalenko (1975) §7.3, eqs. (7.12), (7.26)", compute_spin_relay, plot_spin_relay,
                     _relay_parameters))
@@ -696,4 +696,4 @@ def plot_asymmetry(data):
 
 register(FigureSpec("rotor-asymmetry", "Pointing error against the transverse asymmetry (slow)",
                     f"{SOURCE}, slide 'Simulation (asymmetric spacecraft)' (lost); the sweep is ours",
-                    compute_asymmetry, plot_asymmetry, _asymmetry_parameters))
+                    compute_asymmetry, plot_asymmetry, _asymmetry_parameters, slow=True))

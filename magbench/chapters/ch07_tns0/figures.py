@@ -574,7 +574,7 @@ register(FigureSpec("tns0-session-fit", "Fitting a session: three methods on a s
                     plot_session_fit, lambda: {k: v for k, v in _session_parameters().items()
                                                if k in ("transverse_inertia", "axial_inertia")}))
 register(FigureSpec("tns0-capture", "Capture into rotation about B, Monte Carlo",
-                    f"{SOURCE}, Table 2, conclusions", compute_capture, plot_capture, _capture_parameters))
+                    f"{SOURCE}, Table 2, conclusions", compute_capture, plot_capture, _capture_parameters, slow=True))
 register(FigureSpec("tns0-full-run", "From session 1 to the capture about B: full dynamics and the energy balance",
                     f"{SOURCE}, Tables 1 and 2, Fig. 14", compute_full_run, plot_full_run,
-                    _full_parameters))
+                    _full_parameters, slow=True))
