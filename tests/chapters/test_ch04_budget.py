@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
+from magbench import fields
 from magbench.chapters.ch04_mockup import budget
 from magbench.hardware import sensors
 from magbench.params import chapter_parameters
@@ -223,7 +224,7 @@ def test_coil_field_range_is_the_square_coils_centre_field(sources, p):
     assert_allclose([s.low, s.high], [0.0, 2 * np.sqrt(2) * MU_0 / (np.pi * side ** 3)], rtol=1e-12, atol=0)
     assert s.source == "computed" and "magbench" not in s.reference
     with pytest.raises(ValueError, match="side"):
-        budget.coil_field_per_moment(-0.1)
+        fields.square_loop_center_b_per_moment(-0.1)
 
 
 def test_no_reader_facing_reference_names_code(sources):

@@ -28,10 +28,10 @@ import numpy as np
 
 from ...constants import MU_0
 from ...io.data import DATA_DIR, DataError, to_si, verify_checksum
-from ..._validate import as_positive_scalar, shown
+from ..._validate import shown
 
 __all__ = ["ErrorSource", "load_error_sources", "nominal_values", "simulate_sources", "one_at_a_time",
-           "sobol_design", "sobol_analysis", "sobol_budget", "from_unit_cube", "coil_field_per_moment",
+           "sobol_design", "sobol_analysis", "sobol_budget", "from_unit_cube",
            "SAMPLE_INTERVALS"]
 
 #: Controller periods the budget runs [s]: draws of ``sample_interval`` are rounded to the
@@ -71,33 +71,6 @@ class ErrorSource:
         return np.asarray(value, float) / self.factor
 
 
-def coil_field_per_moment(side):
-    r"""Field at the centre of a square coil per unit of its moment [T per A·m²].
-
-    Parameters
-    ----------
-    side : float
-        Side l of the square turn [m], > 0.
-
-    Returns
-    -------
-    float
-        :math:`|B(0)|/m = 2\sqrt2\,\mu_0/(\pi l^3)` for any N and I (m = N I l²), by
-        Biot–Savart over the four sides (:func:`magbench.fields.square_loop_b`).
-
-    Notes
-    -----
-    Not in the thesis. The magnetometer sits inside the mock-up, within the coils (the
-    thesis does not say where); the far-field dipole :math:`\mu_0/(2\pi r^3)` does not
-    apply there.
-    """
-    from ... import fields
-
-    side = as_positive_scalar("side", side, unit="m")
-    b = fields.square_loop_b([0.0, 0.0, 0.0], side, 1.0, turns=1)
-    return float(np.linalg.norm(b) / side ** 2)
-
-
 def _computed_ranges(params):
     """The ranges computed by the library: {name: (low, high)} in SI.
 
@@ -114,7 +87,7 @@ def _computed_ranges(params):
     radius = float(np.sqrt(2.0 * params["mockup_inertia"] / params["mockup_mass"]))
     ripple = float(fields.sphere_nonuniformity(params["sim_built_radius"], params["sim_built_spacing"], radius))
     return {"background_h": (0.0, float(lab.horizontal / MU_0)), "heading_ripple": (-ripple, ripple),
-            "coil_field_coupling": (0.0, coil_field_per_moment(params["mtq_side"]))}
+            "coil_field_coupling": (0.0, fields.square_loop_center_b_per_moment(params["mtq_side"]))}
 
 
 def load_error_sources(params=None):
@@ -137,7 +110,7 @@ def load_error_sources(params=None):
     thesis's epoch, as chapter 2 computes it); ``heading_ripple`` within ± the
     relative non-uniformity of the pair as built over a sphere of the mock-up's radius;
     ``coil_field_coupling`` from 0 to the field at a square coil's centre per unit
-    moment (:func:`coil_field_per_moment` of the thesis's side).
+    moment (:func:`magbench.fields.square_loop_center_b_per_moment` of the thesis's side).
     """
     if params is None:
         from ...io import load_parameter_set
