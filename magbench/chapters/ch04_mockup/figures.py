@@ -149,9 +149,7 @@ def _geometry_parameters():
 # --- thesis Figs. 12–13: the free magnetic pendulum ---------------------------------------
 
 def compute_free_pendulum(inertia, field, moment, initial_angle, initial_angle_alt, duration):
-    """Eq. (35) from rest at both printed initial angles (solve_ivp, rtol 1e-10)."""
-    from ...integrate import solve_adaptive
-
+    """Eq. (35) from rest at both printed initial angles (:func:`magbench.sim.simulate_free_swing`)."""
     if not 1.0 <= duration <= 3600.0:
         raise ValueError(f"duration must lie in [1, 3600] s, got {shown(duration)}")
     plant = dynamics.Mockup(inertia, field, moment)
@@ -159,11 +157,9 @@ def compute_free_pendulum(inertia, field, moment, initial_angle, initial_angle_a
     series = []
     for label, psi0 in (("ψ0 = π/2 (as printed, thesis §4.1)", initial_angle),
                         ("ψ0 = π/4 (as printed, thesis §4.1)", initial_angle_alt)):
-        sol = solve_adaptive(dynamics.pendulum_rhs, (0.0, duration), [psi0, 0.0], args=(plant,), t_eval=t,
-                             method="RK45", rtol=1e-10, atol=1e-13)
-        energy = dynamics.pendulum_energy(sol.y[0], sol.y[1], inertia, moment, field)
-        series.append(Series(label, {"t": ("s", t), "psi": ("rad", sol.y[0]), "omega": ("rad/s", sol.y[1]),
-                                     "energy_drift": ("1", (energy - energy[0]) / (moment * field))}))
+        run = sim.simulate_free_swing(plant, psi0, t)
+        series.append(Series(label, {"t": ("s", t), "psi": ("rad", run.psi), "omega": ("rad/s", run.rate),
+                                     "energy_drift": ("1", (run.energy - run.energy[0]) / (moment * field))}))
     return FigureData("", "", "", {}, series, extra={
         "periods": [float(dynamics.pendulum_period(a, inertia, moment, field)) for a in (initial_angle, initial_angle_alt)],
         "small_angle_period": float(dynamics.small_angle_period(inertia, moment, field))})
@@ -208,8 +204,6 @@ def _free_parameters():
 
 def compute_period_ratio(inertia, moment, field, period, amplitude_checks):
     """T/T0 against the amplitude, solve_ivp spot checks, and the field for a given period."""
-    from ...integrate import solve_adaptive
-
     n_checks = int(amplitude_checks)
     if not 0 <= n_checks <= 20:
         raise ValueError(f"amplitude_checks must lie in [0, 20], got {shown(amplitude_checks)}")
@@ -218,14 +212,7 @@ def compute_period_ratio(inertia, moment, field, period, amplitude_checks):
     ratio = dynamics.pendulum_period(amp, inertia, moment, field) / t0
     plant = dynamics.Mockup(inertia, field, moment)
     check_amp = np.linspace(0.2, 0.97 * np.pi, n_checks)
-    check_ratio = []
-    for a in check_amp:
-        def turn(t, y, p):
-            return y[1]
-        turn.direction = 1.0
-        sol = solve_adaptive(dynamics.pendulum_rhs, (0, 50 * t0), [a, 0.0], args=(plant,), events=turn,
-                             method="RK45", rtol=1e-11, atol=1e-13)
-        check_ratio.append(2 * sol.t_events[0][0] / t0)
+    check_ratio = [sim.integrated_swing_period(plant, a) / t0 for a in check_amp]
     h_exact = dynamics.field_for_period(period, amp, inertia, moment) / MU_0
     # Eq. (15) as the thesis uses it is linear in its amplitude factor A (zero at A = 0).
     h_eq15 = dynamics.oscillation_field_h(inertia, moment, period) * amp
