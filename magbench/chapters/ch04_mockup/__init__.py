@@ -151,7 +151,7 @@ def dynamics_checks():
     sets = PRINTED_SETS
     stable = sum(bool(np.all(control.closed_loop_poles(j, b0, *g).real < 0)) for g in sets)
     # Routh–Hurwitz for J s³ + B0 Kd s² + B0 Kp s + B0 Ki: stable iff Ki < B0 Kp Kd / J.
-    excess = [ki / (b0 * kp * kd / j) for kp, ki, kd in sets]
+    excess = [float(control.critical_gain_scale(j, b0, kp, ki, kd)) for kp, ki, kd in sets]
     return [
         source_check(
             id="thesis-eq14-design-amplitude", chapter="ch04", source="thesis",

@@ -424,9 +424,8 @@ def reading_evidence(inertia, field, moment, initial_angle, duration=300.0):
             zeta = -slow.real / abs(slow)
             stable = bool(np.all(poles.real < 0))
             # Linear loop from rest at ψ0: states (ψ, ω, ∫e), output u = −Kp ψ + Ki ∫e − Kd ω.
-            a = np.array([[0, 1, 0], [-field * kp_ / inertia, -field * kd_ / inertia, field * ki_ / inertia],
-                          [-1, 0, 0]])
-            sys = ct.ss(a, np.zeros((3, 1)), [[-kp_, -kd_, ki_]], [[0]])
+            a, c = control.closed_loop_state_space(inertia, field, kp_, ki_, kd_)
+            sys = ct.ss(a, np.zeros((3, 1)), c, [[0]])
             u = ct.initial_response(sys, t, [initial_angle, 0, 0]).outputs if stable else np.array([np.inf])
             peak = float(np.max(np.abs(u)))
             per_set.append((stable, zeta, 4 / abs(slow.real) if stable else np.inf, peak))
