@@ -40,22 +40,16 @@ def _plant_parameters():
 # --- thesis Figs. 10–11: frames and forces of the mock-up on a thread --------------------
 
 def compute_geometry(psi, theta, phi, cm_offset, mass, field, moment):
-    """Frames, points and forces of the mock-up at one attitude (thesis Figs. 10–11)."""
-    from scipy.constants import g
-
-    r = dynamics.euler_313_matrix(psi, theta, phi)
-    a = np.zeros(3)
-    c = dynamics.thread_center_of_mass(0.0, 0.0, psi, theta, cm_offset)
-    b0 = np.array([field, 0.0, 0.0])
-    m_vec = moment * r[:, 0]                       # coil 1 along x'
-    torque = np.cross(m_vec, b0)
-    weight = np.array([0.0, 0.0, -mass * g])
+    """Frames, points and forces of the mock-up at one attitude (thesis Figs. 10–11,
+    :func:`magbench.dynamics.mockup_loads`)."""
+    loads = dynamics.mockup_loads(psi, theta, phi, cm_offset, mass, field, moment)
+    r, weight = loads["body_axes"], loads["weight"]
     cols = {
-        "A": ("m", a), "C": ("m", c),
+        "A": ("m", np.zeros(3)), "C": ("m", loads["center_of_mass"]),
         "x_body": ("1", r[:, 0]), "y_body": ("1", r[:, 1]), "z_body": ("1", r[:, 2]),
         "gravity_F_t": ("N", weight), "reaction_N": ("N", -weight),
-        "field_B0": ("T", b0), "dipole_m": ("A m^2", m_vec), "magnetic_torque": ("N m", torque),
-        "gravity_torque_about_A": ("N m", np.cross(c - a, weight)),
+        "field_B0": ("T", loads["field"]), "dipole_m": ("A m^2", loads["dipole"]),
+        "magnetic_torque": ("N m", loads["magnetic_torque"]), "gravity_torque_about_A": ("N m", loads["gravity_torque"]),
     }
     return FigureData("", "", "", {}, [Series("mock-up", cols)],
                       extra={"angles": (psi, theta, phi), "d": cm_offset})
