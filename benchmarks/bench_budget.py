@@ -1,8 +1,8 @@
 """Benchmark: chapter 4's error budget, members vectorised against a loop of single runs.
 
 Run as ``python benchmarks/bench_budget.py [base_samples] [loop_members]`` (defaults 32
-and 8). The budget evaluates Saltelli's design (``budget.sobol_design``, N·(D + 2)
-points over the 22 error sources) with ``budget.simulate_sources``: members sharing a
+and 8). The budget evaluates Saltelli's design (``bench.sobol_design``, N·(D + 2)
+points over the 22 error sources) with ``bench.source_error_bands``: members sharing a
 controller period run in one vectorised pass over time. The peer is the same function
 called once per member (the obvious loop over a design), timed on ``loop_members``
 points of the same design and extrapolated linearly to the whole design; the record
@@ -36,24 +36,24 @@ def main(base_samples=32, loop_members=8):
     setup = bench.BenchSetup.from_parameters(p)
     kw = dict(duration=p["bench_duration"], window=p["bench_error_window"], field_h=p["bench_field_h"])
     sources = budget.load_error_sources()
-    _, values = budget.sobol_design(sources, base_samples=base_samples, seed=1)
+    _, values = bench.sobol_design(sources, base_samples=base_samples, seed=1)
     members = len(next(iter(values.values())))
     t0 = time.perf_counter()
-    band, _ = budget.simulate_sources(setup, np.pi / 3, values, **kw)
+    band, _ = bench.source_error_bands(setup, np.pi / 3, values, **kw)
     ours = time.perf_counter() - t0
     # The loop on evenly spread points of the design (both controller periods occur).
     picks = np.linspace(0, members - 1, loop_members).astype(int)
     single = np.empty(loop_members)
     t0 = time.perf_counter()
     for j, i in enumerate(picks):
-        single[j] = budget.simulate_sources(setup, np.pi / 3, {k: v[i:i + 1] for k, v in values.items()}, **kw)[0][0]
+        single[j] = bench.source_error_bands(setup, np.pi / 3, {k: v[i:i + 1] for k, v in values.items()}, **kw)[0][0]
     loop_per_member = (time.perf_counter() - t0) / loop_members
     loop = loop_per_member * members
     diff = float(np.max(np.abs(single - band[picks])))
     print(f"magbench {magbench.__file__}")
     print(f"python {platform.python_version()}, numpy {np.__version__}")
     print(f"error budget, {members} members (N = {base_samples}) x {p['bench_duration']:.0f} s")
-    print(f"  simulate_sources, members vectorised : {ours:8.2f} s")
+    print(f"  source_error_bands, vectorised       : {ours:8.2f} s")
     print(f"  one call per member, {loop_per_member:5.2f} s x {members}: {loop:8.0f} s "
           f"(extrapolated from {loop_members})")
     print(f"  speed-up                             : {loop / ours:8.0f} x")

@@ -16,8 +16,8 @@ from .bdot import (avanzini_giulietti_gain, bdot_dipole, bdot_dipole_projected, 
                    kovalenko_detumble_time, samsat_gain)
 from .floquet import degree_of_stability, finite_difference_monodromy, floquet_multipliers
 from .gain_readings import GAIN_READINGS, gain_reading_scale
-from .linear import (closed_loop_poles, closed_loop_polynomial, critical_gain_scale,
-                     double_integrator_ultimate_gain, integral_gain_limit)
+from .linear import (closed_loop_poles, closed_loop_polynomial, closed_loop_state_space, closed_loop_transfer,
+                     critical_gain_scale, double_integrator_ultimate_gain, integral_gain_limit, open_loop_transfer)
 from .pid import pid_gains_for_triple_pole, pid_step, ziegler_nichols_pid
 from .rotor_stability import (rotor_floquet_multipliers, rotor_linearised_matrices, rotor_model_numbers,
                               rotor_stability_map)
@@ -26,7 +26,8 @@ from .spin import (momentum_damping_dipole, projected_damping_dipole, relay_spin
                    rotor_reference_momentum, rotor_spin_reference, slides_printed_damping_torque)
 
 __all__ = ["pid_step", "pid_gains_for_triple_pole", "ALLOCATIONS", "body_field_exact", "body_field_small_angle",
-           "dipole_allocation", "closed_loop_polynomial", "closed_loop_poles",
+           "dipole_allocation", "closed_loop_polynomial", "closed_loop_poles", "open_loop_transfer",
+           "closed_loop_transfer", "closed_loop_state_space",
            "integral_gain_limit", "critical_gain_scale", "ziegler_nichols_pid",
            "double_integrator_ultimate_gain", "GAIN_READINGS", "gain_reading_scale", "bdot_dipole",
            "bdot_dipole_projected", "avanzini_giulietti_gain", "samsat_gain", "kovalenko_detumble_time",

@@ -1,5 +1,5 @@
-r"""Linear analysis of the mock-up's PID loop: characteristic polynomial, poles,
-the Routh–Hurwitz limit on the integral gain, ultimate gains.
+r"""Linear analysis of the mock-up's PID loop: characteristic polynomial, poles, transfer
+functions and state space, the Routh–Hurwitz limit on the integral gain, ultimate gains.
 
 Thesis §4.1, eqs. (36)–(38) linearised; python-control is the peer in the tests. SI.
 """
@@ -8,8 +8,16 @@ import numpy as np
 
 from .._validate import as_finite, as_positive
 
-__all__ = ["closed_loop_polynomial", "closed_loop_poles", "integral_gain_limit", "critical_gain_scale",
-           "double_integrator_ultimate_gain"]
+__all__ = ["closed_loop_polynomial", "closed_loop_poles", "open_loop_transfer", "closed_loop_transfer",
+           "closed_loop_state_space", "integral_gain_limit", "critical_gain_scale", "double_integrator_ultimate_gain"]
+
+
+def _checked_loop(inertia, field, kp, ki, kd):
+    """(J, B0, K_p, K_i, K_d) as floats, checked: J, B0 > 0, the gains finite."""
+    j = float(as_positive("inertia", inertia, unit="kg·m²"))
+    b = float(as_positive("field", field, unit="T"))
+    kp, ki, kd = (float(as_finite(n, v)) for n, v in (("kp", kp), ("ki", ki), ("kd", kd)))
+    return j, b, kp, ki, kd
 
 
 def closed_loop_polynomial(inertia, field, kp, ki, kd):
@@ -40,9 +48,7 @@ def closed_loop_polynomial(inertia, field, kp, ki, kd):
     >>> closed_loop_polynomial(0.005, 1e-4, 0.1, 0.5, 0.5)
     array([5.e-03, 5.e-05, 1.e-05, 5.e-05])
     """
-    j = float(as_positive("inertia", inertia, unit="kg·m²"))
-    b = float(as_positive("field", field, unit="T"))
-    kp, ki, kd = (float(as_finite(n, v)) for n, v in (("kp", kp), ("ki", ki), ("kd", kd)))
+    j, b, kp, ki, kd = _checked_loop(inertia, field, kp, ki, kd)
     return np.array([j, b * kd, b * kp, b * ki])
 
 
@@ -77,6 +83,109 @@ def closed_loop_poles(inertia, field, kp, ki, kd):
     """
     roots = np.roots(closed_loop_polynomial(inertia, field, kp, ki, kd))
     return roots[np.argsort(-roots.real, kind="stable")]
+
+
+def open_loop_transfer(inertia, field, kp, ki, kd):
+    r"""Numerator and denominator of the loop transfer function, the PID times the plant.
+
+    Parameters
+    ----------
+    inertia : float
+        J [kg·m²], > 0.
+    field : float
+        B0 [T], > 0.
+    kp, ki, kd : float
+        Gains [A·m²/rad], [A·m²/(rad·s)], [A·m²·s/rad].
+
+    Returns
+    -------
+    numerator, denominator : ndarray
+        Coefficients, highest power first, of
+        :math:`L(s) = B_0(K_d s^2 + K_p s + K_i)/(J s^3)` [-]: the PID
+        :math:`C(s) = K_p + K_i/s + K_d s` on the double integrator :math:`B_0/(J s^2)`.
+        A common factor k on the gains is the root locus's gain.
+
+    Notes
+    -----
+    Thesis eqs. (36)–(38) linearised as in :func:`closed_loop_polynomial` (not in the
+    thesis, which does not linearise its loop).
+
+    Examples
+    --------
+    >>> open_loop_transfer(0.005, 1e-4, 0.1, 0.5, 0.5)
+    (array([5.e-05, 1.e-05, 5.e-05]), array([0.005, 0.   , 0.   , 0.   ]))
+    """
+    j, b, kp, ki, kd = _checked_loop(inertia, field, kp, ki, kd)
+    return b * np.array([kd, kp, ki]), np.array([j, 0.0, 0.0, 0.0])
+
+
+def closed_loop_transfer(inertia, field, kp, ki, kd):
+    r"""Numerator and denominator of the closed loop from the target ψ_des to ψ.
+
+    Parameters
+    ----------
+    inertia : float
+        J [kg·m²], > 0.
+    field : float
+        B0 [T], > 0.
+    kp, ki, kd : float
+        Gains [A·m²/rad], [A·m²/(rad·s)], [A·m²·s/rad].
+
+    Returns
+    -------
+    numerator, denominator : ndarray
+        Coefficients, highest power first, of :math:`B_0(K_p s + K_i)` and of
+        :func:`closed_loop_polynomial` [-]: the derivative acts on the measured rate
+        (u = K_p e + K_i ∫e − K_d ω, as the loop runs), so it adds no zero.
+
+    Notes
+    -----
+    Thesis eqs. (36)–(38) linearised as in :func:`closed_loop_polynomial` (not in the thesis).
+
+    Examples
+    --------
+    >>> closed_loop_transfer(0.005, 1e-4, 0.1, 0.5, 0.5)[0]
+    array([1.e-05, 5.e-05])
+    """
+    j, b, kp, ki, kd = _checked_loop(inertia, field, kp, ki, kd)
+    return b * np.array([kp, ki]), closed_loop_polynomial(j, b, kp, ki, kd)
+
+
+def closed_loop_state_space(inertia, field, kp, ki, kd):
+    r"""State and output matrices of the linearised closed loop about ψ_des = 0.
+
+    Parameters
+    ----------
+    inertia : float
+        J [kg·m²], > 0.
+    field : float
+        B0 [T], > 0.
+    kp, ki, kd : float
+        Gains [A·m²/rad], [A·m²/(rad·s)], [A·m²·s/rad].
+
+    Returns
+    -------
+    a : ndarray, shape (3, 3)
+        :math:`\dot x = A x` for the states x = (ψ [rad], ω [rad/s], ∫e dt [rad·s]) with
+        e = −ψ: rows (0, 1, 0), (−B0K_p/J, −B0K_d/J, B0K_i/J), (−1, 0, 0) [SI].
+    c : ndarray, shape (1, 3)
+        The PID output u = C x = −K_p ψ − K_d ω + K_i ∫e [A·m²]: (−K_p, −K_d, K_i).
+
+    Notes
+    -----
+    Thesis eqs. (36)–(38) linearised as in :func:`closed_loop_polynomial` (not in the
+    thesis); the eigenvalues of A are :func:`closed_loop_poles`.
+
+    Examples
+    --------
+    >>> a, c = closed_loop_state_space(0.005, 1e-4, 0.1, 0.5, 0.5)
+    >>> bool(np.allclose(np.sort_complex(np.linalg.eigvals(a)),
+    ...                  np.sort_complex(closed_loop_poles(0.005, 1e-4, 0.1, 0.5, 0.5))))
+    True
+    """
+    j, b, kp, ki, kd = _checked_loop(inertia, field, kp, ki, kd)
+    a = np.array([[0.0, 1.0, 0.0], [-b * kp / j, -b * kd / j, b * ki / j], [-1.0, 0.0, 0.0]])
+    return a, np.array([[-kp, -kd, ki]])
 
 
 def integral_gain_limit(inertia, field, kp, kd):

@@ -13,7 +13,7 @@ from .gyrostat import (airplane_231_angles, airplane_231_matrix, gyrostat_kineti
                        rotor_reduced_rhs, semi_body_axes, semi_body_field, semi_body_rhs)
 from .energy_exchange import momentum_exchange_energy_ratio, thesis_energy_ratio
 from .pendulum import (Mockup, amplitude_for_period, body_rates_313, euler_313_matrix, field_for_period,
-                       mockup_rhs, natural_frequency, pendulum_energy, pendulum_peak_rate, pendulum_period, pendulum_rhs,
+                       mockup_loads, mockup_rhs, natural_frequency, pendulum_energy, pendulum_peak_rate, pendulum_period, pendulum_rhs,
                        plant_step, small_angle_period, thread_center_of_mass, two_coil_rhs, two_coil_torque)
 from .rigid_body import euler_rates, gravity_gradient_torque, quaternion_rate, rotate_to_body, rotate_to_inertial
 from .swing import oscillation_field_h, oscillation_moment
@@ -23,7 +23,7 @@ from .axisymmetric import (body_rate_from_momentum, conical_rotation_angle, coni
                            euler_case_matrix, euler_case_rates, momentum_and_nutation)
 
 __all__ = ["momentum_exchange_energy_ratio", "thesis_energy_ratio", "two_coil_torque", "Mockup",
-           "euler_313_matrix", "thread_center_of_mass", "body_rates_313", "pendulum_rhs", "two_coil_rhs", "mockup_rhs", "plant_step",
+           "euler_313_matrix", "thread_center_of_mass", "mockup_loads", "body_rates_313", "pendulum_rhs", "two_coil_rhs", "mockup_rhs", "plant_step",
            "pendulum_energy", "natural_frequency", "small_angle_period", "pendulum_period",
            "pendulum_peak_rate", "field_for_period", "amplitude_for_period", "magnetic_torque",
            "magnetic_torque_from_h", "perpendicular_moment", "oscillation_field_h", "oscillation_moment",

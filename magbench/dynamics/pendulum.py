@@ -7,12 +7,13 @@ and the exact period of the magnetic pendulum beside the small-angle thesis eq. 
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.constants import g as STANDARD_GRAVITY
 from scipy.special import ellipk
 
 from ..integrate import rk4_step
-from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, shown
+from .._validate import as_finite, as_in_range, as_nonnegative, as_positive, as_positive_scalar, shown
 
-__all__ = ["two_coil_torque", "Mockup", "euler_313_matrix", "thread_center_of_mass", "body_rates_313",
+__all__ = ["two_coil_torque", "Mockup", "euler_313_matrix", "thread_center_of_mass", "mockup_loads", "body_rates_313",
            "pendulum_rhs", "two_coil_rhs", "mockup_rhs", "pendulum_energy", "natural_frequency",
            "small_angle_period", "pendulum_period", "pendulum_peak_rate", "field_for_period", "amplitude_for_period",
            "plant_step"]
@@ -155,6 +156,53 @@ def thread_center_of_mass(x, y, psi, theta, cm_offset):
                                         np.cos(theta)), -1)
     point = np.stack(np.broadcast_arrays(x, y, np.zeros_like(x)), -1)
     return point - np.asarray(d)[..., np.newaxis] * axis
+
+
+def mockup_loads(psi, theta, phi, cm_offset, mass, field, moment):
+    r"""Frames, forces and torques on the mock-up hanging from A at one attitude.
+
+    Parameters
+    ----------
+    psi, theta, phi : array_like
+        3-1-3 Euler angles [rad] (:func:`euler_313_matrix`), broadcast together.
+    cm_offset : array_like
+        Distance d from the suspension point A down to C along z' [m], ≥ 0.
+    mass : float
+        Mock-up mass M [kg], > 0.
+    field : float
+        Horizontal field B0 along the fixed x axis [T].
+    moment : float
+        Dipole of coil 1, along the body axis x' [A·m²].
+
+    Returns
+    -------
+    dict of str to ndarray
+        ``body_axes`` R (columns x', y', z' in fixed axes) [-]; ``center_of_mass`` C
+        with A at the origin [m]; ``weight`` F_t = (0, 0, −Mg) at C [N] (the thread's
+        reaction at A is −F_t); ``field`` (B0, 0, 0) [T]; ``dipole`` m = m1 e_x' [A·m²];
+        ``magnetic_torque`` m × B0 and ``gravity_torque`` (C − A) × F_t about A [N·m].
+
+    Notes
+    -----
+    Thesis §4.1, Figs. 10–11: gravity at C, the reaction at A (it does no work: A stays
+    in its plane) and the coil's torque in the field.
+
+    Examples
+    --------
+    >>> loads = mockup_loads(0.0, 0.0, 0.0, 0.05, 1.0, 1e-4, 0.4)
+    >>> loads["magnetic_torque"] + 0.0, loads["gravity_torque"] + 0.0
+    (array([0., 0., 0.]), array([0., 0., 0.]))
+    """
+    r = euler_313_matrix(psi, theta, phi)
+    mass = as_positive_scalar("mass", mass, unit="kg")
+    field = float(as_finite("field", field))
+    moment = float(as_finite("moment", moment))
+    c = thread_center_of_mass(0.0, 0.0, psi, theta, cm_offset)
+    b0 = np.array([field, 0.0, 0.0])
+    m_vec = moment * r[..., :, 0]                       # coil 1 along x'
+    weight = np.array([0.0, 0.0, -mass * STANDARD_GRAVITY])
+    return {"body_axes": r, "center_of_mass": c, "weight": weight, "field": b0, "dipole": m_vec,
+            "magnetic_torque": np.cross(m_vec, b0), "gravity_torque": np.cross(c, weight)}
 
 
 def body_rates_313(psi, theta, phi, psi_rate, theta_rate, phi_rate):

@@ -10,8 +10,8 @@ Re-exports the public functions of its modules.
 """
 
 from .decay_fit import DecayFit, corrected_aic, fit_exponential_decay, fit_linear_decay
-from .complementary import (complementary_filter, complementary_filter_step, complementary_time_constant,
-                            gyro_offset_error)
+from .complementary import (complementary_error_terms, complementary_filter, complementary_filter_step,
+                            complementary_time_constant, gyro_offset_error)
 from .euler_session import (SESSION_CONSTANTS, euler_case_sun_signals, fit_frequency_first, fit_multistart,
                             fit_nested_grid, fold_start_time, mirror_solution, momentum_bound,
                             session_identifiability, session_recovered, session_rms, synthetic_session)
@@ -23,6 +23,7 @@ from .offline import offline_tilt, two_sided_rest
 
 __all__ = [
     "complementary_filter", "complementary_filter_step", "complementary_time_constant", "gyro_offset_error",
+    "complementary_error_terms",
     "accelerometer_tilt", "strapdown_orientation", "rest_gyro_bias", "complementary_tilt",
     "offline_tilt", "two_sided_rest",
     "magnetometer_heading", "triad_attitude", "samsat_triad_frame", "triad_covariance",

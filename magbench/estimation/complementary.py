@@ -1,16 +1,20 @@
 r"""The complementary filter of thesis §4.2, eq. (39): one step, a whole series, its
-time constant, and the steady error a constant gyro offset leaves through it.
+time constant, the steady error a constant gyro offset leaves through it, and the
+steady error terms of sensor noise and vibration.
 
 The filter blends the integrated gyro rate with an absolute angle from another sensor.
 SI: radians, rad/s, seconds.
 """
 
 import numpy as np
+from scipy.constants import g as STANDARD_GRAVITY
 from scipy.signal import lfilter
+from scipy.special import j0
 
-from .._validate import as_finite, as_in_range, as_positive
+from .._validate import as_finite, as_in_range, as_nonnegative, as_positive
 
-__all__ = ["complementary_filter_step", "complementary_filter", "complementary_time_constant", "gyro_offset_error"]
+__all__ = ["complementary_filter_step", "complementary_filter", "complementary_time_constant", "gyro_offset_error",
+           "complementary_error_terms"]
 
 
 def complementary_filter_step(angle, gyro_rate, reference_angle, dt, alpha):
@@ -173,3 +177,69 @@ def gyro_offset_error(offset, filter_coefficient, sample_interval):
     if np.any(~np.isfinite(dt) | (dt <= 0)):
         raise ValueError(f"sample_interval must be > 0 s, got {dt}")
     return a * np.asarray(offset, float) * dt / (1.0 - a)
+
+
+def complementary_error_terms(sample_interval, alpha, gyro_offset, gyro_noise_std, accel_noise_std,
+                              vibration_amplitude, vibration_frequency, motion_amplitude,
+                              gravity=STANDARD_GRAVITY):
+    r"""Closed-form steady error terms of the complementary filter on a roll angle [rad].
+
+    Parameters
+    ----------
+    sample_interval : float
+        Δt [s], > 0.
+    alpha : array_like
+        Filter coefficient A [-] in [0, 1).
+    gyro_offset : array_like
+        Constant gyro offset b [rad/s].
+    gyro_noise_std : array_like
+        Per-sample standard deviation of the gyro's white noise σ_ω [rad/s], >= 0.
+    accel_noise_std : array_like
+        Per-sample standard deviation of the accelerometer's white noise σ_a [m/s²], >= 0.
+    vibration_amplitude : array_like
+        Amplitude a_v of a sinusoidal vibration on the accelerometer's y axis [m/s²], >= 0.
+    vibration_frequency : float
+        Its frequency f_v [Hz], >= 0.
+    motion_amplitude : array_like
+        Amplitude θ0 of the sinusoidal roll [rad].
+    gravity : float, optional
+        g [m/s²], > 0; default standard gravity.
+
+    Returns
+    -------
+    offset, accel_noise, vibration, gyro_noise : ndarray
+        Each [rad]: a gyro offset b gives the constant offset b·τ with τ = AΔt/(1−A);
+        accelerometer noise (angle std σ_a/g) passes the low-pass with variance gain
+        (1−A)/(1+A); the vibration (angle amplitude ≈ a_v cos θ/g, cos θ at its RMS over the
+        roll, √((1 + J0(2θ0))/2)) passes with the gain |(1−A)/(1−A e^{−jωΔt})| at its
+        frequency, as an RMS; gyro noise σ_ω is integrated with gain AΔt, variance gain
+        A²Δt²/(1−A²). The terms add in quadrature to the RMS error.
+
+    Notes
+    -----
+    Thesis eq. (39) as a linear filter: the error terms are not in the thesis.
+
+    Examples
+    --------
+    >>> terms = complementary_error_terms(0.01, 0.98, 0.001, 0.0, 0.0, 0.0, 7.0, 0.0)
+    >>> [round(float(t), 8) for t in terms]
+    [0.00049, 0.0, 0.0, 0.0]
+    """
+    as_positive("sample_interval", sample_interval, unit="s")
+    as_finite("gyro_offset", gyro_offset)
+    as_nonnegative("gyro_noise_std", gyro_noise_std, unit="rad/s")
+    as_nonnegative("accel_noise_std", accel_noise_std, unit="m/s²")
+    as_nonnegative("vibration_amplitude", vibration_amplitude, unit="m/s²")
+    as_nonnegative("vibration_frequency", vibration_frequency, unit="Hz")
+    as_finite("motion_amplitude", motion_amplitude)
+    as_positive("gravity", gravity, unit="m/s²")
+    tau = complementary_time_constant(sample_interval, alpha)
+    acc_std = accel_noise_std / gravity
+    # RMS of cos θ over a sine of amplitude θ0: sqrt((1 + J0(2θ0))/2).
+    cos_rms = np.sqrt(0.5 * (1 + j0(2 * motion_amplitude)))
+    z = np.exp(1j * 2 * np.pi * vibration_frequency * sample_interval)
+    gain = np.abs((1 - alpha) / (1 - alpha / z))
+    vib = vibration_amplitude / gravity * cos_rms / np.sqrt(2) * gain
+    acc = acc_std * np.sqrt((1 - alpha) / (1 + alpha))
+    gyr = gyro_noise_std * alpha * sample_interval / np.sqrt(1 - alpha**2)
+    return gyro_offset * tau, acc, vib, gyr

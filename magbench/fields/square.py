@@ -7,11 +7,11 @@ pair). SI throughout.
 import numpy as np
 from scipy import optimize
 
-from .._validate import as_finite, as_vectors
+from .._validate import as_finite, as_positive_scalar, as_vectors
 from ..constants import MU_0
 from ._inputs import _center, _finite_scalar, _frame, _positive_scalar
 
-__all__ = ["square_loop_b", "square_loop_axial_b", "square_pair_spacing"]
+__all__ = ["square_loop_b", "square_loop_axial_b", "square_loop_center_b_per_moment", "square_pair_spacing"]
 
 
 def _segments_b(p, starts, ends):
@@ -130,6 +130,37 @@ def square_loop_axial_b(z, side, current, turns=1):
     n = _positive_scalar("turns", turns)
     h2 = (s / 2.0) ** 2
     return 2.0 * MU_0 * n * i * h2 / (np.pi * (h2 + zz**2) * np.sqrt(2.0 * h2 + zz**2))
+
+
+def square_loop_center_b_per_moment(side):
+    r"""Flux density at the center of a square loop per unit of its dipole moment [T/(A·m²)].
+
+    Parameters
+    ----------
+    side : float
+        Side l of the square turn [m], > 0.
+
+    Returns
+    -------
+    float
+        :math:`|B(0)|/m = 2\sqrt2\,\mu_0/(\pi l^3)` for any N and I (m = N I l²), by
+        Biot–Savart over the four sides (:func:`square_loop_b`).
+
+    Notes
+    -----
+    Not in the thesis. A sensor inside a square coil (a magnetometer within a mock-up's
+    coils) sees this near field; the far-field dipole :math:`\mu_0/(2\pi r^3)` does not
+    apply there.
+
+    Examples
+    --------
+    >>> from magbench.constants import MU_0
+    >>> bool(np.isclose(square_loop_center_b_per_moment(0.1), 2 * np.sqrt(2) * MU_0 / (np.pi * 0.1 ** 3)))
+    True
+    """
+    side = as_positive_scalar("side", side, unit="m")
+    b = square_loop_b([0.0, 0.0, 0.0], side, 1.0, turns=1)
+    return float(np.linalg.norm(b) / side ** 2)
 
 
 def square_pair_spacing(side):

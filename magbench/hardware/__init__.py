@@ -9,7 +9,8 @@ Pure functions of numpy arrays, SI. Re-exports the public functions of its modul
 from .sensors import (HMC5883L_GAINS, HMC5883L_MAX_COUNT, HMC5883L_MAX_OUTPUT_RATE, HMC5883L_NOISE_FLOOR, MPU6050_ACCEL_NOISE_DENSITY,
                       MPU6050_ACCEL_ZERO_G_TOLERANCE, MPU6050_DLPF_BANDWIDTH, MPU6050_GYRO_NOISE_DENSITY,
                       MPU6050_GYRO_TOTAL_RMS_NOISE, MPU6050_GYRO_ZRO_TOLERANCE, accelerometer_readings,
-                      gyro_readings, magnetometer_full_scale, magnetometer_readings, noise_std_from_density)
+                      gyro_readings, heading_readings, magnetometer_full_scale, magnetometer_readings,
+                      noise_std_from_density, roll_readings)
 from .turn import SHAPES, Turn, awg_diameter, turn_area, turn_length, wire_area, wire_diameter
 from .magnetorquer import (coil_current, coil_mass, coil_mass_for_moment, coil_resistance,
                            current_for_moment, dipole_moment, joule_power, joule_power_for_moment,
@@ -48,5 +49,6 @@ __all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_r
            "MPU6050_GYRO_NOISE_DENSITY", "MPU6050_GYRO_TOTAL_RMS_NOISE",
            "MPU6050_GYRO_ZRO_TOLERANCE", "MPU6050_ACCEL_NOISE_DENSITY", "MPU6050_ACCEL_ZERO_G_TOLERANCE",
            "MPU6050_DLPF_BANDWIDTH", "HMC5883L_NOISE_FLOOR", "HMC5883L_MAX_OUTPUT_RATE", "HMC5883L_GAINS", "HMC5883L_MAX_COUNT",
-           "noise_std_from_density", "gyro_readings", "accelerometer_readings", "magnetometer_readings", "magnetometer_full_scale"]
+           "noise_std_from_density", "gyro_readings", "accelerometer_readings", "magnetometer_readings", "magnetometer_full_scale",
+           "roll_readings", "heading_readings"]
 from .sun_sensor import sun_sensor_signals

@@ -50,6 +50,8 @@ __all__ = [
     "gyro_readings",
     "accelerometer_readings",
     "magnetometer_readings",
+    "roll_readings",
+    "heading_readings",
 ]
 
 _DEG = np.pi / 180.0
@@ -354,3 +356,113 @@ def magnetometer_readings(true_field, dt, *, rng, noise_std=HMC5883L_NOISE_FLOOR
     sigma = _channel("noise_std", noise_std, sample, nonnegative=True)
     bias = _channel("offset", offset, sample)
     return field + bias + sigma * rng.standard_normal(field.shape)
+
+
+def _mean_rate(angle, step):
+    """Rate each gyro sample carries: the mean over the interval before it [rad/s] (zero first)."""
+    return np.diff(angle, prepend=angle[0]) / step
+
+
+def _angle_series(name, value):
+    angle = _check_series(name, value)
+    if angle.ndim != 1:
+        raise ValueError(f"{name} must be one angle per sample, shape (N,), got shape {angle.shape}")
+    return angle
+
+
+def roll_readings(roll_angle, dt, *, rng, gyro_bias=0.0, vibration_amplitude=0.0, vibration_frequency=0.0):
+    r"""What an MPU-6050 reads while it rolls about its x axis, z up when level.
+
+    Parameters
+    ----------
+    roll_angle : array_like, shape (N,)
+        Roll angle θ at each sample [rad].
+    dt : float
+        Sample interval [s], > 0.
+    rng : numpy.random.Generator
+        Source of the noise and the vibration phases [-]; the gyro draws first.
+    gyro_bias : array_like, optional
+        Gyro zero-rate offset [rad/s] (:func:`gyro_readings`); default 0.
+    vibration_amplitude : array_like, optional
+        Accelerometer vibration amplitude [m/s²], >= 0, scalar or per axis (3,)
+        (:func:`accelerometer_readings`); default 0.
+    vibration_frequency : array_like, optional
+        Its frequency [Hz], >= 0, scalar or per axis (3,); default 0.
+
+    Returns
+    -------
+    gyro_rate : ndarray, shape (N,)
+        Gyro x readings [rad/s]; sample k carries the mean rate over the interval before it,
+        (θ_k − θ_{k−1})/Δt (zero for the first).
+    specific_force : ndarray, shape (N, 3)
+        Accelerometer readings [m/s²] of the specific force g·(0, sin θ, cos θ).
+
+    Notes
+    -----
+    Not in the thesis: the thesis's filter, eq. (39), takes a gyro rate and an
+    accelerometer angle atan2(a_y, a_z); these are the readings a slow roll gives
+    (no centripetal or tangential acceleration).
+
+    Examples
+    --------
+    >>> w, f = roll_readings(np.zeros(100), 0.01, rng=np.random.default_rng(1))
+    >>> w.shape, f.shape, bool(abs(f[:, 2].mean() - STANDARD_GRAVITY) < 0.01)
+    ((100,), (100, 3), True)
+    """
+    angle = _angle_series("roll_angle", roll_angle)
+    step = as_positive_scalar("dt", dt, unit="s")
+    gyro = gyro_readings(_mean_rate(angle, step), step, rng=rng, bias=gyro_bias)
+    force = STANDARD_GRAVITY * np.stack([np.zeros(angle.size), np.sin(angle), np.cos(angle)], axis=1)
+    accel = accelerometer_readings(force, step, rng=rng, vibration_amplitude=vibration_amplitude,
+                                   vibration_frequency=vibration_frequency)
+    return gyro, accel
+
+
+def heading_readings(heading, field, dt, *, rng, gyro_bias=0.0):
+    r"""What an MPU-6050 and an HMC5883L read while they turn about the vertical in a
+    horizontal field.
+
+    Parameters
+    ----------
+    heading : array_like, shape (N,)
+        Heading ψ at each sample [rad]: the angle from the field to the sensors' x axis,
+        positive about z (up).
+    field : float
+        Magnitude of the horizontal flux density [T], >= 0.
+    dt : float
+        Sample interval [s], > 0.
+    rng : numpy.random.Generator
+        Source of the noise [-]; gyro, accelerometer and magnetometer draw in this order.
+    gyro_bias : array_like, optional
+        Gyro zero-rate offset [rad/s]; default 0.
+
+    Returns
+    -------
+    gyro_rate : ndarray, shape (N,)
+        Gyro z readings [rad/s]; sample k carries the mean rate over the interval before it.
+    specific_force : ndarray, shape (N, 3)
+        Accelerometer readings [m/s²] of (0, 0, g): the same for every heading.
+    flux_density : ndarray, shape (N, 3)
+        Magnetometer readings [T] of B·(cos ψ, −sin ψ, 0).
+
+    Notes
+    -----
+    Not in the thesis: thesis §4.2 blends the gyro with an "accelerometer angle"; turning
+    about the vertical, gravity is parallel to the rotation axis and the accelerometer
+    cannot see the heading, while the magnetometer can.
+
+    Examples
+    --------
+    >>> w, f, b = heading_readings(np.zeros(50), 20e-6, 0.01, rng=np.random.default_rng(1))
+    >>> b.shape, bool(abs(b[:, 0].mean() - 20e-6) < 1e-7)
+    ((50, 3), True)
+    """
+    psi = _angle_series("heading", heading)
+    as_nonnegative("field", field, unit="T")
+    step = as_positive_scalar("dt", dt, unit="s")
+    n = psi.size
+    gyro = gyro_readings(_mean_rate(psi, step), step, rng=rng, bias=gyro_bias)
+    force = np.tile([0.0, 0.0, STANDARD_GRAVITY], (n, 1))
+    accel = accelerometer_readings(force, step, rng=rng)
+    b_true = field * np.stack([np.cos(psi), -np.sin(psi), np.zeros(n)], axis=1)
+    return gyro, accel, magnetometer_readings(b_true, step, rng=rng)

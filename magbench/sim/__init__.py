@@ -1,5 +1,6 @@
 """Simulations composed from the physics families: one integrator (:func:`rk4_step`), one
-result type (:class:`SimulationResult`), the mock-up's PID loop (:mod:`.pid_loop`) and the
+result type (:class:`SimulationResult`), the mock-up's free swing (:mod:`.free_swing`), its PID loop
+(:mod:`.pid_loop`) and the
 bench loop (the :mod:`.bench` package), B-dot detumbling on orbit (:mod:`.detumble`, in segments
 whose step follows the rate: :mod:`.detumble_segments`), the spinning spacecraft with a coaxial rotor
 (:mod:`.spinning`, its normalised model :mod:`.rotor_normalised`, the turning-field run
@@ -14,6 +15,7 @@ spacecraft and the passive satellite; the bench loop is imported from its packag
 from .detumble import DetumbleRun, detumble_monte_carlo, detumble_time, simulate_detumble
 from .detumble_segments import DETUMBLE_STEPS, detumble_step, simulate_detumble_segments
 from ..integrate import rk4_step
+from .free_swing import integrated_swing_period, simulate_free_swing
 from .pid_loop import PidLoop, loop_torque, pid_continuous_rhs, simulate_pid
 from .passive import PassiveRun, PassiveSatellite, initial_passive_state, simulate_passive
 from .passive_regime import orbit_mean_field, passive_final_regime
@@ -25,7 +27,7 @@ from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimension
                        simulate_rotor_normalised, simulate_turning_field_gyrostat)
 from .spin_correction import relay_spin_correction
 
-__all__ = ["rk4_step", "SimulationResult", "PidLoop", "loop_torque", "pid_continuous_rhs", "simulate_pid", "DetumbleRun", "simulate_detumble", "detumble_time",
+__all__ = ["rk4_step", "SimulationResult", "simulate_free_swing", "integrated_swing_period", "PidLoop", "loop_torque", "pid_continuous_rhs", "simulate_pid", "DetumbleRun", "simulate_detumble", "detumble_time",
            "detumble_monte_carlo", "DETUMBLE_STEPS", "detumble_step", "simulate_detumble_segments",
            "PassiveSatellite", "PassiveRun", "simulate_passive", "initial_passive_state", "flat_spin_decay_rate",
            "orbit_mean_field", "passive_final_regime",

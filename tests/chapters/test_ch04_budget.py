@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
+from magbench import fields
 from magbench.chapters.ch04_mockup import budget
 from magbench.hardware import sensors
 from magbench.params import chapter_parameters
@@ -97,8 +98,8 @@ def test_background_field_turns_the_reference(setup, sources, p):
     """A background H_b across the simulator's axis turns the field by atan(H_b/H_s): the
     error seen against the simulator's axis is that angle, the loop's error zero."""
     hb = sources["background_h"].high
-    band, ind = budget.simulate_sources(setup, np.pi / 3, {"background_h": np.array([hb, 0.5 * hb])},
-                                        field_h=p["bench_field_h"], **RUN)
+    band, ind = bench.source_error_bands(setup, np.pi / 3, {"background_h": np.array([hb, 0.5 * hb])},
+                                           field_h=p["bench_field_h"], **RUN)
     expected = np.arctan(np.array([hb, 0.5 * hb]) / p["bench_field_h"])
     assert_allclose(band, expected, atol=1e-4)
 
@@ -120,9 +121,9 @@ def test_explicit_zero_errors_reproduce_the_nominal_model_exactly(setup):
 
 
 def test_budget_nominal_values_reproduce_the_bench_as_designed(setup, p):
-    """simulate_sources at the nominal values is simulate_bench released at the target (the
+    """source_error_bands at the nominal values is simulate_bench released at the target (the
     budget's thread is untwisted there: its neutral angle is counted from the target)."""
-    band, _ = budget.simulate_sources(setup, np.pi / 3, {}, field_h=p["bench_field_h"], **RUN)
+    band, _ = bench.source_error_bands(setup, np.pi / 3, {}, field_h=p["bench_field_h"], **RUN)
     ref = bench.simulate_bench(setup, np.pi / 3, release_angle=np.pi / 3,
                                errors=bench.BenchErrors(thread_neutral_angle=np.pi / 3), **RUN)
     assert np.array_equal(band, ref.error_band)
@@ -131,7 +132,7 @@ def test_budget_nominal_values_reproduce_the_bench_as_designed(setup, p):
 def test_band_grows_with_each_heading_error_away_from_zero(setup, sources, p):
     """Monotonicity: the band grows with |gyro offset| and |misalignment| on each side of zero."""
     some = {k: sources[k] for k in ("gyro_offset", "magnetometer_misalignment")}
-    res = budget.one_at_a_time(setup, [np.pi / 3], some, points=7, field_h=p["bench_field_h"], **RUN)
+    res = bench.one_at_a_time(setup, [np.pi / 3], some, points=7, field_h=p["bench_field_h"], **RUN)
     for name, (x, band, _) in res.items():
         b = band[0]
         assert np.all(np.diff(b[3:]) > 0) and np.all(np.diff(b[:4]) < 0), name
@@ -163,10 +164,10 @@ def test_sobol_wiring_on_the_ishigami_function():
     a, b = 7.0, 0.1
     src = {n: budget.ErrorSource(n, -np.pi, np.pi, "rad", "linear", "ours", "test", "test")
            for n in ("x1", "x2", "x3")}
-    problem, values = budget.sobol_design(src, base_samples=4096, seed=7)
+    problem, values = bench.sobol_design(src, base_samples=4096, seed=7)
     y = _ishigami([values["x1"], values["x2"], values["x3"]])
     # sobol_analysis works on radians and converts to degrees: a linear scale leaves indices alone.
-    res = budget.sobol_analysis(problem, values, np.radians(y), np.radians(y), threshold=np.radians(10.0), seed=7)
+    res = bench.sobol_analysis(problem, values, np.radians(y), np.radians(y), threshold=np.radians(10.0), seed=7)
     v1 = 0.5 * (1 + b * np.pi ** 4 / 5) ** 2
     v2 = a ** 2 / 8
     v13 = b ** 2 * np.pi ** 8 * (1 / 18 - 1 / 50)
@@ -200,15 +201,15 @@ def test_bad_error_inputs_are_named(setup, kw, match):
 
 def test_bad_budget_inputs_are_named(setup, sources):
     with pytest.raises(ValueError, match="base_samples"):
-        budget.sobol_design(sources, base_samples=100, seed=1)
+        bench.sobol_design(sources, base_samples=100, seed=1)
     with pytest.raises(ValueError, match="unknown"):
-        budget.sobol_design(sources, base_samples=8, seed=1, fixed={"gyro_ofset": 0.0})
+        bench.sobol_design(sources, base_samples=8, seed=1, fixed={"gyro_ofset": 0.0})
     with pytest.raises(ValueError, match="points"):
-        budget.one_at_a_time(setup, [1.0], sources, points=1, duration=1.0, window=0.5, field_h=262.0)
+        bench.one_at_a_time(setup, [1.0], sources, points=1, duration=1.0, window=0.5, field_h=262.0)
     with pytest.raises(ValueError, match="shape"):
-        budget.from_unit_cube(np.zeros((3, 2)), sources)
+        bench.from_unit_cube(np.zeros((3, 2)), sources)
     with pytest.raises(ValueError, match=r"\[0, 1\]"):
-        budget.from_unit_cube(np.full((1, len(sources)), 1.5), sources)
+        bench.from_unit_cube(np.full((1, len(sources)), 1.5), sources)
 
 
 def test_coil_field_range_is_the_square_coils_centre_field(sources, p):
@@ -223,7 +224,7 @@ def test_coil_field_range_is_the_square_coils_centre_field(sources, p):
     assert_allclose([s.low, s.high], [0.0, 2 * np.sqrt(2) * MU_0 / (np.pi * side ** 3)], rtol=1e-12, atol=0)
     assert s.source == "computed" and "magbench" not in s.reference
     with pytest.raises(ValueError, match="side"):
-        budget.coil_field_per_moment(-0.1)
+        fields.square_loop_center_b_per_moment(-0.1)
 
 
 def test_no_reader_facing_reference_names_code(sources):

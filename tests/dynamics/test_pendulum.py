@@ -38,3 +38,29 @@ def test_loops_carry_the_plant():
 def test_bad_thread(kwargs, name):
     with pytest.raises(ValueError, match=name):
         Mockup(0.005, 1e-4, **kwargs)
+
+
+def test_mockup_loads_turning_about_the_vertical_give_eq_36s_torque():
+    """Hanging straight (θ = 0) at heading ψ, coil 1 along (cos ψ, sin ψ, 0): the magnetic
+    torque is vertical, −m B0 sin ψ (eq. 36 with one coil, two_coil_torque), and gravity,
+    acting on the axis through A, has no torque."""
+    from magbench.dynamics import mockup_loads, two_coil_torque
+
+    psi = np.array([0.3, 1.2, 2.5])
+    loads = mockup_loads(psi, 0.0, 0.0, 0.05, 1.2, 3e-4, 0.4)
+    # atol 1e-18 N·m: rounding of products of order 1e-4 N·m.
+    assert_allclose(loads["magnetic_torque"][:, 2], two_coil_torque(psi, 0.4, 0.0, 3e-4), atol=1e-18)
+    assert_allclose(loads["magnetic_torque"][:, :2], 0.0, atol=1e-18)
+    assert_allclose(loads["gravity_torque"], 0.0, atol=1e-15)
+    # Tilted by θ, the weight pulls C back under A: torque −d M g sin θ about the nodal line.
+    tilted = mockup_loads(0.0, 0.2, 0.0, 0.05, 1.2, 3e-4, 0.4)
+    assert_allclose(tilted["gravity_torque"], [-0.05 * 1.2 * 9.80665 * np.sin(0.2), 0.0, 0.0], rtol=1e-12, atol=1e-18)
+
+
+def test_mockup_loads_name_bad_input():
+    from magbench.dynamics import mockup_loads
+
+    with pytest.raises(ValueError, match="mass"):
+        mockup_loads(0.0, 0.0, 0.0, 0.05, -1.0, 3e-4, 0.4)
+    with pytest.raises(ValueError, match="cm_offset"):
+        mockup_loads(0.0, 0.0, 0.0, -0.05, 1.0, 3e-4, 0.4)

@@ -138,3 +138,44 @@ def test_magnetometer_full_scale_bad_input(kw, name):
     args = {"gain": 1090.0e4} | kw
     with pytest.raises(ValueError, match=name):
         sensors.magnetometer_full_scale(**args)
+
+
+def test_roll_readings_are_the_gyro_and_accelerometer_models_of_the_roll():
+    """The gyro reads the mean rate over each interval, the accelerometer g·(0, sin θ, cos θ),
+    drawn from one generator in that order: equal to the two models called by hand."""
+    dt = 0.01
+    angle = 0.4 * np.sin(np.linspace(0.0, 6.0, 300))
+    gyro, accel = sensors.roll_readings(angle, dt, rng=np.random.default_rng(4), gyro_bias=0.01,
+                                        vibration_amplitude=[0.0, 0.5, 0.0], vibration_frequency=[0.0, 7.0, 0.0])
+    rng = np.random.default_rng(4)
+    rate = np.concatenate([[0.0], np.diff(angle)]) / dt
+    g = 9.80665
+    expected_gyro = sensors.gyro_readings(rate, dt, rng=rng, bias=0.01)
+    expected_accel = sensors.accelerometer_readings(
+        g * np.stack([np.zeros_like(angle), np.sin(angle), np.cos(angle)], axis=1), dt, rng=rng,
+        vibration_amplitude=[0.0, 0.5, 0.0], vibration_frequency=[0.0, 7.0, 0.0])
+    assert np.array_equal(gyro, expected_gyro) and np.array_equal(accel, expected_accel)
+
+
+def test_heading_readings_see_the_heading_in_the_magnetometer_only():
+    """Turning about the vertical: the accelerometer reads (0, 0, g) whatever the heading,
+    the magnetometer B·(cos ψ, −sin ψ, 0) (its heading atan2(−b_y, b_x) is ψ within noise)."""
+    psi = np.linspace(0.0, 2.0, 400)
+    b0 = 20e-6
+    gyro, accel, mag = sensors.heading_readings(psi, b0, 0.01, rng=np.random.default_rng(5))
+    assert gyro.shape == (400,) and accel.shape == mag.shape == (400, 3)
+    # 6σ of the datasheet noise: accelerometer 400 µg/√Hz at 50 Hz, magnetometer 0.2 µT.
+    sigma_a = sensors.noise_std_from_density(sensors.MPU6050_ACCEL_NOISE_DENSITY, 0.01)
+    assert_allclose(accel, np.tile([0.0, 0.0, 9.80665], (400, 1)), atol=6 * sigma_a)
+    assert_allclose(np.arctan2(-mag[:, 1], mag[:, 0]), psi, atol=6 * sensors.HMC5883L_NOISE_FLOOR / b0)
+
+
+@pytest.mark.parametrize("call, match", [
+    (lambda: sensors.roll_readings(np.zeros((5, 2)), 0.01, rng=np.random.default_rng(1)), "roll_angle"),
+    (lambda: sensors.roll_readings(np.zeros(5), -0.01, rng=np.random.default_rng(1)), "dt"),
+    (lambda: sensors.heading_readings(np.zeros(5), -1e-6, 0.01, rng=np.random.default_rng(1)), "field"),
+    (lambda: sensors.heading_readings(np.zeros(5), 1e-6, 0.01, rng=1), "rng"),
+])
+def test_motion_readings_name_bad_input(call, match):
+    with pytest.raises(ValueError, match=match):
+        call()

@@ -85,7 +85,7 @@ def budget_rows(params=None):
 
     For each target, the error band a single source gives beside the thesis's 10°: the
     MPU-6050's largest uncalibrated zero-rate offset (datasheet ±20 °/s), every other
-    source at its no-error value (:func:`magbench.chapters.ch04_mockup.budget.one_at_a_time`,
+    source at its no-error value (:func:`magbench.sim.bench.one_at_a_time`,
     three values of the range). This is a consistency check, not a prediction: the
     value depends on the filter coefficient and the loop period the bench used, which
     the thesis does not state (the chapter's 0.98 and 10 ms here), and on the offset
@@ -107,9 +107,9 @@ def budget_rows(params=None):
     measured = measurement("orientation-error")
     sources = budget.load_error_sources()
     gyro_source = {"gyro_offset": sources["gyro_offset"]}
-    oat = budget.one_at_a_time(setup, [t for *_, t in BENCH_TARGETS], gyro_source, points=3,
-                               duration=p["bench_duration"], window=p["bench_error_window"],
-                               field_h=p["bench_field_h"], seed=int(p["bench_seed"]))
+    oat = bench.one_at_a_time(setup, [t for *_, t in BENCH_TARGETS], gyro_source, points=3,
+                              duration=p["bench_duration"], window=p["bench_error_window"],
+                              field_h=p["bench_field_h"], seed=int(p["bench_seed"]))
     bound = sources["gyro_offset"].high
     a_lo, a_hi = sources["filter_coefficient"].low, sources["filter_coefficient"].high
     dt_lo, dt_hi = sources["sample_interval"].low, sources["sample_interval"].high
@@ -151,7 +151,7 @@ def dynamics_checks():
     sets = PRINTED_SETS
     stable = sum(bool(np.all(control.closed_loop_poles(j, b0, *g).real < 0)) for g in sets)
     # Routh–Hurwitz for J s³ + B0 Kd s² + B0 Kp s + B0 Ki: stable iff Ki < B0 Kp Kd / J.
-    excess = [ki / (b0 * kp * kd / j) for kp, ki, kd in sets]
+    excess = [float(control.critical_gain_scale(j, b0, kp, ki, kd)) for kp, ki, kd in sets]
     return [
         source_check(
             id="thesis-eq14-design-amplitude", chapter="ch04", source="thesis",

@@ -40,22 +40,16 @@ def _plant_parameters():
 # --- thesis Figs. 10–11: frames and forces of the mock-up on a thread --------------------
 
 def compute_geometry(psi, theta, phi, cm_offset, mass, field, moment):
-    """Frames, points and forces of the mock-up at one attitude (thesis Figs. 10–11)."""
-    from scipy.constants import g
-
-    r = dynamics.euler_313_matrix(psi, theta, phi)
-    a = np.zeros(3)
-    c = dynamics.thread_center_of_mass(0.0, 0.0, psi, theta, cm_offset)
-    b0 = np.array([field, 0.0, 0.0])
-    m_vec = moment * r[:, 0]                       # coil 1 along x'
-    torque = np.cross(m_vec, b0)
-    weight = np.array([0.0, 0.0, -mass * g])
+    """Frames, points and forces of the mock-up at one attitude (thesis Figs. 10–11,
+    :func:`magbench.dynamics.mockup_loads`)."""
+    loads = dynamics.mockup_loads(psi, theta, phi, cm_offset, mass, field, moment)
+    r, weight = loads["body_axes"], loads["weight"]
     cols = {
-        "A": ("m", a), "C": ("m", c),
+        "A": ("m", np.zeros(3)), "C": ("m", loads["center_of_mass"]),
         "x_body": ("1", r[:, 0]), "y_body": ("1", r[:, 1]), "z_body": ("1", r[:, 2]),
         "gravity_F_t": ("N", weight), "reaction_N": ("N", -weight),
-        "field_B0": ("T", b0), "dipole_m": ("A m^2", m_vec), "magnetic_torque": ("N m", torque),
-        "gravity_torque_about_A": ("N m", np.cross(c - a, weight)),
+        "field_B0": ("T", loads["field"]), "dipole_m": ("A m^2", loads["dipole"]),
+        "magnetic_torque": ("N m", loads["magnetic_torque"]), "gravity_torque_about_A": ("N m", loads["gravity_torque"]),
     }
     return FigureData("", "", "", {}, [Series("mock-up", cols)],
                       extra={"angles": (psi, theta, phi), "d": cm_offset})
@@ -149,9 +143,7 @@ def _geometry_parameters():
 # --- thesis Figs. 12–13: the free magnetic pendulum ---------------------------------------
 
 def compute_free_pendulum(inertia, field, moment, initial_angle, initial_angle_alt, duration):
-    """Eq. (35) from rest at both printed initial angles (solve_ivp, rtol 1e-10)."""
-    from ...integrate import solve_adaptive
-
+    """Eq. (35) from rest at both printed initial angles (:func:`magbench.sim.simulate_free_swing`)."""
     if not 1.0 <= duration <= 3600.0:
         raise ValueError(f"duration must lie in [1, 3600] s, got {shown(duration)}")
     plant = dynamics.Mockup(inertia, field, moment)
@@ -159,11 +151,9 @@ def compute_free_pendulum(inertia, field, moment, initial_angle, initial_angle_a
     series = []
     for label, psi0 in (("ψ0 = π/2 (as printed, thesis §4.1)", initial_angle),
                         ("ψ0 = π/4 (as printed, thesis §4.1)", initial_angle_alt)):
-        sol = solve_adaptive(dynamics.pendulum_rhs, (0.0, duration), [psi0, 0.0], args=(plant,), t_eval=t,
-                             method="RK45", rtol=1e-10, atol=1e-13)
-        energy = dynamics.pendulum_energy(sol.y[0], sol.y[1], inertia, moment, field)
-        series.append(Series(label, {"t": ("s", t), "psi": ("rad", sol.y[0]), "omega": ("rad/s", sol.y[1]),
-                                     "energy_drift": ("1", (energy - energy[0]) / (moment * field))}))
+        run = sim.simulate_free_swing(plant, psi0, t)
+        series.append(Series(label, {"t": ("s", t), "psi": ("rad", run.psi), "omega": ("rad/s", run.rate),
+                                     "energy_drift": ("1", (run.energy - run.energy[0]) / (moment * field))}))
     return FigureData("", "", "", {}, series, extra={
         "periods": [float(dynamics.pendulum_period(a, inertia, moment, field)) for a in (initial_angle, initial_angle_alt)],
         "small_angle_period": float(dynamics.small_angle_period(inertia, moment, field))})
@@ -208,8 +198,6 @@ def _free_parameters():
 
 def compute_period_ratio(inertia, moment, field, period, amplitude_checks):
     """T/T0 against the amplitude, solve_ivp spot checks, and the field for a given period."""
-    from ...integrate import solve_adaptive
-
     n_checks = int(amplitude_checks)
     if not 0 <= n_checks <= 20:
         raise ValueError(f"amplitude_checks must lie in [0, 20], got {shown(amplitude_checks)}")
@@ -218,14 +206,7 @@ def compute_period_ratio(inertia, moment, field, period, amplitude_checks):
     ratio = dynamics.pendulum_period(amp, inertia, moment, field) / t0
     plant = dynamics.Mockup(inertia, field, moment)
     check_amp = np.linspace(0.2, 0.97 * np.pi, n_checks)
-    check_ratio = []
-    for a in check_amp:
-        def turn(t, y, p):
-            return y[1]
-        turn.direction = 1.0
-        sol = solve_adaptive(dynamics.pendulum_rhs, (0, 50 * t0), [a, 0.0], args=(plant,), events=turn,
-                             method="RK45", rtol=1e-11, atol=1e-13)
-        check_ratio.append(2 * sol.t_events[0][0] / t0)
+    check_ratio = [sim.integrated_swing_period(plant, a) / t0 for a in check_amp]
     h_exact = dynamics.field_for_period(period, amp, inertia, moment) / MU_0
     # Eq. (15) as the thesis uses it is linear in its amplitude factor A (zero at A = 0).
     h_eq15 = dynamics.oscillation_field_h(inertia, moment, period) * amp
@@ -437,9 +418,8 @@ def reading_evidence(inertia, field, moment, initial_angle, duration=300.0):
             zeta = -slow.real / abs(slow)
             stable = bool(np.all(poles.real < 0))
             # Linear loop from rest at ψ0: states (ψ, ω, ∫e), output u = −Kp ψ + Ki ∫e − Kd ω.
-            a = np.array([[0, 1, 0], [-field * kp_ / inertia, -field * kd_ / inertia, field * ki_ / inertia],
-                          [-1, 0, 0]])
-            sys = ct.ss(a, np.zeros((3, 1)), [[-kp_, -kd_, ki_]], [[0]])
+            a, c = control.closed_loop_state_space(inertia, field, kp_, ki_, kd_)
+            sys = ct.ss(a, np.zeros((3, 1)), c, [[0]])
             u = ct.initial_response(sys, t, [initial_angle, 0, 0]).outputs if stable else np.array([np.inf])
             peak = float(np.max(np.abs(u)))
             per_set.append((stable, zeta, 4 / abs(slow.real) if stable else np.inf, peak))

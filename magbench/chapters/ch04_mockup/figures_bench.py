@@ -18,7 +18,6 @@ from .._base import chapter_parameters
 from ...rotations import wrap_angle
 from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
-from ...units import DEG
 
 SOURCE = "Bui (2016), thesis §4.4, Figs. 19–20; the bench model is ours (chapter 4)"
 

@@ -4,7 +4,8 @@
 range, the others nominal, for both targets. ``ch04-budget-sobol``: first-order and
 total Sobol indices of the error band (SALib) and its distribution over the whole
 allowed space beside the thesis's 10°. The sources and their ranges are
-``magbench/data/bench/error_sources.toml`` (:mod:`magbench.chapters.ch04_mockup.budget`).
+``magbench/data/bench/error_sources.toml`` (:mod:`magbench.chapters.ch04_mockup.budget`); the
+budget's runs are :mod:`magbench.sim.bench.budget`.
 """
 
 import numpy as np
@@ -52,8 +53,8 @@ def compute_oat(budget_points, **p):
     """Error band against each source across its range, both targets."""
     setup, kw = _common(p)
     sources = budget.load_error_sources()
-    res = budget.one_at_a_time(setup, TARGETS, sources, points=int(round(budget_points)),
-                               seed=int(p["bench_seed"]), **kw)
+    res = bench.one_at_a_time(setup, TARGETS, sources, points=int(round(budget_points)),
+                              seed=int(p["bench_seed"]), **kw)
     series = []
     for k, target in enumerate(TARGETS):
         for name, (x, band, ind) in res.items():
@@ -108,15 +109,15 @@ def compute_sobol(budget_base_samples, budget_seed, **p):
     threshold = measurement("orientation-error").value
     n = int(round(budget_base_samples))
     seed = int(round(budget_seed))
-    problem, values = budget.sobol_design(sources, base_samples=n, seed=seed)
-    problem_ng, values_ng = budget.sobol_design(sources, base_samples=max(2, n // 2), seed=seed + 1,
-                                                fixed={"gyro_offset": 0.0, "gyro_drift": 0.0})
+    problem, values = bench.sobol_design(sources, base_samples=n, seed=seed)
+    problem_ng, values_ng = bench.sobol_design(sources, base_samples=max(2, n // 2), seed=seed + 1,
+                                               fixed={"gyro_offset": 0.0, "gyro_drift": 0.0})
     # Both designs in one batch of members: the runs' cost is mostly per time step.
     m = len(next(iter(values.values())))
     both = {k: np.concatenate([values[k], values_ng[k]]) for k in values}
-    band, ind = budget.simulate_sources(setup, TARGETS[0], both, seed=seed, **kw)
-    res = budget.sobol_analysis(problem, values, band[:m], ind[:m], threshold=threshold, seed=seed)
-    no_gyro = budget.sobol_analysis(problem_ng, values_ng, band[m:], ind[m:], threshold=threshold, seed=seed)
+    band, ind = bench.source_error_bands(setup, TARGETS[0], both, seed=seed, **kw)
+    res = bench.sobol_analysis(problem, values, band[:m], ind[:m], threshold=threshold, seed=seed)
+    no_gyro = bench.sobol_analysis(problem_ng, values_ng, band[m:], ind[m:], threshold=threshold, seed=seed)
     names = res["names"]
     series = [
         Series("Sobol indices", {

@@ -28,47 +28,30 @@ VIBRATION_FREQUENCY = 7.0   # [Hz] of the simulated vibration (a fan or motor; a
 
 def single_axis_readings(sample_interval, gyro_bias, duration, amplitude, frequency,
                          vibration_amplitude, seed):
-    """A tilting mock-up (roll θ = amplitude·sin 2πft) read by a simulated MPU-6050.
+    """A tilting mock-up (roll θ = amplitude·sin 2πft) read by a simulated MPU-6050
+    (:func:`magbench.hardware.sensors.roll_readings`, the vibration on its y axis).
 
     Returns time [s], true angle [rad], gyro rate [rad/s] and the accelerometer angle
     atan2(a_y, a_z) [rad]: the inputs of eq. (39).
     """
-    rng = np.random.default_rng(int(seed))
     n = int(round(duration / sample_interval))
     t = np.arange(n) * sample_interval
     angle = amplitude * np.sin(2 * np.pi * frequency * t)
-    # Gyro sample k carries the mean rate over the interval before it (consistent with eq. 39).
-    rate = np.diff(angle, prepend=angle[0]) / sample_interval
-    gyro = sensors.gyro_readings(rate, sample_interval, rng=rng, bias=gyro_bias)
-    force = GRAVITY * np.stack([np.zeros(n), np.sin(angle), np.cos(angle)], axis=1)
-    accel = sensors.accelerometer_readings(force, sample_interval, rng=rng,
-                                           vibration_amplitude=[0.0, vibration_amplitude, 0.0],
-                                           vibration_frequency=[0.0, VIBRATION_FREQUENCY, 0.0])
+    gyro, accel = sensors.roll_readings(angle, sample_interval, rng=np.random.default_rng(int(seed)),
+                                        gyro_bias=gyro_bias, vibration_amplitude=[0.0, vibration_amplitude, 0.0],
+                                        vibration_frequency=[0.0, VIBRATION_FREQUENCY, 0.0])
     return t, angle, gyro, np.arctan2(accel[:, 1], accel[:, 2])
 
 
 def filter_error_terms(sample_interval, alpha, gyro_bias, vibration_amplitude, motion_amplitude):
-    """Closed-form steady-state error terms of eq. (39) with the simulated MPU-6050.
-
-    Returns (bias offset, accelerometer white noise, vibration, gyro noise), each [rad]:
-    a gyro bias b gives the constant offset b·τ with τ = AΔt/(1−A);
-    accelerometer noise (angle std σ_a/g) passes the low-pass with variance gain
-    (1−A)/(1+A); the vibration (angle amplitude ≈ a_v cosθ/g) passes with the gain
-    |H| = |(1−A)/(1−A e^{−jωΔt})| at its frequency; gyro noise σ_ω is integrated with
-    gain AΔt, variance gain A²Δt²/(1−A²).
-    """
-    tau = estimation.complementary_time_constant(sample_interval, alpha)
-    acc_std = sensors.noise_std_from_density(sensors.MPU6050_ACCEL_NOISE_DENSITY, sample_interval) / GRAVITY
-    gyro_std = sensors.noise_std_from_density(sensors.MPU6050_GYRO_NOISE_DENSITY, sample_interval)
-    # RMS of cos θ over a sine of amplitude θ0: sqrt((1 + J0(2θ0))/2).
-    from scipy.special import j0
-    cos_rms = np.sqrt(0.5 * (1 + j0(2 * motion_amplitude)))
-    z = np.exp(1j * 2 * np.pi * VIBRATION_FREQUENCY * sample_interval)
-    gain = np.abs((1 - alpha) / (1 - alpha / z))
-    vib = vibration_amplitude / GRAVITY * cos_rms / np.sqrt(2) * gain
-    acc = acc_std * np.sqrt((1 - alpha) / (1 + alpha))
-    gyr = gyro_std * alpha * sample_interval / np.sqrt(1 - alpha**2)
-    return gyro_bias * tau, acc, vib, gyr
+    """Closed-form steady-state error terms of eq. (39) with the simulated MPU-6050
+    (:func:`magbench.estimation.complementary_error_terms` with its datasheet noise):
+    (bias offset, accelerometer white noise, vibration, gyro noise), each [rad]."""
+    return estimation.complementary_error_terms(
+        sample_interval, alpha, gyro_bias,
+        sensors.noise_std_from_density(sensors.MPU6050_GYRO_NOISE_DENSITY, sample_interval),
+        sensors.noise_std_from_density(sensors.MPU6050_ACCEL_NOISE_DENSITY, sample_interval),
+        vibration_amplitude, VIBRATION_FREQUENCY, motion_amplitude)
 
 
 def compute_filter_alpha(sample_interval, gyro_bias, alpha_low, alpha_high, duration, amplitude,
@@ -159,24 +142,18 @@ register(FigureSpec("ch04-filter-alpha", "Eq. (39): error and time constant agai
 # --- heading: gravity cannot see it, the magnetometer can -----------------------------------
 
 def heading_readings(sample_interval, gyro_bias, field, duration, seed):
-    """The mock-up turning about the vertical, read by simulated MPU-6050 and HMC5883L.
+    """The mock-up turning about the vertical, read by simulated MPU-6050 and HMC5883L
+    (:func:`magbench.hardware.sensors.heading_readings`).
 
     The motion is a decaying swing ψ(t) = (π/2) e^{−t/100 s} cos(2πt/30 s) (the thesis's
     ψ0 = π/2), the field is horizontal with magnitude ``field`` plus no vertical part.
     Returns t, ψ, gyro z [rad/s], accelerometer readings (N, 3) [m/s²], magnetometer (N, 3) [T].
     """
-    rng = np.random.default_rng(int(seed))
     n = int(round(duration / sample_interval))
     t = np.arange(n) * sample_interval
     psi = 0.5 * np.pi * np.exp(-t / 100.0) * np.cos(2 * np.pi * t / 30.0)
-    rate = np.diff(psi, prepend=psi[0]) / sample_interval
-    gyro = sensors.gyro_readings(rate, sample_interval, rng=rng, bias=gyro_bias)
-    # Turning about the vertical leaves the specific force (0, 0, g) unchanged: gravity is
-    # parallel to the rotation axis.
-    force = np.tile([0.0, 0.0, GRAVITY], (n, 1))
-    accel = sensors.accelerometer_readings(force, sample_interval, rng=rng)
-    b_true = field * np.stack([np.cos(psi), -np.sin(psi), np.zeros(n)], axis=1)
-    mag = sensors.magnetometer_readings(b_true, sample_interval, rng=rng)
+    gyro, accel, mag = sensors.heading_readings(psi, field, sample_interval, rng=np.random.default_rng(int(seed)),
+                                                gyro_bias=gyro_bias)
     return t, psi, gyro, accel, mag
 
 

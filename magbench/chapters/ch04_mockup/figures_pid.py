@@ -118,7 +118,7 @@ def compute_root_locus(inertia, field, bandwidth):
     import control as ct
 
     kp, ki, kd = _design_gains(inertia, field, bandwidth)
-    loop = ct.tf(field * np.array([kd, kp, ki]), [inertia, 0, 0, 0])
+    loop = ct.tf(*control.open_loop_transfer(inertia, field, kp, ki, kd))
     gains = np.concatenate([np.logspace(-3, 3, 600), [1.0 / 9.0]])
     gains.sort()
     rl = ct.root_locus_map(loop, gains)
@@ -184,7 +184,7 @@ def compute_step_response(inertia, field, moment, bandwidth, sample_interval, sm
     if not 0 < small_step <= np.pi and 0 < large_step <= np.pi:
         raise ValueError(f"steps must lie in (0, π] rad, got {shown(small_step)} and {shown(large_step)}")
     kp, ki, kd = _design_gains(inertia, field, bandwidth)
-    closed = ct.tf(field * np.array([kp, ki]), control.closed_loop_polynomial(inertia, field, kp, ki, kd))
+    closed = ct.tf(*control.closed_loop_transfer(inertia, field, kp, ki, kd))
     series = []
     for name, step in (("small", small_step), ("large", large_step)):
         runs = {

@@ -46,7 +46,8 @@ unstable when read in SI (the thesis states no units for them; see
 The package's modules: :mod:`.config` (the bench as data: :class:`BenchSetup`,
 :class:`BenchErrors`), :mod:`.controller` (one sample of the controller, the sensors'
 errors), :mod:`.loop` (:func:`simulate_bench` and its compiled twin's driver),
-:mod:`.reference` (the solve_ivp oracle), :mod:`.dispersion` (the Monte Carlo). The
+:mod:`.reference` (the solve_ivp oracle), :mod:`.dispersion` (the Monte Carlo), :mod:`.budget`
+(the error budget over scalar hardware error sources: one at a time and Sobol indices). The
 physics it composes lives in the families: :func:`magbench.fields.horizontal_field`,
 :func:`magbench.hardware.coil_full_scale_moment`, :func:`magbench.hardware.quantise_duty`,
 :func:`magbench.dynamics.plant_step`; they are re-exported here.
@@ -55,6 +56,8 @@ physics it composes lives in the families: :func:`magbench.fields.horizontal_fie
 from ...dynamics.pendulum import plant_step
 from ...fields.systems import horizontal_field
 from ...hardware.driver import coil_full_scale_moment, quantise_duty
+from .budget import (SAMPLE_INTERVALS, from_unit_cube, nominal_source_values, one_at_a_time, sobol_analysis,
+                     sobol_budget, sobol_design, source_error_bands)
 from .config import ERROR_INPUTS, BenchErrors, BenchSetup
 from .controller import controller_step, draw_sensor_errors
 from .dispersion import BenchDispersion, monte_carlo, steady_error_band
@@ -63,4 +66,6 @@ from .reference import simulate_bench_reference
 
 __all__ = ["BenchSetup", "BenchErrors", "BenchDispersion", "controller_step", "horizontal_field",
            "coil_full_scale_moment", "quantise_duty", "plant_step", "simulate_bench", "simulate_bench_reference",
-           "monte_carlo", "steady_error_band", "draw_sensor_errors", "ERROR_INPUTS"]
+           "monte_carlo", "steady_error_band", "draw_sensor_errors", "ERROR_INPUTS", "SAMPLE_INTERVALS",
+           "nominal_source_values", "source_error_bands", "one_at_a_time", "from_unit_cube", "sobol_design",
+           "sobol_analysis", "sobol_budget"]

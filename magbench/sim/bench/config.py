@@ -121,8 +121,8 @@ class BenchErrors:
     Every field is a scalar for all members or an array with the members on its leading
     axis; :func:`simulate_bench` checks each against the number of members it runs.
     ``None`` leaves a source out, and the loop's arithmetic is then the nominal model's,
-    untouched. Chapter 4's error budget (:mod:`magbench.chapters.ch04_mockup.budget`)
-    sets them per Monte Carlo member.
+    untouched. The error budget (:mod:`magbench.sim.bench.budget`) sets them per Monte
+    Carlo member.
 
     Parameters
     ----------
@@ -193,8 +193,7 @@ class BenchErrors:
 
 #: The hardware error sources of :class:`BenchErrors` (beside its moment scale and thread
 #: stiffness): name -> (unit, trailing shape per member, what the default leaves out).
-#: Chapter 4's error budget (magbench.chapters.ch04_mockup.budget) sets them per Monte
-#: Carlo member.
+#: The error budget (magbench.sim.bench.budget) sets them per Monte Carlo member.
 ERROR_INPUTS = {
     "gyro_offset": ("rad/s", (), "a constant gyro zero-rate offset added to setup.gyro_bias"),
     "gyro_drift": ("rad/s^2", (), "a linear drift of the gyro offset, offset + drift·t"),
