@@ -128,13 +128,19 @@ def _sample(i, n, state, b, schedule, how, held, window, previous, gain, lim, pr
 
 
 @njit(cache=True, error_model="numpy")
-def member_rates(time, x, out, t_block, half, b, b_rate, radial, how, held, gain, lim, projected, gg, diag, jd, jt,
-                 jinv):
+def member_rates(time, x, out, clock, table, command, law_args, body):
     """(q̇, ω̇) of every member into out, x and out (7, M): :func:`_rhs` member by member.
 
-    The field table holds the field at the block's step ends and midpoints, so the row of
-    ``time`` is its count of half steps from the block's start ``t_block``.
+    The field table (b, b_rate, radial) holds the field at the block's step ends and
+    midpoints, so the row of ``time`` is its count of half steps from the block's start:
+    clock = (t_block, h/2). command = (how, held), law_args = (gain, lim, projected) and
+    body = (gg, diag, jd, jt, jinv) as :func:`advance_block` takes them.
     """
+    t_block, half = clock
+    b, b_rate, radial = table
+    how, held = command
+    gain, lim, projected = law_args
+    gg, diag, jd, jt, jinv = body
     n = int(math.floor((time - t_block) / half + 0.5))
     lim0, lim1, lim2 = lim[0], lim[1], lim[2]
     for m in range(x.shape[1]):
@@ -163,7 +169,7 @@ def advance_block(state, start, count, h, table, schedule, command, law_args, bo
     gain, lim, projected = law_args
     gg, diag, jd, jt, jinv = body
     members = state.shape[1]
-    args = (start * h, 0.5 * h, b, b_rate, radial, how, held, gain, lim, projected, gg, diag, jd, jt, jinv)
+    args = ((start * h, 0.5 * h), table, (how, held), law_args, body)
     stages = np.empty((5,) + state.shape)
     for i in range(start, start + count):
         _sample(i, 2 * (i - start), state, b, schedule, how, held, window, previous, gain, lim, projected)

@@ -66,16 +66,19 @@ def _to_body(w, x, y, z, v0, v1, v2):
 
 
 @njit(cache=True, error_model="numpy")
-def member_rates(time, x, out, t_block, half, table, axes, i0, i1, i2, magnet, volume, hc, bs, kk):
+def member_rates(time, x, out, clock, table, body, rods):
     """(q̇, ω̇, Ḃ of the rods) of every member into out: the numpy reference's right-hand side.
 
     x and out are the flattened (7 + k, M) states (component i of member m at
     i·M + m). The field table (6, rows, M) holds inertial B and dB/dt at the block's step
     ends and midpoints, so the row of ``time`` is its count of half steps from the block's
-    start ``t_block``. axes: the k rods' unit vectors (a tuple of 3-tuples); i0, i1, i2 the
-    principal moments; magnet the moment along z; volume, hc, bs, kk the rods' volume and
-    Flatley–Henretty constants.
+    start: clock = (t_block, h/2). body = (i0, i1, i2, magnet): the principal moments and
+    the magnet's moment along z; rods = (axes, volume, hc, bs, kk): the k rods' unit vectors
+    (a tuple of 3-tuples), their volume and Flatley–Henretty constants.
     """
+    t_block, half = clock
+    i0, i1, i2, magnet = body
+    axes, volume, hc, bs, kk = rods
     row = int(math.floor((time - t_block) / half + 0.5))
     M = table.shape[2]
     nrods = len(axes)
@@ -203,7 +206,7 @@ def run_passive(state, u0, geo, inertia, magnet, rods, interval, n_samples, limi
                     _fill(table, r, m, cu_m, su_m, cl_m, sl_m, geo)
                 cu[m], su[m], cl[m], sl[m] = cu_m, su_m, cl_m, sl_m
             t_block = t + start * h
-            args = (t_block, half, table, axes, inertia[0], inertia[1], inertia[2], magnet, volume, hc, bs, kk)
+            args = ((t_block, half), table, (inertia[0], inertia[1], inertia[2], magnet), (axes, volume, hc, bs, kk))
             for s in range(count):
                 rk4_advance(member_rates, t_block + s * h, x, h, args, stages)
                 for m in range(members):
