@@ -16,7 +16,7 @@ from .detumble_segments import DETUMBLE_STEPS, detumble_step, simulate_detumble_
 from ..integrate import rk4_step
 from .pid_loop import PidLoop, loop_torque, pid_continuous_rhs, simulate_pid
 from .passive import PassiveRun, PassiveSatellite, initial_passive_state, simulate_passive
-from .passive_regime import orbit_mean_field, passive_final_regime
+from .passive_regime import orbit_mean_field, passive_final_regime, passive_transition_times
 from .passive_balance import flat_spin_decay_rate
 from .result import SimulationResult
 from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimensionless, rotor_finite_difference_monodromy,
@@ -33,7 +33,7 @@ from .turning_field import turning_field_kinetic_energy
 __all__ = ["rk4_step", "SimulationResult", "PidLoop", "loop_torque", "pid_continuous_rhs", "simulate_pid", "DetumbleRun", "simulate_detumble", "detumble_time",
            "detumble_monte_carlo", "DETUMBLE_STEPS", "detumble_step", "simulate_detumble_segments",
            "PassiveSatellite", "PassiveRun", "simulate_passive", "initial_passive_state", "flat_spin_decay_rate",
-           "orbit_mean_field", "passive_final_regime",
+           "orbit_mean_field", "passive_final_regime", "passive_transition_times",
            "RotorSatellite", "RotorRun", "rotor_dimensionless", "rotor_gain_scales",
            "rotor_satellite_from_dimensionless", "rotor_normalised_rhs", "rotor_linearised_matrices",
            "rotor_floquet_multipliers", "rotor_stability_map", "rotor_finite_difference_monodromy",
