@@ -33,9 +33,9 @@ import time  # noqa: E402
 import numpy as np  # noqa: E402
 from scipy.integrate import solve_ivp  # noqa: E402
 
-from magbench.chapters.ch06_rotor import (default_rotor_orbit, default_rotor_satellite, orbit_maxima,  # noqa: E402
-                                          rotor_parameters)
-from magbench.sim import rotor_dimensionless, rotor_linearised_matrices, rotor_stability_map, simulate_rotor  # noqa: E402
+from magbench.chapters.ch06_rotor import default_rotor_orbit, default_rotor_satellite, rotor_parameters  # noqa: E402
+from magbench.sim import (pointing_error_orbit_maxima, rotor_dimensionless, rotor_linearised_matrices,  # noqa: E402
+                          rotor_stability_map, simulate_rotor)
 from magbench.sim import spinning  # noqa: E402
 
 GRID = 40
@@ -93,7 +93,7 @@ def main(argv=()):
         run = simulate_rotor(sat, orbit, p["simulation_orbits"] * period, initial_angles=angles,
                              sample_interval=p["sample_interval"], rtol=rtol, atol=1e-2 * rtol)
         wall = time.perf_counter() - t0
-        maxima = np.degrees(orbit_maxima(run, orbit.mean_motion))
+        maxima = np.degrees(pointing_error_orbit_maxima(run, orbit.mean_motion))
         runs[f"{rtol:.0e}"] = {"rtol": rtol, "atol": 1e-2 * rtol, "wall_s": wall, "nfev": run.inputs["nfev"],
                                "orbit_maxima_deg": [float(m) for m in maxima]}
         print(f"5 orbits at rtol {rtol:.0e}: {wall:.1f} s, nfev {run.inputs['nfev']}, orbit maxima "

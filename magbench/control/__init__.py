@@ -23,7 +23,8 @@ from .rotor_stability import (rotor_floquet_multipliers, rotor_linearised_matric
                               rotor_stability_map)
 from .spin import (momentum_damping_dipole, projected_damping_dipole, relay_spin_dipole,
                    rotor_equilibrium_axial_momentum, rotor_equilibrium_dipole, rotor_program_field,
-                   rotor_reference_momentum, rotor_spin_reference, slides_printed_damping_torque)
+                   rotor_reference_momentum, rotor_reference_torque, rotor_spin_reference,
+                   slides_printed_damping_torque)
 
 __all__ = ["pid_step", "pid_gains_for_triple_pole", "ALLOCATIONS", "body_field_exact", "body_field_small_angle",
            "dipole_allocation", "closed_loop_polynomial", "closed_loop_poles", "open_loop_transfer",
@@ -33,7 +34,7 @@ __all__ = ["pid_step", "pid_gains_for_triple_pole", "ALLOCATIONS", "body_field_e
            "bdot_dipole_projected", "avanzini_giulietti_gain", "samsat_gain", "kovalenko_detumble_time",
            "held_bdot_rate_limit",
            "rotor_program_field", "rotor_equilibrium_dipole", "rotor_equilibrium_axial_momentum",
-           "rotor_spin_reference", "projected_damping_dipole", "slides_printed_damping_torque",
+           "rotor_reference_torque", "rotor_spin_reference", "projected_damping_dipole", "slides_printed_damping_torque",
            "rotor_reference_momentum", "momentum_damping_dipole", "relay_spin_dipole", "floquet_multipliers",
            "finite_difference_monodromy", "degree_of_stability", "rotor_model_numbers", "rotor_linearised_matrices",
            "rotor_floquet_multipliers", "rotor_stability_map"]

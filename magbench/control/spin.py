@@ -18,8 +18,8 @@ from .._validate import as_finite, as_in_range, as_positive, as_vectors, shown
 from .kernels import program_field, projected_dipole, relay_dipole
 
 __all__ = ["rotor_program_field", "rotor_equilibrium_dipole", "rotor_equilibrium_axial_momentum",
-           "rotor_spin_reference", "projected_damping_dipole", "slides_printed_damping_torque",
-           "rotor_reference_momentum", "momentum_damping_dipole", "relay_spin_dipole"]
+           "rotor_reference_torque", "rotor_spin_reference", "projected_damping_dipole",
+           "slides_printed_damping_torque", "rotor_reference_momentum", "momentum_damping_dipole", "relay_spin_dipole"]
 
 
 def rotor_program_field(argument_of_latitude, inclination, equatorial_b):
@@ -124,6 +124,36 @@ def rotor_equilibrium_axial_momentum(argument_of_latitude, axial_momentum):
     """
     u = as_finite("argument_of_latitude", argument_of_latitude)
     return as_finite("axial_momentum", axial_momentum) * np.cos(u) ** 2
+
+
+def rotor_reference_torque(argument_of_latitude, axial_momentum, orbital_rate):
+    r"""The torque the reference motion needs, semi-body axes on the reference.
+
+    Parameters
+    ----------
+    argument_of_latitude : float or array_like
+        u [rad].
+    axial_momentum : float
+        H0, total axial momentum at u = 0 [N·m·s].
+    orbital_rate : float
+        ω0 [rad/s], > 0.
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+        L_ref = (−H0 ω0 sin 2u, 0, −H0 ω0 cos²u) [N·m]: the change of K_ref = H0 cos²u e1 + B ω0 e2
+        (:func:`rotor_equilibrium_axial_momentum`) in the orbital frame turning at ω0 about e2.
+
+    Notes
+    -----
+    Rotor slides, slide "Creating the equilibrium" (seed lines 45–53), with ``rotor_spin.md`` §5:
+    the torque of :func:`rotor_equilibrium_dipole` on the reference equals it for every gain k.
+    """
+    u = as_finite("argument_of_latitude", argument_of_latitude)
+    h0 = float(as_finite("axial_momentum", axial_momentum))
+    w0 = float(as_positive("orbital_rate", orbital_rate, unit="rad/s"))
+    first, third = -h0 * w0 * np.sin(2 * u), -h0 * w0 * np.cos(u) ** 2
+    return np.stack([first, np.zeros_like(first), third], axis=-1)
 
 
 def rotor_spin_reference(argument_of_latitude, axial_momentum, rotor_momentum, axial_inertia):

@@ -16,7 +16,7 @@ import numpy as np
 from .._validate import as_finite, as_in_range
 
 __all__ = ["field_cone_half_angle", "field_cone_axis", "orbit_field_direction", "cone_field_direction",
-           "field_cone_deviation"]
+           "field_cone_deviation", "field_cone_rate"]
 
 
 def _inclination(value):
@@ -200,3 +200,35 @@ def field_cone_deviation(inclination, argument_of_latitude):
     azimuth = np.arctan2(-np.sum(exact * node, axis=-1), np.sum(exact * side, axis=-1))
     phase_error = np.angle(np.exp(1j * (azimuth - 2.0 * u)))
     return off_cone, direction_error, phase_error
+
+
+def field_cone_rate(inclination, argument_of_latitude):
+    r"""Rate at which the exact field direction goes round the cone, in units of the orbital rate.
+
+    Parameters
+    ----------
+    inclination : float
+        Orbit inclination i, in [0, π] [rad].
+    argument_of_latitude : array_like, shape (n,)
+        Increasing samples of u, n >= 2, fine enough for a numerical derivative [rad].
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        dφ/du of the exact direction's azimuth φ about the cone axis [-] (the averaged model's
+        is 2 at every u), by central differences of 2u plus the unwrapped phase error of
+        :func:`field_cone_deviation`.
+
+    Notes
+    -----
+    TNS-0 preprint §1 (L78–L84): the averaged model's "constant rate, twice the orbital rate";
+    the exact direct-dipole direction (:func:`orbit_field_direction`) goes round once per half
+    orbit, at 2 on average but not uniformly.
+    """
+    u = as_finite("argument_of_latitude", argument_of_latitude)
+    if u.ndim != 1 or u.size < 2 or np.any(np.diff(u) <= 0):
+        raise ValueError(f"argument_of_latitude must be increasing samples of shape (n,), n >= 2, got shape {u.shape}")
+    if np.ndim(inclination) != 0:
+        raise ValueError(f"inclination must be a scalar [rad], got shape {np.shape(inclination)}")
+    phase_error = field_cone_deviation(inclination, u)[2]
+    return np.gradient(2.0 * u + np.unwrap(phase_error), u)

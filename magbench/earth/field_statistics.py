@@ -13,7 +13,8 @@ import numpy as np
 from .._validate import as_count, as_positive_scalar
 from ..constants import MU_0
 
-__all__ = ["dipole_max_field", "mean_square_field", "field_square_ratio", "field_direction_rate_range"]
+__all__ = ["dipole_max_field", "mean_square_field", "field_square_ratio", "field_direction_rate_range",
+           "field_magnitude_range"]
 
 
 def dipole_max_field(orbit):
@@ -138,3 +139,30 @@ def field_direction_rate_range(orbit, duration=86400.0, step=5.0):
     b_hat = b / np.linalg.norm(b, axis=-1, keepdims=True)
     rate = np.linalg.norm(np.cross(b_hat, np.gradient(b_hat, t, axis=0)), axis=-1)
     return float(np.min(rate)), float(np.mean(rate)), float(np.max(rate))
+
+
+def field_magnitude_range(orbit, samples=721):
+    r"""Smallest and largest field magnitude over one orbit.
+
+    Parameters
+    ----------
+    orbit : CircularOrbit
+        The orbit and its field [-].
+    samples : int, optional
+        Equally spaced instants from t = 0 to one period, both ends included, >= 2 [-].
+
+    Returns
+    -------
+    tuple of float
+        (min |B|, max |B|) [T]; over a direct dipole, B0 near the magnetic equator up to
+        B0 √(1 + 3 sin²i) at the orbit's highest latitude.
+
+    Notes
+    -----
+    Kovalenko (1975) eq. (2.36) along the orbit (:meth:`magbench.earth.CircularOrbit.field`): the
+    span of field amplitudes a hysteresis rod along the field is cycled through (TNS-0 preprint §3,
+    Kovalenko (1975) §12.1).
+    """
+    n = as_count("samples", samples, minimum=2)
+    b = np.linalg.norm(orbit.field(np.linspace(0.0, orbit.period, n)), axis=-1)
+    return float(b.min()), float(b.max())

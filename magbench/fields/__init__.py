@@ -6,8 +6,8 @@ Re-exports the public functions of its modules: ``from magbench.fields import lo
 """
 
 from .loop import loop_b, loop_b_posed
-from .pair import (helmholtz_ampere_turns, helmholtz_b, helmholtz_center_h, pair_peak_center_h,
-                   pair_radius_for_center_h, planar_pair_center_h)
+from .pair import (helmholtz_ampere_turns, helmholtz_b, helmholtz_center_h, helmholtz_center_h_spread,
+                   helmholtz_h_magnitude, pair_peak_center_h, pair_radius_for_center_h, planar_pair_center_h)
 from .square import square_loop_axial_b, square_loop_b, square_loop_center_b_per_moment, square_pair_spacing
 from .systems import (SPHERE_DIRECTIONS, coaxial_system_b, coaxial_system_cylinder_nonuniformity, coaxial_system_sphere_nonuniformity,
                       coaxial_system_uniform_radius, horizontal_field, three_axis_pair_b,
@@ -16,7 +16,8 @@ from .uniformity import (cylinder_nonuniformity, optimal_separation, pair_distan
                          uniform_cylinder, uniform_sphere_radius, uniform_zone_length,
                          zone_tolerance_for_length)
 
-__all__ = ["SPHERE_DIRECTIONS", "loop_b", "loop_b_posed", "helmholtz_b", "helmholtz_center_h", "helmholtz_ampere_turns",
+__all__ = ["SPHERE_DIRECTIONS", "loop_b", "loop_b_posed", "helmholtz_b", "helmholtz_h_magnitude", "helmholtz_center_h",
+           "helmholtz_center_h_spread", "helmholtz_ampere_turns",
            "pair_radius_for_center_h", "pair_peak_center_h", "planar_pair_center_h", "square_loop_b", "square_loop_axial_b",
            "square_loop_center_b_per_moment",
            "square_pair_spacing", "three_axis_pair_b", "three_axis_pair_currents", "three_axis_uniform_radius",

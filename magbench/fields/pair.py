@@ -9,11 +9,12 @@ import numpy as np
 from scipy import optimize
 
 from .._validate import as_finite, as_positive, shown
+from ..constants import MU_0
 from ._inputs import _finite_scalar, _nonnegative_scalar, _positive_scalar
 from .loop import _coaxial_b
 
-__all__ = ["helmholtz_b", "helmholtz_center_h", "helmholtz_ampere_turns", "pair_radius_for_center_h",
-           "pair_peak_center_h", "planar_pair_center_h"]
+__all__ = ["helmholtz_b", "helmholtz_h_magnitude", "helmholtz_center_h", "helmholtz_center_h_spread",
+           "helmholtz_ampere_turns", "pair_radius_for_center_h", "pair_peak_center_h", "planar_pair_center_h"]
 
 
 def helmholtz_b(points, radius, separation, current, turns):
@@ -58,6 +59,40 @@ def helmholtz_b(points, radius, separation, current, turns):
     return _coaxial_b(points, a, [-d / 2.0, d / 2.0], n * i)
 
 
+def helmholtz_h_magnitude(points, radius, separation, current, turns):
+    r"""Field strength |H| = |B|/μ0 of a coaxial coil pair at given points.
+
+    Parameters
+    ----------
+    points : array_like, shape (..., 3)
+        Observation points, the pair's axis along z [m].
+    radius : float
+        Coil radius a_c [m], > 0.
+    separation : float
+        Distance between the coil planes d_c [m], >= 0.
+    current : float
+        Current in each coil I [A].
+    turns : float
+        Turns per coil N [-], > 0.
+
+    Returns
+    -------
+    ndarray, shape (...)
+        |H| [A/m].
+
+    Notes
+    -----
+    Not in the thesis as a field map: its Figs. 6–7 (§2.3) plot |H| along lines through the
+    centre from COMSOL; this is :func:`helmholtz_b` over μ0 (thesis eq. (16) at the centre).
+
+    Examples
+    --------
+    >>> round(float(helmholtz_h_magnitude([0.0, 0.0, 0.0], 0.5, 0.5, 2.3, 110)), 1)
+    362.1
+    """
+    return np.linalg.norm(helmholtz_b(points, radius, separation, current, turns), axis=-1) / MU_0
+
+
 def helmholtz_center_h(current, turns, radius, separation):
     r"""Axial field strength at the midpoint of a coaxial coil pair.
 
@@ -96,6 +131,52 @@ def helmholtz_center_h(current, turns, radius, separation):
     if np.any(d < 0):
         raise ValueError(f"separation must be >= 0 m, got {shown(d[d < 0].ravel()[0])}")
     return n * i / (a * ((d / (2.0 * a)) ** 2 + 1.0) ** 1.5)
+
+
+def helmholtz_center_h_spread(current, turns, radius, separation_range, current_spread):
+    r"""Largest change of a coil pair's midpoint field over a box of spacings and currents.
+
+    Parameters
+    ----------
+    current : float
+        Nominal current in each coil I [A].
+    turns : float
+        Turns per coil N [-], > 0.
+    radius : float
+        Coil radius a_c [m], > 0.
+    separation_range : tuple of float
+        (low, high) centre-to-centre spacing d_c [m], 0 <= low <= high.
+    current_spread : float
+        Half-width ΔI of the current's interval [A], >= 0.
+
+    Returns
+    -------
+    float
+        max |H(I ± ΔI, d) − H(I, d_mid)| over d in ``separation_range`` [A/m], d_mid its middle.
+
+    Notes
+    -----
+    Thesis eq. (16) (:func:`helmholtz_center_h`) at the corners of the box; the field is
+    monotonic in I and in d over it, so the corners bound it. Thesis §2.4: the as-built pair
+    with 0.50–0.52 m spacing and a current printed to 0.1 A.
+
+    Examples
+    --------
+    >>> round(helmholtz_center_h_spread(2.3, 110, 0.5, (0.50, 0.52), 0.05), 2)
+    12.22
+    """
+    separations = as_finite("separation_range", separation_range)
+    if separations.shape != (2,):
+        raise ValueError(f"separation_range must be (low, high) [m], got shape {separations.shape}")
+    low, high = float(separations[0]), float(separations[1])
+    if not 0.0 <= low <= high:
+        raise ValueError(f"separation_range must be (low, high) with 0 <= low <= high [m], got ({low!r}, {high!r})")
+    spread = float(as_finite("current_spread", current_spread))
+    if spread < 0.0:
+        raise ValueError(f"current_spread must be >= 0 A, got {shown(current_spread)}")
+    base = float(helmholtz_center_h(current, turns, radius, 0.5 * (low + high)))
+    return max(abs(float(helmholtz_center_h(current + di, turns, radius, d)) - base)
+               for di in (-spread, spread) for d in (low, high))
 
 
 def helmholtz_ampere_turns(center_h, radius, separation):

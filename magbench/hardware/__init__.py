@@ -29,8 +29,8 @@ from .magnets import (magnet_mass_for_torque, magnet_moment_per_mass, magnet_tor
 from .hysteresis import (hysteresis_damping_torque, hysteresis_loop_energy, hysteresis_response,
                          hysteresis_slope, limb_constants, limb_induction, limiting_loop_energy,
                          rod_cycle_energy, settled_hysteresis_loop)
-from .winding import (ampere_turns_power, coaxial_system_scale_for_power, winding_mass, winding_power,
-                      winding_resistance, winding_voltage)
+from .winding import (ampere_turns_power, coaxial_system_scale_for_power, helmholtz_pair_power, winding_mass,
+                      winding_power, winding_resistance, winding_voltage)
 
 __all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
            "rod_cycle_energy", "settled_hysteresis_loop", "limiting_loop_energy", "hysteresis_damping_torque", "SHAPES", "Turn", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
@@ -46,6 +46,7 @@ __all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_r
            "magnet_torque_per_mass", "magnet_mass_for_torque",
            "magnet_moment_per_mass", "permanent_magnet_min_mass", "winding_resistance", "winding_voltage",
            "winding_power", "winding_mass", "ampere_turns_power", "coaxial_system_scale_for_power",
+           "helmholtz_pair_power",
            "MPU6050_GYRO_NOISE_DENSITY", "MPU6050_GYRO_TOTAL_RMS_NOISE",
            "MPU6050_GYRO_ZRO_TOLERANCE", "MPU6050_ACCEL_NOISE_DENSITY", "MPU6050_ACCEL_ZERO_G_TOLERANCE",
            "MPU6050_DLPF_BANDWIDTH", "HMC5883L_NOISE_FLOOR", "HMC5883L_MAX_OUTPUT_RATE", "HMC5883L_GAINS", "HMC5883L_MAX_COUNT",

@@ -1,5 +1,5 @@
 """Electrics and mass of a winding: resistance, voltage, power, mass; the power of a coil
-system of given ampere-turns.
+system of given ampere-turns and of a Helmholtz pair for a given midpoint field.
 
 Thesis §2.2 (the winding formulas after eq. (16)): R = 2πaρN/S₀, U = RI, P = UI, and
 eq. (24) for the mass. One API for every coil: the first argument is the turn's
@@ -243,3 +243,39 @@ def coaxial_system_scale_for_power(shapes, sizes, positions, weights, center_h, 
     c = float(np.sum(w**2 * lengths))
     scale = (p * area * h0**2 / (rho * h0_target**2 * c)) ** (1 / 3)
     return scale, w * h0_target * scale / h0
+
+
+def helmholtz_pair_power(center_h, radius, separation, winding_area, resistivity):
+    r"""Ohmic power of both coils of a pair that gives a field at its midpoint.
+
+    Parameters
+    ----------
+    center_h : float
+        Field wanted at the midpoint H [A/m].
+    radius : float
+        Coil radius a_c [m], > 0.
+    separation : float
+        Distance between the coil planes d_c [m], >= 0.
+    winding_area : float
+        Copper cross-section of each coil's winding A = N S₀ [m²], > 0.
+    resistivity : float
+        Conductor resistivity ρ [Ω·m], > 0.
+
+    Returns
+    -------
+    float
+        P of the two coils [W], whatever the split of N·I into turns and current.
+
+    Notes
+    -----
+    Thesis §2.2: eq. (16)'s ampere-turns (:func:`magbench.fields.helmholtz_ampere_turns`) in
+    each coil's winding, P = 2 ρ ℓ (NI)²/A (:func:`ampere_turns_power`).
+
+    Examples
+    --------
+    >>> area = 110 * np.pi * 0.75e-3**2 / 4
+    >>> round(helmholtz_pair_power(250.0, 0.5, 1.116 * 0.5, area, 0.0175e-6), 1)
+    79.7
+    """
+    ni = float(fields.helmholtz_ampere_turns(center_h, radius, separation))
+    return 2 * float(ampere_turns_power(radius, ni, winding_area, resistivity))

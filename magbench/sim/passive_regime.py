@@ -7,13 +7,13 @@ TNS-0 preprint §4 (L554–L580): captured, the axis turns on a cone about B who
 
 import numpy as np
 
-from .._validate import as_count
+from .._validate import as_count, as_finite, as_positive
 from ..dynamics.axisymmetric import conical_rotation_angle
 from ..earth.circular_orbit import CircularOrbit
 from .passive import PassiveSatellite
 from .result import PassiveRun
 
-__all__ = ["orbit_mean_field", "passive_final_regime"]
+__all__ = ["orbit_mean_field", "passive_final_regime", "passive_transition_times"]
 
 
 def orbit_mean_field(orbit, *, samples=720):
@@ -95,3 +95,45 @@ def passive_final_regime(run, satellite, orbit, *, orbits=3):
             "drift": drift, "mean_field": mean_field,
             "conical_angle": conical_rotation_angle(final_rate, mean_field, satellite.magnet_moment,
                                                     satellite.transverse_inertia, satellite.axial_inertia)}
+
+
+def passive_transition_times(run, final_momentum, *, flat_tolerance=np.radians(1.0), capture_ratio=2.0):
+    r"""When a passive run reaches the flat spin and when it is captured about B.
+
+    Parameters
+    ----------
+    run : PassiveRun
+        A run of :func:`simulate_passive` [-].
+    final_momentum : float or array_like
+        |L| of the final regime, per member (:func:`passive_final_regime`'s ``final_momentum``)
+        [kg·m²/s].
+    flat_tolerance : float, optional
+        How close to π/2 the nutation counts as the flat spin, > 0 [rad].
+    capture_ratio : float, optional
+        The run counts as captured once |L| falls to this multiple of ``final_momentum``, > 0 [-].
+
+    Returns
+    -------
+    relaxed_time : float or ndarray
+        First sample time with |θ − π/2| < ``flat_tolerance`` (NaN if never) [s].
+    capture_time : float or ndarray
+        First sample time with |L| ≤ ``capture_ratio`` × ``final_momentum`` (NaN if never) [s].
+
+    Notes
+    -----
+    TNS-0 preprint Table 1 (sessions 2–7 at θ = π/2, the flat spin that energy dissipation
+    drives a prolate body to) and §4 (L554–L580, the capture into rotation about B), read off
+    a simulated run.
+    """
+    if not isinstance(run, PassiveRun):
+        raise ValueError(f"run must be a magbench.sim.PassiveRun, got {type(run).__name__}")
+    tolerance = float(as_positive("flat_tolerance", flat_tolerance, unit="rad"))
+    ratio = float(as_positive("capture_ratio", capture_ratio))
+    final = as_finite("final_momentum", final_momentum)
+
+    def first(mask):
+        found = np.take(run.time, np.argmax(mask, axis=-1))
+        return np.where(np.any(mask, axis=-1), found, np.nan)[()]
+
+    relaxed = first(np.abs(run.nutation - np.pi / 2) < tolerance)
+    return relaxed, first(run.angular_momentum <= ratio * final[..., None])

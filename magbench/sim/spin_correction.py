@@ -15,13 +15,14 @@ import math
 
 import numpy as np
 
-from .._validate import as_positive_scalar, shown
+from .._validate import as_count, as_positive_scalar, shown
 from ..control.kernels import relay_dipole
+from ..control.spin import relay_spin_dipole
 from ..dynamics import kernels
 from ..dynamics.rigid_body import rotate_to_inertial
 from ..integrate import solve_adaptive
 
-__all__ = ["relay_spin_correction"]
+__all__ = ["relay_spin_correction", "relay_spin_torque_over_turn"]
 
 
 def _relay_body_rhs(time, state, moment, field_inertial, inertia):
@@ -97,3 +98,32 @@ def relay_spin_correction(relative_change, field_ratio, *, torque_number=2e-4, a
     cos = float(k0 @ k1 / (np.linalg.norm(k0) * np.linalg.norm(k1)))
     # min: rounding can put cos a few ulps above 1 when the axis has not turned
     return math.acos(min(1.0, cos)), abs(1.0 - float(w_end[2]))
+
+
+def relay_spin_torque_over_turn(samples):
+    r"""Spin-axis torque of Kovalenko's relay law (7.12) over one turn of the transverse field.
+
+    Parameters
+    ----------
+    samples : int
+        Points over the turn, at the midpoints of equal arcs, >= 8 [-].
+
+    Returns
+    -------
+    angle : ndarray, shape (samples,)
+        α, the transverse field's angle in the spin plane [rad].
+    torque : ndarray, shape (samples,)
+        (L × B)_z/(L0 B⊥) with sign Δω = +1 [-]; the mean of its modulus is the law's effective
+        moment per L0 (4/π, Kovalenko (7.26)).
+
+    Notes
+    -----
+    Kovalenko (1975) §7.3, eqs. (7.12), (7.26): the law of
+    :func:`magbench.control.relay_spin_dipole`, L_x = −L0 sign Δω sign B_y,
+    L_y = L0 sign Δω sign B_x, in the transverse field of magnitude B⊥ at angle α.
+    """
+    n = as_count("samples", samples, minimum=8)
+    angle = (np.arange(n) + 0.5) * (2.0 * math.pi / n)
+    # the transverse field over one turn, in units of B⊥; the law with L0 = 1, sign Δω = +1
+    field = np.stack([np.cos(angle), np.sin(angle), np.zeros_like(angle)], axis=-1)
+    return angle, np.cross(relay_spin_dipole(field, 1.0, 1.0), field)[:, 2]

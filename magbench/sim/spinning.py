@@ -44,8 +44,8 @@ from .result import RotorRun
 from .rotor_normalised import rotor_finite_difference_monodromy, rotor_normalised_rhs, simulate_rotor_normalised
 from .turning_field import simulate_turning_field_gyrostat
 
-__all__ = ["RotorSatellite", "RotorRun", "rotor_dimensionless", "rotor_satellite_from_dimensionless", "rotor_normalised_rhs",
-           "rotor_linearised_matrices", "rotor_floquet_multipliers", "rotor_stability_map",
+__all__ = ["RotorSatellite", "RotorRun", "rotor_dimensionless", "rotor_gain_scales",
+           "rotor_satellite_from_dimensionless", "rotor_normalised_rhs", "rotor_linearised_matrices", "rotor_floquet_multipliers", "rotor_stability_map",
            "rotor_finite_difference_monodromy", "simulate_rotor_normalised", "rotor_body_rhs",
            "simulate_rotor", "simulate_turning_field_gyrostat"]
 
@@ -170,6 +170,36 @@ def rotor_dimensionless(satellite, orbit):
                                           satellite.axial_momentum, satellite.restoring_gain, satellite.damping_gain,
                                           orbit.mean_motion, b0)
     return {**numbers, "inclination": float(orbit.inclination)}
+
+
+def rotor_gain_scales(satellite, orbit):
+    r"""The SI gains per unit of their dimensionless numbers for a rotor spacecraft on its orbit.
+
+    Parameters
+    ----------
+    satellite : RotorSatellite
+        The spacecraft; only B = (I22 + I33)/2 counts [SI].
+    orbit : CircularOrbit
+        Gives ω0 and B0, the direct dipole's equatorial field at the orbit radius [SI].
+
+    Returns
+    -------
+    restoring_scale : float
+        k per κ, ω0² B/B0² [A·m²/T].
+    damping_scale : float
+        k_w per κ_w, ω0 B [N·m·s].
+
+    Notes
+    -----
+    Rotor slides, slide "Equations of motion" (seed lines 29–38) normalised as in ``rotor_spin.md`` §4
+    (the factors of :func:`rotor_satellite_from_dimensionless`).
+    """
+    _check_satellite(satellite)
+    _check_orbit(orbit)
+    b = satellite.transverse_inertia
+    b0 = float(dipole_equatorial_b(orbit.earth_moment, orbit.radius))
+    w0 = orbit.mean_motion
+    return w0**2 * b / b0**2, w0 * b
 
 
 def rotor_satellite_from_dimensionless(inertia, rotor_inertia, spin_rate, orbit, *, momentum, restoring, damping,

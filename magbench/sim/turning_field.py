@@ -13,7 +13,7 @@ from ..dynamics.kernels import gyrostat_turning_field_rhs
 from ..integrate import solve_adaptive
 from .result import SimulationResult
 
-__all__ = ["simulate_turning_field_gyrostat"]
+__all__ = ["simulate_turning_field_gyrostat", "turning_field_kinetic_energy"]
 
 
 def simulate_turning_field_gyrostat(inertia, rotor_momentum, damping_gain, field_rate, initial_rate, initial_field,
@@ -90,3 +90,29 @@ def simulate_turning_field_gyrostat(inertia, rotor_momentum, damping_gain, field
     return SimulationResult(time, sol.y, np.empty((0, n)), np.empty((0, n)), labels, (), (),
                             params={"inertia": j, "rotor_momentum": h, "damping_gain": k, "field_rate": rate,
                                     "duration": t_end, "nfev": int(sol.nfev)})
+
+
+def turning_field_kinetic_energy(run):
+    r"""Kinetic energy ½ωᵀJω of the body rates along a turning-field run.
+
+    Parameters
+    ----------
+    run : SimulationResult
+        A run of :func:`simulate_turning_field_gyrostat` (its rates and principal inertia J) [SI].
+
+    Returns
+    -------
+    ndarray, shape (K,)
+        ½ωᵀJω at each sample [J], J of body + rotor counted as rigid (the rotor's own spin
+        relative to the body is constant and left out).
+
+    Notes
+    -----
+    Rotor slides, slide "Control implementation" (seed lines 85–87): the energy whose sign of
+    change tells damping from pumping (its power is −k |w⊥|², ``rotor_spin.md`` §9).
+    """
+    if not isinstance(run, SimulationResult) or "inertia" not in run.params or len(run.states) != 9:
+        raise ValueError("run must be a result of simulate_turning_field_gyrostat")
+    w = run.states[:3].T
+    inertia = np.diag(run.params["inertia"])
+    return 0.5 * np.einsum("ni,ij,nj->n", w, inertia, w)

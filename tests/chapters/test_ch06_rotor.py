@@ -154,24 +154,26 @@ def test_field_model_by_the_normalised_model_agrees_with_the_si_run(tilt_deg):
     """``rotor-field-model`` integrates the symmetric body in the five-state normalised model (RK4);
     the SI model (quaternion, fast spin, Kovalenko's tilted dipole in sim.spinning, DOP853 at the
     chapter's rtol 1e-8) reduces to it exactly for I22 = I33."""
-    from magbench.chapters.ch06_rotor import default_rotor_orbit, orbit_maxima
-    from magbench.chapters.ch06_rotor.figures import _maxima_per_orbit, tilted_normalised_run, tilted_si_run
+    from magbench.chapters.ch06_rotor import default_rotor_orbit
+    from magbench.chapters.ch06_rotor.figures import tilted_normalised_run, tilted_si_run
+    from magbench.sim import maxima_per_orbit, pointing_error_orbit_maxima
     from magbench.params import chapter_parameters
 
     p = chapter_parameters(CHAPTER_KEY)
     items, tilt = tuple(sorted(p.items())), math.radians(tilt_deg)
     t, error = tilted_normalised_run(items, tilt, 1)
-    si = np.degrees(orbit_maxima(tilted_si_run(items, tilt, 1), default_rotor_orbit(p).mean_motion))
+    si = np.degrees(pointing_error_orbit_maxima(tilted_si_run(items, tilt, 1), default_rotor_orbit(p).mean_motion))
     # Tolerance 0.05°: the SI run's integration error (0.007° per orbit on the reference) and the
     # two sample grids (10 s against T/1000 = 5.7 s); measured ≤ 0.01° at both tilts. A wrong node
     # phase or tilt sign moves the maxima by degrees.
-    assert_allclose(_maxima_per_orbit(t, error, 1), si, rtol=0, atol=0.05)
+    assert_allclose(maxima_per_orbit(t, error, 1), si, rtol=0, atol=0.05)
 
 
 @pytest.mark.slow
 def test_an_under_resolved_integrator_shortens_the_transient():
-    from magbench.chapters.ch06_rotor import default_run, default_rotor_orbit, orbit_maxima
+    from magbench.chapters.ch06_rotor import default_run, default_rotor_orbit
     from magbench.params import chapter_parameters
+    from magbench.sim import pointing_error_orbit_maxima as orbit_maxima
 
     p = chapter_parameters(CHAPTER_KEY)
     w0 = default_rotor_orbit(p).mean_motion

@@ -70,3 +70,15 @@ def test_bad_inclination_is_refused():
         field_cone_half_angle(4.0)
     with pytest.raises(ValueError, match="argument_of_latitude must be finite"):
         orbit_field_direction(0.9, np.nan)
+
+
+def test_the_exact_direction_goes_round_the_cone_at_twice_the_orbital_rate_on_average():
+    from magbench.earth import field_cone_rate
+
+    u = np.linspace(0.0, np.pi, 4001)
+    rate = field_cone_rate(np.radians(51.6), u)
+    # once round per half orbit: the mean of dφ/du over [0, π] is 2π/π
+    assert_allclose(np.trapezoid(rate, u) / np.pi, 2.0, rtol=1e-6)
+    assert rate.min() < 1.9 and rate.max() > 2.5                   # not uniform
+    with pytest.raises(ValueError, match="argument_of_latitude"):
+        field_cone_rate(0.5, u[::-1])

@@ -60,3 +60,13 @@ def test_the_field_direction_turns_between_1_5_and_3_orbital_rates_on_a_polar_or
 def test_bad_input(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+@pytest.mark.parametrize("inclination", [0.0, 0.5, np.pi / 2])
+def test_field_magnitude_range_spans_equator_to_highest_latitude(inclination):
+    from magbench.earth import field_magnitude_range
+
+    orbit = _orbit(inclination)
+    b0 = dipole_max_field(orbit) / 2.0
+    low, high = field_magnitude_range(orbit, samples=3601)
+    assert_allclose([low, high], [b0, b0 * np.sqrt(1.0 + 3.0 * np.sin(inclination) ** 2)], rtol=1e-6)

@@ -393,3 +393,20 @@ def test_a_round_coil_is_called_round():
     coaxial_system_b(args[0], ["round", "round"], *args[1:])
     with pytest.raises(ValueError, match="'round' or 'square', got 'circle'"):
         coaxial_system_b(args[0], ["circle", "round"], *args[1:])
+
+
+def test_pair_field_strength_and_centre_field_spread():
+    from magbench.fields import helmholtz_center_h_spread, helmholtz_h_magnitude
+
+    pts = np.array([[0.0, 0.0, 0.0], [0.1, 0.0, 0.05], [0.0, 0.0, 0.3]])
+    assert_allclose(helmholtz_h_magnitude(pts, 0.5, 0.51, 2.3, 110),
+                    np.linalg.norm(helmholtz_b(pts, 0.5, 0.51, 2.3, 110), axis=-1) / MU_0, rtol=1e-15)
+    # H rises with I and falls with d: the largest change over the box is at a corner
+    base = helmholtz_center_h(2.3, 110, 0.5, 0.51)
+    corners = [abs(helmholtz_center_h(2.3 + di, 110, 0.5, d) - base) for di in (-0.05, 0.05) for d in (0.50, 0.52)]
+    assert_allclose(helmholtz_center_h_spread(2.3, 110, 0.5, (0.50, 0.52), 0.05), max(corners), rtol=1e-15)
+    assert helmholtz_center_h_spread(2.3, 110, 0.5, (0.51, 0.51), 0.0) == 0.0
+    with pytest.raises(ValueError, match="separation_range"):
+        helmholtz_center_h_spread(2.3, 110, 0.5, (0.52, 0.50), 0.05)
+    with pytest.raises(ValueError, match="current_spread"):
+        helmholtz_center_h_spread(2.3, 110, 0.5, (0.50, 0.52), -0.05)

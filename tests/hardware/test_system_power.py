@@ -92,3 +92,14 @@ def test_scale_for_power_bad_input(kw, name):
             "power": 80.0, "winding_area": 1e-4, "resistivity": RHO} | kw
     with pytest.raises(ValueError, match=name):
         hardware.coaxial_system_scale_for_power(**args)
+
+
+def test_helmholtz_pair_power_is_both_coils_at_the_ampere_turns_of_eq16():
+    """Two coils of N turns at I = NI/N: 2 I²R with R = 2πaρN/S₀ (the thesis's winding formulas)."""
+    a, d, n, h = 0.5, 0.558, 110.0, 250.0
+    current = float(fields.helmholtz_ampere_turns(h, a, d)) / n
+    expected = 2 * current**2 * float(hardware.winding_resistance(a, n, D_WIRE, RHO))
+    area = n * np.pi * D_WIRE**2 / 4
+    assert_allclose(hardware.helmholtz_pair_power(h, a, d, area, RHO), expected, rtol=1e-12)
+    with pytest.raises(ValueError, match="winding_area"):
+        hardware.helmholtz_pair_power(h, a, d, 0.0, RHO)

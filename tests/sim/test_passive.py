@@ -224,3 +224,22 @@ def test_final_regime_of_a_run_with_known_trends():
         passive_final_regime(run, sat, TNS0_ORBIT, orbits=1)
     with pytest.raises(ValueError, match="run"):
         passive_final_regime(angle, sat, TNS0_ORBIT)
+
+
+def test_transition_times_are_the_first_samples_past_each_threshold():
+    from magbench.sim import PassiveRun, passive_transition_times
+
+    time = 60.0 * np.arange(6)
+    momentum = np.array([[1.0, 0.8, 0.5, 0.3, 0.2, 0.2], [1.0, 0.9, 0.8, 0.7, 0.6, 0.5]])
+    nutation = np.array([[1.0, 1.2, 1.565, 1.57, 1.57, 1.57], [0.5] * 6])
+    zeros = np.zeros_like(momentum)
+    run = PassiveRun(time, momentum, nutation, zeros, zeros, zeros, np.zeros((2, 4)), np.zeros((2, 3)),
+                     np.zeros((2, 2)))
+    relaxed, captured = passive_transition_times(run, [0.2, 0.2])
+    assert_allclose(relaxed, [120.0, np.nan])                      # |θ − π/2| < 1° from the third sample on
+    assert_allclose(captured, [180.0, np.nan])                     # |L| ≤ 0.4 from the fourth; never for member 2
+    one = PassiveRun(time, momentum[0], nutation[0], zeros[0], zeros[0], zeros[0], np.zeros(4), np.zeros(3),
+                     np.zeros(2))
+    assert passive_transition_times(one, 0.2, capture_ratio=4.0)[1] == 60.0
+    with pytest.raises(ValueError, match="flat_tolerance"):
+        passive_transition_times(one, 0.2, flat_tolerance=0.0)

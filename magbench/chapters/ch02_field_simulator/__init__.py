@@ -72,13 +72,10 @@ def simulator_center_h_tolerance(current, turns, radius, spacing_range=(0.50, 0.
 
     The centre-to-centre spacing lies between the measured inner and outer distances
     (0.50–0.52 m, thesis §2.4) and the current is printed to 0.1 A (±0.05 A). The
-    largest |ΔH| over the corners of that box, from its middle, is the tolerance.
+    largest |ΔH| over the corners of that box, from its middle
+    (:func:`magbench.fields.helmholtz_center_h_spread`), is the tolerance.
     """
-
-    d_mid = 0.5 * (spacing_range[0] + spacing_range[1])
-    base = float(fields.helmholtz_center_h(current, turns, radius, d_mid))
-    return max(abs(float(fields.helmholtz_center_h(current + di, turns, radius, d)) - base)
-               for di in (-current_half_digit, current_half_digit) for d in spacing_range)
+    return fields.helmholtz_center_h_spread(current, turns, radius, spacing_range, current_half_digit)
 
 
 #: The band that defines "uniform" for the COMSOL zone lengths: fixed before comparing
@@ -107,8 +104,7 @@ def simulator_rows(params=None):
     h_built = float(fields.helmholtz_center_h(i, n, a, d_built))
     h_comsol = float(fields.helmholtz_center_h(i, n, a, d_comsol))
     tol_built = simulator_center_h_tolerance(i, n, a)
-    tol_comsol = max(abs(float(fields.helmholtz_center_h(i + s * 0.05, n, a, d_comsol)) - h_comsol)
-                     for s in (-1, 1))
+    tol_comsol = fields.helmholtz_center_h_spread(i, n, a, (d_comsol, d_comsol), 0.05)
     res = m["sim-coil-resistance"]
     r_model = float(hardware.winding_resistance(a, n, p["sim_wire_diameter"], p["copper_resistivity"]))
     r_tol = 0.5 * (res.value_high - res.value_low) + res.uncertainty     # range plus the stated ±1 Ω

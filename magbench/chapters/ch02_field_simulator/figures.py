@@ -60,10 +60,6 @@ def geometries(coil_radius, design_spacing_ratio, comsol_spacing, built_spacing)
     ]
 
 
-def _h_line(points, radius, separation, current, turns):
-    return np.linalg.norm(fields.helmholtz_b(points, radius, separation, current, turns), axis=-1) / MU_0
-
-
 # --- thesis Fig. 5: field lines -----------------------------------------------------------
 
 def compute_fig05(turns, current, coil_radius, design_spacing_ratio, comsol_spacing, built_spacing,
@@ -135,7 +131,7 @@ def _compute_line(figure_id, direction, turns, current, coil_radius, design_spac
         pts[:, 2 if direction == "axial" else 0] = s
         length = fields.uniform_zone_length(a, d, tolerance, direction)
         series.append(Series(label, {
-            "position": ("m", s), "|H|": ("A/m", _h_line(pts, a, d, current, turns)),
+            "position": ("m", s), "|H|": ("A/m", fields.helmholtz_h_magnitude(pts, a, d, current, turns)),
             "separation": ("m", [d]), "zone_length": ("m", [length]),
             "H_centre": ("A/m", [float(fields.helmholtz_center_h(current, turns, a, d))]),
         }))
@@ -403,23 +399,16 @@ def plot_fig03(data):
     return fig
 
 
-def _thesis_design_power(p):
-    """Power of the thesis's design pair at 250 A/m with eq. (16)'s ampere-turns [W]."""
-    a = p["sim_coil_radius"]
-    ni = float(fields.helmholtz_ampere_turns(p["sim_design_h"], a, p["sim_spacing_ratio"] * a))
-    area = p["sim_turns"] * np.pi * p["sim_wire_diameter"] ** 2 / 4
-    return 2 * float(hardware.ampere_turns_power(a, ni, area, p["copper_resistivity"]))
-
-
 def _fig03_parameters():
     p = _defaults()
+    a, area = p["sim_coil_radius"], p["sim_turns"] * np.pi * p["sim_wire_diameter"] ** 2 / 4
+    power = hardware.helmholtz_pair_power(p["sim_design_h"], a, p["sim_spacing_ratio"] * a, area,
+                                          p["copper_resistivity"])
     return {
         "tolerance": FigureParameter(0.01, "1", "uniformity band δ"),
         "center_h": FigureParameter(p["sim_design_h"], "A/m", "field at the centre"),
-        "power": FigureParameter(_thesis_design_power(p), "W",
-                                 "total power (default: the thesis's design pair at 250 A/m)"),
-        "winding_area": FigureParameter(p["sim_turns"] * np.pi * p["sim_wire_diameter"] ** 2 / 4, "m^2",
-                                        "copper cross-section of every coil's winding"),
+        "power": FigureParameter(power, "W", "total power (default: the thesis's design pair at 250 A/m)"),
+        "winding_area": FigureParameter(area, "m^2", "copper cross-section of every coil's winding"),
         "copper_resistivity": FigureParameter(p["copper_resistivity"], "ohm m", "copper resistivity"),
     }
 
@@ -524,8 +513,8 @@ def compute_hypotheses(turns, current, coil_radius, built_spacing, wire_diameter
         Series("centre field against turns", {
             "turns": ("1", n_axis), "H_centre": ("A/m", fields.helmholtz_center_h(current, n_axis, a, d))}),
         Series("|H| against probe offset", {
-            "offset": ("m", s), "axial": ("A/m", _h_line(axial, a, d, current, turns)),
-            "transverse": ("A/m", _h_line(across, a, d, current, turns))}),
+            "offset": ("m", s), "axial": ("A/m", fields.helmholtz_h_magnitude(axial, a, d, current, turns)),
+            "transverse": ("A/m", fields.helmholtz_h_magnitude(across, a, d, current, turns))}),
         Series("hypotheses", {
             "predicted_h": ("A/m", [np.nan_to_num(r["predicted_h"], nan=-1.0) for r in rows])}),
     ]

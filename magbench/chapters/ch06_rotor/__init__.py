@@ -13,11 +13,13 @@ import math
 import numpy as np
 
 from ...compare import make_row
-from ...control.spin import relay_spin_dipole, rotor_program_field, slides_printed_damping_torque
+from ...control.spin import rotor_program_field, slides_printed_damping_torque
 from ...errata import kovalenko_page, printed_check
 from ...io import load_printed
 from ...result_cache import cached_result
-from ...sim.spin_correction import relay_spin_correction     # served from here too: claim_rows and the tests call it
+from ...sim.rotor_variants import pointing_error_orbit_maxima
+# relay_spin_correction is served from here too: claim_rows and the tests call it
+from ...sim.spin_correction import relay_spin_correction, relay_spin_torque_over_turn
 from ...sim.spinning import simulate_rotor
 from ..._format import format_number
 from .._base import Chapter, chapter_parameters
@@ -25,7 +27,7 @@ from .defaults import default_rotor_orbit, default_rotor_satellite, rotor_parame
 from ...units import DEG
 
 __all__ = ["CHAPTER", "INPUTS", "default_rotor_orbit", "default_rotor_satellite", "rotor_parameters",
-           "default_run", "orbit_maxima", "claim_rows", "damping_checks", "kovalenko_checks",
+           "default_run", "run_rotor", "claim_rows", "damping_checks", "kovalenko_checks",
            "relay_mean_moment", "relay_spin_correction", "printed_damping_power"]
 
 RPM = 2.0 * math.pi / 60.0
@@ -44,16 +46,20 @@ INPUTS = (
 )
 
 
+def run_rotor(params, satellite, orbit, duration, **options):
+    """:func:`magbench.sim.simulate_rotor` sampled and toleranced as the chapter's inputs say
+    (``sample_interval``, ``relative_tolerance``, and an absolute tolerance 1 % of it)."""
+    return simulate_rotor(satellite, orbit, duration, sample_interval=params["sample_interval"],
+                          rtol=params["relative_tolerance"], atol=1e-2 * params["relative_tolerance"], **options)
+
+
 @cached_result(maxsize=4)
 def _run(items):
     p = dict(items)
     orbit = default_rotor_orbit(p)
-    satellite = default_rotor_satellite(p)
     period = 2.0 * math.pi / orbit.mean_motion
-    return simulate_rotor(satellite, orbit, p["simulation_orbits"] * period,
-                          initial_angles=(p["initial_alpha"], p["initial_beta"], p["initial_gamma"]),
-                          sample_interval=p["sample_interval"], rtol=p["relative_tolerance"],
-                          atol=1e-2 * p["relative_tolerance"])
+    return run_rotor(p, default_rotor_satellite(p), orbit, p["simulation_orbits"] * period,
+                     initial_angles=(p["initial_alpha"], p["initial_beta"], p["initial_gamma"]))
 
 
 def default_run(params=None):
@@ -71,14 +77,6 @@ def default_run(params=None):
     """
     p = {**rotor_parameters(), **(params or chapter_parameters("ch06"))}
     return _run(tuple(sorted(p.items())))
-
-
-def orbit_maxima(run, orbital_rate):
-    """Largest pointing error [rad] in each whole orbit of a run (orbit k: k T ≤ t < (k + 1) T)."""
-    period = 2.0 * math.pi / orbital_rate
-    index = np.floor(run.time / period * (1.0 + 1e-12)).astype(int)
-    n = max(1, int(round(run.time[-1] / period)))        # a run shorter than an orbit: its one partial orbit
-    return np.array([run.pointing_error[index == k].max() for k in range(n)])
 
 
 def claim_rows(params=None):
@@ -113,7 +111,7 @@ def claim_rows(params=None):
     pointing = claims["rotor-pointing-accuracy"]
     kov = load_printed("kovalenko")
     kov_spin, kov_turn = kov["kov-spin-accuracy"], kov["kov-spin-axis-precession"]
-    maxima = orbit_maxima(run, w0)
+    maxima = pointing_error_orbit_maxima(run, w0)
     mean_spin = float(np.mean(run.spin_rate))
     deviation = float(np.max(np.abs(run.spin_rate - mean_spin)))
     where = "rotor slides, Conclusion"
@@ -212,15 +210,10 @@ def damping_checks():
 def relay_mean_moment(samples=100_000):
     """Kovalenko's relay spin law (7.12) averaged over a spin turn: mean |(L × B)_z|/(L0 B⊥) [-].
 
-    The law of :func:`magbench.control.relay_spin_dipole`, L_x = −L0 sign Δω sign B_y,
-    L_y = L0 sign Δω sign B_x, with the transverse field of magnitude B⊥ at angle α in the
-    spin plane; the mean of the spin-axis torque over α is Kovalenko's effective moment (7.26).
+    The mean over α of the spin-axis torque of :func:`magbench.sim.relay_spin_torque_over_turn`
+    is Kovalenko's effective moment (7.26).
     """
-    alpha = (np.arange(samples) + 0.5) * (2.0 * math.pi / samples)
-    # the transverse field over one turn, in units of B⊥; the law with L0 = 1, sign Δω = +1
-    field = np.stack([np.cos(alpha), np.sin(alpha), np.zeros_like(alpha)], axis=-1)
-    torque = np.cross(relay_spin_dipole(field, 1.0, 1.0), field)[:, 2]
-    return float(np.mean(np.abs(torque)))
+    return float(np.mean(np.abs(relay_spin_torque_over_turn(samples)[1])))
 
 
 def kovalenko_checks():

@@ -10,14 +10,21 @@ import math
 import numpy as np
 
 from ...control.rotor_stability import rotor_floquet_multipliers, rotor_stability_map
-from ...control.spin import relay_spin_dipole, rotor_equilibrium_dipole, rotor_program_field, rotor_spin_reference
+from ...control.spin import (rotor_equilibrium_axial_momentum, rotor_equilibrium_dipole, rotor_program_field,
+                             rotor_reference_torque, rotor_spin_reference)
 from ...earth.dipole import dipole_equatorial_b
 from ...io import load_printed
 from ...result_cache import cached_result
-from ...sim.spinning import rotor_dimensionless, simulate_turning_field_gyrostat
+from ...sim.rotor_variants import (maxima_per_orbit, pointing_error_orbit_maxima, reference_momentum_rate_offset,
+                                   rotor_satellite_with_products, symmetric_rotor_orbit_maxima,
+                                   tilted_dipole_pointing_error, transverse_asymmetry,
+                                   transverse_inertia_with_asymmetry)
+from ...sim.spin_correction import relay_spin_torque_over_turn
+from ...sim.spinning import rotor_dimensionless, rotor_gain_scales, simulate_turning_field_gyrostat
+from ...sim.turning_field import turning_field_kinetic_energy
 from .._base import chapter_parameters
 from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
-from . import CHAPTER, default_rotor_orbit, default_rotor_satellite, default_run, orbit_maxima
+from . import CHAPTER, default_rotor_orbit, default_rotor_satellite, default_run, run_rotor
 from ..._validate import shown
 from ...units import DEG
 
@@ -40,14 +47,10 @@ def _numbers():
     return rotor_dimensionless(default_rotor_satellite(p), default_rotor_orbit(p))
 
 
-def _si_factors(p=None):
+def _si_factors():
     """k per κ [A·m²/T] and k_w per κ_w [N·m·s] of the chapter's spacecraft."""
-    p = p or chapter_parameters(CHAPTER.key)
-    orbit = default_rotor_orbit(p)
-    b = 0.5 * (p["transverse_inertia_2"] + p["transverse_inertia_3"])
-    b0 = float(dipole_equatorial_b(orbit.earth_moment, orbit.radius))
-    w0 = orbit.mean_motion
-    return w0**2 * b / b0**2, w0 * b
+    p = chapter_parameters(CHAPTER.key)
+    return rotor_gain_scales(default_rotor_satellite(p), default_rotor_orbit(p))
 
 
 # --- the lost slide "Stability and choice of control parameters" (reconstruction) ------------
@@ -178,7 +181,7 @@ def compute_simulation(initial_alpha, initial_beta, orbits):
         "spin_deviation": ("omega0", (run.spin_rate - mean) / w0),
         "spin_reference_deviation": ("omega0", (run.spin_reference - mean) / w0),
         "dipole_magnitude": ("A m^2", np.linalg.norm(run.dipole, axis=1)),
-    }), Series("orbit maxima", {"pointing_error": ("deg", np.degrees(orbit_maxima(run, w0)))})],
+    }), Series("orbit maxima", {"pointing_error": ("deg", np.degrees(pointing_error_orbit_maxima(run, w0)))})],
         extra={"mean_spin_rpm": mean / RPM})
 
 
@@ -238,13 +241,12 @@ def compute_equilibrium_law(inclination, equatorial_b, orbital_rate, gain, axial
         torque = np.cross(m, field)
         series.append(Series(f"$k$ × {factor:g}", {"u": ("deg", np.degrees(u)), "dipole": ("A m^2", m),
                                                  "torque": ("N m", torque)}))
-    h = axial_momentum * np.cos(u) ** 2
+    h = rotor_equilibrium_axial_momentum(u, axial_momentum)
     s = rotor_spin_reference(u, axial_momentum, rotor_momentum, axial_inertia)
     series.append(Series("reference", {"u": ("deg", np.degrees(u)), "axial_momentum_ratio": ("1", h / axial_momentum),
                                        "spin_reference_deviation": ("omega0", (s - s.mean()) / orbital_rate)}))
     diff = float(np.max(np.abs(series[1].columns["torque"][1] - series[0].columns["torque"][1])))
-    need = np.stack([-axial_momentum * orbital_rate * np.sin(2 * u), 0 * u,
-                     -axial_momentum * orbital_rate * np.cos(u) ** 2], axis=1)
+    need = rotor_reference_torque(u, axial_momentum, orbital_rate)
     residual = float(np.max(np.abs(series[0].columns["torque"][1] - need)))
     return FigureData("", "", "", {}, series, extra={"torque_gain_difference": diff, "torque_residual": residual,
                                                      "torque_scale": axial_momentum * orbital_rate})
@@ -307,8 +309,7 @@ def _energy_run(law, gain, rotor_momentum, initial_rate, field_rate, b0, duratio
     k = float(gain) * (1.0 if law == "corrected" else -1.0)
     run = simulate_turning_field_gyrostat(inertia, rotor_momentum, k, field_rate, [initial_rate] * 3,
                                           [b0, 0.0, 0.0], [0.0, 1.0, 0.0], duration)
-    w = run.states[:3].T
-    return run.time, 0.5 * np.einsum("ni,ij,nj->n", w, inertia, w)
+    return run.time, turning_field_kinetic_energy(run)
 
 
 def compute_damping_sign(damping_gain, rotor_momentum, initial_rate, field_rate, equatorial_b, duration):
@@ -372,7 +373,7 @@ def _field_model_parameters():
 def _pointing_series(label, run, w0):
     return Series(label, {"time": ("orbit", run.time * w0 / (2.0 * math.pi)),
                           "pointing_error": ("deg", np.degrees(run.pointing_error)),
-                          "orbit_maxima": ("deg", np.degrees(orbit_maxima(run, w0)))})
+                          "orbit_maxima": ("deg", np.degrees(pointing_error_orbit_maxima(run, w0)))})
 
 
 def _whole_orbits(orbits):
@@ -387,38 +388,21 @@ def tilted_si_run(items, tilt, orbits):
     """The default spacecraft made symmetric (I22 = I33 = B, so that the reference is an exact solution)
     from the reference under a real dipole tilted by ``tilt``: the SI model (DOP853 at the chapter's
     tolerance; the tests' check of :func:`tilted_normalised_run`)."""
-    from ...sim.spinning import simulate_rotor
-
     p = _with_asymmetry(dict(items), 0.0)
     orbit = default_rotor_orbit({**p, "dipole_tilt": tilt})
-    return simulate_rotor(default_rotor_satellite(p), orbit, orbits * 2.0 * math.pi / orbit.mean_motion,
-                          sample_interval=p["sample_interval"], rtol=p["relative_tolerance"],
-                          atol=1e-2 * p["relative_tolerance"])
+    return run_rotor(p, default_rotor_satellite(p), orbit, orbits * 2.0 * math.pi / orbit.mean_motion)
 
 
 @cached_result(maxsize=8)
 def tilted_normalised_run(items, tilt, orbits, steps_per_orbit=1000):
-    """As :func:`tilted_si_run` by the five-state normalised model (``rotor_spin.md`` §4; RK4): exact for
-    the symmetric body, whose spin drops out. Returns τ/2π [orbits] and the pointing error
-    arccos(cos α cos β) [deg] (cached: the figure, its style check and the chapter's tests share the runs)."""
-    from ...sim.spinning import simulate_rotor_normalised
-
+    """As :func:`tilted_si_run` by the five-state normalised model
+    (:func:`magbench.sim.tilted_dipole_pointing_error`): exact for the symmetric body, whose spin
+    drops out. Returns τ/2π [orbits] and the pointing error [deg] (cached: the figure, its style
+    check and the chapter's tests share the runs)."""
     p = _with_asymmetry(dict(items), 0.0)
-    orbit = default_rotor_orbit(p)
-    n = rotor_dimensionless(default_rotor_satellite(p), orbit)
-    # Kovalenko's Λ of the SI model's real field with a non-rotating Earth (sim.spinning._body_model)
-    phase = orbit.ascending_node - orbit.dipole_longitude - 0.5 * math.pi
-    run = simulate_rotor_normalised(n["axial_ratio"], n["momentum"], n["restoring"], n["damping"], n["inclination"],
-                                    [0.0, 0.0, n["momentum"], 1.0, 0.0], orbits, steps_per_orbit=steps_per_orbit,
-                                    real_dipole_tilt=tilt, real_node_phase=phase)
-    error = np.degrees(np.arccos(np.clip(np.cos(run.states[0]) * np.cos(run.states[1]), -1.0, 1.0)))
-    return run.time / (2.0 * math.pi), error
-
-
-def _maxima_per_orbit(time_orbits, values, orbits):
-    """Largest value in each whole orbit k ≤ t < k + 1 (as :func:`orbit_maxima` counts them)."""
-    index = np.floor(time_orbits * (1.0 + 1e-12)).astype(int)
-    return np.array([values[index == k].max() for k in range(orbits)])
+    t, error = tilted_dipole_pointing_error(default_rotor_satellite(p), default_rotor_orbit(p), tilt, orbits,
+                                            steps_per_orbit=steps_per_orbit)
+    return t, np.degrees(error)
 
 
 def compute_field_model(real_tilt, small_tilt, orbits):
@@ -434,7 +418,7 @@ def compute_field_model(real_tilt, small_tilt, orbits):
         t, error = tilted_normalised_run(items, float(tilt), n)
         series.append(Series(f"real dipole tilted {math.degrees(tilt):.1f}°", {
             "time": ("orbit", t), "pointing_error": ("deg", error),
-            "orbit_maxima": ("deg", _maxima_per_orbit(t, error, n))}))
+            "orbit_maxima": ("deg", maxima_per_orbit(t, error, n))}))
     small_last = float(series[0].columns["orbit_maxima"][1][-1])
     return FigureData("", "", "", {}, series,
                       extra={"per_degree": small_last / math.degrees(small_tilt) if small_tilt else math.nan})
@@ -468,37 +452,18 @@ def _inertia_parameters():
     }
 
 
-def inertia_with_products(params, product):
-    """The default spacecraft's inertia with I12 = I13 = ``product`` [kg·m²] (axis 1 no longer principal)."""
-    j = np.diag([params["axial_inertia"], params["transverse_inertia_2"], params["transverse_inertia_3"]])
-    j[0, 1] = j[1, 0] = j[0, 2] = j[2, 0] = float(product)
-    return j
-
-
 @cached_result(maxsize=8)
 def _inertia_run(items, product, orbits, damping):
     """The default spacecraft with products of inertia from (α0, β0) with the momentum the reference
     needs (cached like :func:`tilted_normalised_run`); returns the run and the start's rate offset [rad/s]."""
-    from dataclasses import replace
-
-    from ...dynamics.gyrostat import airplane_231_matrix
-    from ...sim.spinning import simulate_rotor
-
     p = dict(items)
     orbit = default_rotor_orbit(p)
-    w0 = orbit.mean_motion
-    j = inertia_with_products(p, product)
-    sat = replace(default_rotor_satellite(p), inertia=j)
+    sat = rotor_satellite_with_products(default_rotor_satellite(p), product)
     angles = (p["initial_alpha"], p["initial_beta"], p["initial_gamma"])
-    c0 = airplane_231_matrix(*angles)
-    e1 = np.array([1.0, 0.0, 0.0])
-    hr = sat.rotor_inertia * sat.rotor_rate
-    omega_needed = np.linalg.solve(j, sat.axial_momentum * e1 + sat.transverse_inertia * w0 * c0[:, 1] - hr * e1)
-    omega_default = w0 * c0[:, 1] + (sat.axial_momentum - hr) / j[0, 0] * e1
-    run = simulate_rotor(sat, orbit, orbits * 2.0 * math.pi / w0, initial_angles=angles,
-                         initial_rate_error=omega_needed - omega_default, sample_interval=p["sample_interval"],
-                         rtol=p["relative_tolerance"], atol=1e-2 * p["relative_tolerance"], damping=damping)
-    return run, float(np.linalg.norm(omega_needed - omega_default))
+    offset = reference_momentum_rate_offset(sat, orbit, angles)
+    run = run_rotor(p, sat, orbit, orbits * 2.0 * math.pi / orbit.mean_motion, initial_angles=angles,
+                    initial_rate_error=offset, damping=damping)
+    return run, float(np.linalg.norm(offset))
 
 
 def compute_products_of_inertia(product_of_inertia, orbits):
@@ -530,13 +495,7 @@ def _relay_parameters():
 
 def compute_spin_relay(samples):
     """Kovalenko's relay spin law (7.12) over a turn of the transverse field: its spin-axis torque per L0 B⊥."""
-    n = int(samples)
-    if n < 8:
-        raise ValueError(f"samples must be >= 8, got {shown(samples)}")
-    alpha = (np.arange(n) + 0.5) * (2.0 * math.pi / n)
-    # the transverse field over one turn, in units of B⊥; the law with L0 = 1, sign Δω = +1
-    field = np.stack([np.cos(alpha), np.sin(alpha), np.zeros_like(alpha)], axis=-1)
-    torque = np.cross(relay_spin_dipole(field, 1.0, 1.0), field)[:, 2]
+    alpha, torque = relay_spin_torque_over_turn(samples)
     return FigureData("", "", "", {}, [Series("relay (7.12)", {"angle": ("deg", np.degrees(alpha)),
                                                                "torque": ("1", torque)})],
                       extra={"mean": float(np.mean(np.abs(torque)))})
@@ -576,8 +535,7 @@ register(FigureSpec("kovalenko-spin-relay", "Kovalenko's relay spin law over a t
 
 def _asymmetry(params):
     """ε = (I33 − I22)/(I33 + I22) of a parameter set [-]."""
-    i2, i3 = params["transverse_inertia_2"], params["transverse_inertia_3"]
-    return (i3 - i2) / (i3 + i2)
+    return transverse_asymmetry(params["transverse_inertia_2"], params["transverse_inertia_3"])
 
 
 def _asymmetry_parameters():
@@ -590,10 +548,9 @@ def _asymmetry_parameters():
 
 def _with_asymmetry(params, asymmetry):
     """The parameters with I22 = B(1 − ε), I33 = B(1 + ε), B = (I22 + I33)/2 and everything else held."""
-    p = dict(params)
-    b = 0.5 * (p["transverse_inertia_2"] + p["transverse_inertia_3"])
-    p.update(transverse_inertia_2=b * (1.0 - asymmetry), transverse_inertia_3=b * (1.0 + asymmetry))
-    return p
+    i2, i3 = transverse_inertia_with_asymmetry(params["transverse_inertia_2"], params["transverse_inertia_3"],
+                                               asymmetry)
+    return {**params, "transverse_inertia_2": i2, "transverse_inertia_3": i3}
 
 
 @cached_result(maxsize=8)
@@ -607,44 +564,26 @@ def asymmetric_si_maxima(items, asymmetry, orbits):
     give orbit-2 maxima 18.5, 18.3 and 21.2° against DOP853's 21.4°), and at 30 rpm 40 steps per turn
     are 113 000 steps per orbit at 65–100 µs per vectorised numpy call: slower than DOP853 per member.
     """
-    from ...sim.spinning import simulate_rotor
-
     p = dict(items)
     w0 = default_rotor_orbit(p).mean_motion
     if math.isclose(asymmetry, _asymmetry(p), rel_tol=0.0, abs_tol=1e-12) and orbits <= p["simulation_orbits"]:
-        return np.degrees(orbit_maxima(default_run(p), w0))[:orbits]
+        return np.degrees(pointing_error_orbit_maxima(default_run(p), w0))[:orbits]
     p = _with_asymmetry(p, asymmetry)
-    run = simulate_rotor(default_rotor_satellite(p), default_rotor_orbit(p), orbits * 2.0 * math.pi / w0,
-                         initial_angles=(p["initial_alpha"], p["initial_beta"], p["initial_gamma"]),
-                         sample_interval=p["sample_interval"], rtol=p["relative_tolerance"],
-                         atol=1e-2 * p["relative_tolerance"])
-    return np.degrees(orbit_maxima(run, w0))
+    run = run_rotor(p, default_rotor_satellite(p), default_rotor_orbit(p), orbits * 2.0 * math.pi / w0,
+                    initial_angles=(p["initial_alpha"], p["initial_beta"], p["initial_gamma"]))
+    return np.degrees(pointing_error_orbit_maxima(run, w0))
 
 
 @cached_result(maxsize=8)
 def symmetric_normalised_maxima(items, orbits, steps_per_orbit=1000):
     """Largest pointing error per orbit [deg] of the symmetric body (ε = 0) from the chapter's start,
-    by the five-state normalised model (``rotor_spin.md`` §4; RK4, no fast spin in it: 500 and 4000
-    steps per orbit give maxima equal to 1e-5°).
-
-    For I22 = I33 the SI model reduces exactly to it: the spin drops out of the transverse
-    dynamics. The SI start ω = ω0 C0 e2 + s_ref(0) e1 is h = c1 + a sin β0 (H = A ω1 + J_f ν),
-    Ω2 = cos β0, Ω3 = 0 (semi-body components of ω0 C0 e2); the pointing error is
-    arccos C11 = arccos(cos α cos β).
+    by the five-state normalised model (:func:`magbench.sim.symmetric_rotor_orbit_maxima`): for
+    I22 = I33 the SI model reduces exactly to it, the spin drops out of the transverse dynamics.
     """
-    from ...sim.spinning import simulate_rotor_normalised
-
     p = _with_asymmetry(dict(items), 0.0)
-    n = rotor_dimensionless(default_rotor_satellite(p), default_rotor_orbit(p))
-    alpha0, beta0 = p["initial_alpha"], p["initial_beta"]
-    x0 = [alpha0, beta0, n["momentum"] + n["axial_ratio"] * math.sin(beta0), math.cos(beta0), 0.0]
-    steps = int(steps_per_orbit)
-    run = simulate_rotor_normalised(n["axial_ratio"], n["momentum"], n["restoring"], n["damping"], n["inclination"],
-                                    x0, orbits, steps_per_orbit=steps)
-    alpha, beta = run.states[0], run.states[1]
-    error = np.degrees(np.arccos(np.clip(np.cos(alpha) * np.cos(beta), -1.0, 1.0)))
-    # orbit k holds the samples k·steps … (k + 1)·steps − 1, as orbit_maxima counts them
-    return np.array([error[k * steps:(k + 1) * steps].max() for k in range(orbits)])
+    return np.degrees(symmetric_rotor_orbit_maxima(default_rotor_satellite(p), default_rotor_orbit(p),
+                                                   p["initial_alpha"], p["initial_beta"], orbits,
+                                                   steps_per_orbit=steps_per_orbit))
 
 
 def _asymmetric_run(items, asymmetry, orbits):

@@ -215,7 +215,8 @@ def full_run(params=None):
         ``run`` (:class:`magbench.sim.PassiveRun`), ``hours`` [h]; ``session_hours`` and
         ``session_momentum`` (the simulated L at Table 1's hours) [h], [kg·m²/s];
         ``relaxed_hours`` (first time the nutation is within 1° of π/2, NaN if never) [h];
-        ``capture_hours`` (first time L falls to twice its final value) [h];
+        ``capture_hours`` (first time L falls to twice its final value, NaN if never) [h]
+        (:func:`magbench.sim.passive_transition_times`);
         ``final_angle``, ``final_rate``, ``final_momentum`` (means over the last orbit) [rad],
         [rad/s], [kg·m²/s]; ``conical_angle`` (Ω²(A − C) cos θ′ = mB at the final rate and the
         orbit-mean |B|; NaN without a solution) [rad]; ``final_orbit_means`` (the angle
@@ -223,20 +224,18 @@ def full_run(params=None):
         [rad]; ``direction`` (initial L̂) [-].
     """
     from ...io.tns0 import table1_hours
-    from ...sim import passive_final_regime
+    from ...sim import passive_final_regime, passive_transition_times
 
     p = _params(params)
     run, direction = _full(p)
     final = passive_final_regime(run, satellite_from(p), orbit_from(p), orbits=FINAL_ORBITS)
     hours = run.time / 3600.0
     final_l = float(final["final_momentum"])
-    relaxed = np.flatnonzero(np.abs(run.nutation - np.pi / 2) < np.radians(1.0))
-    captured = np.flatnonzero(run.angular_momentum <= 2.0 * final_l)
+    relaxed, captured = passive_transition_times(run, final_l)
     session_hours = table1_hours()
     return {"run": run, "hours": hours, "session_hours": session_hours,
             "session_momentum": np.interp(session_hours, hours, run.angular_momentum),
-            "relaxed_hours": float(hours[relaxed[0]]) if relaxed.size else float("nan"),
-            "capture_hours": float(hours[captured[0]]),
+            "relaxed_hours": float(relaxed / 3600.0), "capture_hours": float(captured / 3600.0),
             "final_angle": float(final["final_angle"]), "final_rate": float(final["final_rate"]),
             "final_orbit_means": final["orbit_means"], "final_momentum": final_l, "mean_field": final["mean_field"],
             "direction": direction, "conical_angle": float(final["conical_angle"])}
@@ -384,13 +383,13 @@ def capture_rows(params=None):
 def cone_checks():
     """TNS-0 §1: the averaged field model's 'constant rate, twice the orbital rate', on the
     source's own inclination (the ISS orbit; never on overridden parameters)."""
-    from ...earth import field_cone_deviation, field_cone_half_angle
+    from ...earth import field_cone_deviation, field_cone_half_angle, field_cone_rate
 
     p = {name: par.value_si for name, par in load_parameter_set("tns0").items()}
     i = p["orbit_inclination"]
     u = np.linspace(0.0, np.pi, 20001)
-    off_cone, direction_error, phase_error = field_cone_deviation(i, u)
-    rate = np.gradient(2.0 * u + np.unwrap(phase_error), u)
+    off_cone, direction_error, _ = field_cone_deviation(i, u)
+    rate = field_cone_rate(i, u)
     row = load_printed("tns0")["tns0-cone-rate"]
     return [printed_check(
         row, id="tns0-field-cone-rate", chapter="ch07", location="§1 (Fig. 3)",

@@ -204,6 +204,7 @@ AMPLITUDES = (6.0, 12.0, 20.0, 30.0, 60.0)
 def compute_rod_loops(rod_coercivity, rod_remanence, rod_saturation, transit_field_amplitude,
                       transit_loop_energy, orbit_inclination, orbit_altitude, earth_dipole_moment):
     """Settled Flatley–Henretty loops at several amplitudes and the loop energy against the amplitude."""
+    from ...earth import field_magnitude_range
     from ...hardware import limiting_loop_energy, rod_cycle_energy, settled_hysteresis_loop
 
     material = (rod_coercivity, rod_remanence, rod_saturation)
@@ -217,11 +218,9 @@ def compute_rod_loops(rod_coercivity, rod_remanence, rod_saturation, transit_fie
                                                      "W": ("J/m^3", [transit_loop_energy])}))
     p = dict(orbit_inclination=orbit_inclination, orbit_altitude=orbit_altitude,
              earth_dipole_moment=earth_dipole_moment)
-    orbit = orbit_from(p)
-    field = np.linalg.norm(orbit.field(np.linspace(0.0, orbit.period, 721)), axis=-1) / MU_0
     return FigureData("", "", "", {}, series,
                       extra={"saturation_limit": 4.0 * rod_saturation * rod_coercivity,
-                             "orbit_h": (float(field.min()), float(field.max()))})
+                             "orbit_h": tuple(b / MU_0 for b in field_magnitude_range(orbit_from(p)))})
 
 
 def plot_rod_loops(data):
