@@ -15,6 +15,7 @@ from numpy.testing import assert_allclose
 from magbench import figures
 from magbench.chapters import comparisons, errata, row_kind
 from magbench.chapters.ch06_rotor import relay_mean_moment, relay_spin_correction
+from magbench.result_cache import ChapterInputs
 from magbench.sim import rotor_finite_difference_monodromy
 
 CHAPTER_KEY = "ch06"
@@ -160,7 +161,7 @@ def test_field_model_by_the_normalised_model_agrees_with_the_si_run(tilt_deg):
     from magbench.params import chapter_parameters
 
     p = chapter_parameters(CHAPTER_KEY)
-    items, tilt = tuple(sorted(p.items())), math.radians(tilt_deg)
+    items, tilt = ChapterInputs(p), math.radians(tilt_deg)
     t, error = tilted_normalised_run(items, tilt, 1)
     si = np.degrees(pointing_error_orbit_maxima(tilted_si_run(items, tilt, 1), default_rotor_orbit(p).mean_motion))
     # Tolerance 0.05°: the SI run's integration error (0.007° per orbit on the reference) and the
@@ -190,7 +191,7 @@ def test_symmetric_member_of_the_asymmetry_sweep_agrees_with_the_si_run():
     from magbench.chapters.ch06_rotor.figures import asymmetric_si_maxima, symmetric_normalised_maxima
     from magbench.params import chapter_parameters
 
-    items = tuple(sorted(chapter_parameters(CHAPTER_KEY).items()))
+    items = ChapterInputs(chapter_parameters(CHAPTER_KEY))
     fast = symmetric_normalised_maxima(items, 2)
     si = asymmetric_si_maxima(items, 0.0, 2)
     # Tolerance 0.1°: what remains is the SI run's integration error (0.007° per orbit on the

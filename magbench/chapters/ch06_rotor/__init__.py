@@ -16,7 +16,7 @@ from ...compare import make_row
 from ...control.spin import rotor_program_field, slides_printed_damping_torque
 from ...errata import kovalenko_page, printed_check
 from ...io import load_printed
-from ...result_cache import cached_result
+from ...result_cache import ChapterInputs, cached_result
 from ...sim.rotor_variants import pointing_error_orbit_maxima
 # relay_spin_correction is served from here too: claim_rows and the tests call it
 from ...sim.spin_correction import relay_spin_correction, relay_spin_torque_over_turn
@@ -76,7 +76,7 @@ def default_run(params=None):
         The run (cached: the figure and the compare rows share one run).
     """
     p = {**rotor_parameters(), **(params or chapter_parameters("ch06"))}
-    return _run(tuple(sorted(p.items())))
+    return _run(ChapterInputs(p))
 
 
 def claim_rows(params=None):

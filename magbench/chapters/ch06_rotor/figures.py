@@ -14,7 +14,7 @@ from ...control.spin import (rotor_equilibrium_axial_momentum, rotor_equilibrium
                              rotor_reference_torque, rotor_spin_reference)
 from ...earth.dipole import dipole_equatorial_b
 from ...io import load_printed
-from ...result_cache import cached_result
+from ...result_cache import ChapterInputs, cached_result
 from ...sim.rotor_variants import (maxima_per_orbit, pointing_error_orbit_maxima, reference_momentum_rate_offset,
                                    rotor_satellite_with_products, symmetric_rotor_orbit_maxima,
                                    tilted_dipole_pointing_error, transverse_asymmetry,
@@ -412,7 +412,7 @@ def compute_field_model(real_tilt, small_tilt, orbits):
     the tests check it against the SI run)."""
     n = _whole_orbits(orbits)
     p = chapter_parameters(CHAPTER.key)
-    items = tuple(sorted(p.items()))
+    items = ChapterInputs(p)
     series = []
     for tilt in (small_tilt, real_tilt):
         t, error = tilted_normalised_run(items, float(tilt), n)
@@ -479,7 +479,7 @@ def compute_products_of_inertia(product_of_inertia, orbits):
     w0 = default_rotor_orbit(p).mean_motion
     series = []
     for damping, label in (("rate", "rate error damped (slides)"), ("momentum", "momentum error damped (Kovalenko)")):
-        run, offset = _inertia_run(tuple(sorted(p.items())), float(product_of_inertia), n, damping)
+        run, offset = _inertia_run(ChapterInputs(p), float(product_of_inertia), n, damping)
         series.append(_pointing_series(label, run, w0))
     return FigureData("", "", "", {}, series, extra={"rate_offset": offset / w0})
 
@@ -602,7 +602,7 @@ def compute_asymmetry(largest_asymmetry, orbits):
     """Largest pointing error per orbit against ε = (I33 − I22)/(I33 + I22), from the chapter's start."""
     n = _whole_orbits(orbits)
     p = chapter_parameters(CHAPTER.key)
-    items = tuple(sorted(p.items()))
+    items = ChapterInputs(p)
     eps = asymmetry_members(_asymmetry(p), float(largest_asymmetry))
     maxima = np.array([_asymmetric_run(items, e, n) for e in eps])          # (members, orbits)
     return FigureData("", "", "", {}, [Series(f"orbit {k + 1}", {"asymmetry": ("1", np.array(eps)),
