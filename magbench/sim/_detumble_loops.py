@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..control.kernels import bdot_dipole, bdot_dipole_projected
+from ..dynamics import kernels as dynamics_kernels
 from ..earth.circular_orbit import CircularOrbit
 from ..integrate import rk4_step
 
@@ -201,16 +202,13 @@ class _Body:
             r = self.rotate(rt, radial)
             g = _cross3(r, self.inertia_times(r))
             torque = tuple(t + self.gg * gi for t, gi in zip(torque, g))
+        # Euler's equations on the component arrays, J⁻¹ multiplied for a tensor as the
+        # compiled loop does (dynamics.kernels.euler_rates solves: equal only to rounding)
         jw = self.inertia_times(w)
         wjw = _cross3(w, jw)
         w_dot = self.inertia_solve(tuple(t - c for t, c in zip(torque, wjw)))
         out = np.empty_like(state)
-        qw, qx, qy, qz = q
-        wx, wy, wz = w
-        out[0] = -0.5 * (qx * wx + qy * wy + qz * wz)
-        out[1] = 0.5 * (qw * wx + qy * wz - qz * wy)
-        out[2] = 0.5 * (qw * wy - qx * wz + qz * wx)
-        out[3] = 0.5 * (qw * wz + qx * wy - qy * wx)
+        out[:4] = dynamics_kernels.quaternion_rate(state[:4].T, state[4:].T).T
         out[4], out[5], out[6] = w_dot
         return out
 
