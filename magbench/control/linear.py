@@ -6,10 +6,26 @@ Thesis §4.1, eqs. (36)–(38) linearised; python-control is the peer in the tes
 
 import numpy as np
 
+from .._docstrings import fill_docstring
 from .._validate import as_finite, as_positive
 
 __all__ = ["closed_loop_polynomial", "closed_loop_poles", "open_loop_transfer", "closed_loop_transfer",
            "closed_loop_state_space", "integral_gain_limit", "critical_gain_scale", "double_integrator_ultimate_gain"]
+
+
+#: The linearised loop's inputs, described once (thesis eqs. (36)-(38)).
+_LOOP_PARAMETERS = {
+    "inertia": """
+        inertia : float
+            J [kg·m²], > 0.""",
+    "field": """
+        field : float
+            B0 [T], > 0.""",
+    "gains": """
+        kp, ki, kd : float
+            Gains [A·m²/rad], [A·m²/(rad·s)], [A·m²·s/rad].""",
+}
+_document_loop = fill_docstring(_LOOP_PARAMETERS)
 
 
 def _checked_loop(inertia, field, kp, ki, kd):
@@ -20,17 +36,13 @@ def _checked_loop(inertia, field, kp, ki, kd):
     return j, b, kp, ki, kd
 
 
+@_document_loop
 def closed_loop_polynomial(inertia, field, kp, ki, kd):
     r"""Characteristic polynomial of the linearised closed loop.
 
     Parameters
     ----------
-    inertia : float
-        J [kg·m²], > 0.
-    field : float
-        B0 [T], > 0.
-    kp, ki, kd : float
-        Gains [A·m²/rad], [A·m²/(rad·s)], [A·m²·s/rad].
+    {inertia, field, gains}
 
     Returns
     -------
@@ -52,17 +64,13 @@ def closed_loop_polynomial(inertia, field, kp, ki, kd):
     return np.array([j, b * kd, b * kp, b * ki])
 
 
+@_document_loop
 def closed_loop_poles(inertia, field, kp, ki, kd):
     r"""Poles of the linearised closed loop.
 
     Parameters
     ----------
-    inertia : float
-        J [kg·m²], > 0.
-    field : float
-        B0 [T], > 0.
-    kp, ki, kd : float
-        Gains [A·m²/rad], [A·m²/(rad·s)], [A·m²·s/rad].
+    {inertia, field, gains}
 
     Returns
     -------
@@ -85,17 +93,13 @@ def closed_loop_poles(inertia, field, kp, ki, kd):
     return roots[np.argsort(-roots.real, kind="stable")]
 
 
+@_document_loop
 def open_loop_transfer(inertia, field, kp, ki, kd):
     r"""Numerator and denominator of the loop transfer function, the PID times the plant.
 
     Parameters
     ----------
-    inertia : float
-        J [kg·m²], > 0.
-    field : float
-        B0 [T], > 0.
-    kp, ki, kd : float
-        Gains [A·m²/rad], [A·m²/(rad·s)], [A·m²·s/rad].
+    {inertia, field, gains}
 
     Returns
     -------
@@ -119,17 +123,13 @@ def open_loop_transfer(inertia, field, kp, ki, kd):
     return b * np.array([kd, kp, ki]), np.array([j, 0.0, 0.0, 0.0])
 
 
+@_document_loop
 def closed_loop_transfer(inertia, field, kp, ki, kd):
     r"""Numerator and denominator of the closed loop from the target ψ_des to ψ.
 
     Parameters
     ----------
-    inertia : float
-        J [kg·m²], > 0.
-    field : float
-        B0 [T], > 0.
-    kp, ki, kd : float
-        Gains [A·m²/rad], [A·m²/(rad·s)], [A·m²·s/rad].
+    {inertia, field, gains}
 
     Returns
     -------
@@ -151,17 +151,13 @@ def closed_loop_transfer(inertia, field, kp, ki, kd):
     return b * np.array([kp, ki]), closed_loop_polynomial(j, b, kp, ki, kd)
 
 
+@_document_loop
 def closed_loop_state_space(inertia, field, kp, ki, kd):
     r"""State and output matrices of the linearised closed loop about ψ_des = 0.
 
     Parameters
     ----------
-    inertia : float
-        J [kg·m²], > 0.
-    field : float
-        B0 [T], > 0.
-    kp, ki, kd : float
-        Gains [A·m²/rad], [A·m²/(rad·s)], [A·m²·s/rad].
+    {inertia, field, gains}
 
     Returns
     -------
