@@ -176,7 +176,8 @@ def gyro_offset_error(offset, filter_coefficient, sample_interval):
         raise ValueError(f"filter_coefficient must lie in (0, 1), got {a}")
     if np.any(~np.isfinite(dt) | (dt <= 0)):
         raise ValueError(f"sample_interval must be > 0 s, got {dt}")
-    return a * np.asarray(offset, float) * dt / (1.0 - a)
+    # b·τ: the filter's time constant written once (complementary_time_constant)
+    return np.asarray(offset, float) * complementary_time_constant(dt, a)
 
 
 def complementary_error_terms(sample_interval, alpha, gyro_offset, gyro_noise_std, accel_noise_std,
