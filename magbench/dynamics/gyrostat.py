@@ -279,8 +279,9 @@ def gyrostat_turning_field_rhs(time, state, principal_inertia, rotor_momentum, d
     bb = b1 * b1 + b2 * b2 + b3 * b3
     wb = (w1 * b1 + w2 * b2 + w3 * b3) / bb
     t1, t2, t3 = -k * (w1 - wb * b1), -k * (w2 - wb * b2), -k * (w3 - wb * b3)
-    k1, k2, k3 = a * w1 + h, b * w2, c * w3                 # body + rotor momentum
-    return np.stack([(t1 - (w2 * k3 - w3 * k2)) / a, (t2 - (w3 * k1 - w1 * k3)) / b, (t3 - (w1 * k2 - w2 * k1)) / c,
+    w_dot = kernels.gyrostat_rates(np.stack([w1, w2, w3], axis=-1), np.stack([t1, t2, t3], axis=-1),
+                                   np.array([a, b, c]), h)
+    return np.stack([w_dot[..., 0], w_dot[..., 1], w_dot[..., 2],
                      -(w2 * b3 - w3 * b2) + field_rate * (n2 * b3 - n3 * b2),
                      -(w3 * b1 - w1 * b3) + field_rate * (n3 * b1 - n1 * b3),
                      -(w1 * b2 - w2 * b1) + field_rate * (n1 * b2 - n2 * b1),

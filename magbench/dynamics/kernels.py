@@ -99,6 +99,10 @@ def rod_moment(induction, rod_axes, volume):
     return np.einsum("...k,kj->...j", induction * volume / MU_0, rod_axes)
 
 
+# The unused tensor slots of gyrostat_rates_scalar's inertia for principal moments.
+_EYE = np.eye(3)
+
+
 @njit(cache=True, error_model="numpy")
 def gyrostat_turning_field_rhs(time, state, principal_inertia, rotor_momentum, damping_gain, field_rate):
     """Compiled twin of :func:`magbench.dynamics.gyrostat_turning_field_rhs` for one state (9,)."""
@@ -109,9 +113,8 @@ def gyrostat_turning_field_rhs(time, state, principal_inertia, rotor_momentum, d
     bb = b1 * b1 + b2 * b2 + b3 * b3
     wb = (w1 * b1 + w2 * b2 + w3 * b3) / bb
     t1, t2, t3 = -k * (w1 - wb * b1), -k * (w2 - wb * b2), -k * (w3 - wb * b3)
-    k1, k2, k3 = a * w1 + h, b * w2, c * w3
     out = np.empty(9)
-    out[0], out[1], out[2] = (t1 - (w2 * k3 - w3 * k2)) / a, (t2 - (w3 * k1 - w1 * k3)) / b, (t3 - (w1 * k2 - w2 * k1)) / c
+    out[0], out[1], out[2] = gyrostat_rates_scalar((w1, w2, w3), (t1, t2, t3), (True, (a, b, c), _EYE, _EYE), h)
     out[3] = -(w2 * b3 - w3 * b2) + field_rate * (n2 * b3 - n3 * b2)
     out[4] = -(w3 * b1 - w1 * b3) + field_rate * (n3 * b1 - n1 * b3)
     out[5] = -(w1 * b2 - w2 * b1) + field_rate * (n1 * b2 - n2 * b1)

@@ -4,8 +4,9 @@ same RK4 steps, law and schedule, members on the contiguous axis.
 Why compiled: a step of the numpy loop is ~600 elementwise operations on arrays of M
 members, and at the hundreds of members of chapter 5 numpy's per-call overhead, not the
 arithmetic, sets the pace. Each operation here is the numpy loop's, in the same order and
-without fast-math, so the two give the same numbers to the last bit (the tests hold them
-to it); the numpy loop stays as the reference and runs the one mode not compiled (duty
+without fast-math, so the two give the same numbers to the last bit for principal moments
+(the tests hold them to it; for an inertia tensor the numpy loop solves J ω̇ = … where this
+loop multiplies by J⁻¹, equal to rounding); the numpy loop stays as the reference and runs the one mode not compiled (duty
 with the "propagate" estimator).
 
 Why this layout: the step is the library's compiled RK4 (:func:`magbench._rk4_kernel.rk4_advance`)

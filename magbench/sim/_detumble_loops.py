@@ -1,6 +1,7 @@
 r"""The two detumbling loops behind :func:`magbench.sim.simulate_detumble`: the numpy reference
 (all members in each RK4 step, vectors as (M,) component arrays) and the compiled loop
-(:mod:`magbench.sim._detumble_kernel`, member by member), equal to the last bit; with the
+(:mod:`magbench.sim._detumble_kernel`, member by member), equal to the last bit (to rounding
+for an inertia tensor, which the numpy loop solves and the compiled one inverts); with the
 field table, the body, the laws and the duty-cycle schedule they share.
 
 SamSat-218D §"Rate damping" (seed lines 225–273); the classical RK4 scheme of
@@ -153,11 +154,9 @@ class _Body:
     """Euler's equations, quaternion kinematics and gravity gradient on component arrays."""
 
     def __init__(self, j, mean_motion):
+        self.inertia = j
         self.tensor = j.shape == (3, 3)
-        if self.tensor:
-            self.j, self.j_inv = j, np.linalg.inv(j)
-        else:
-            self.j = tuple(np.asarray(j)[..., a] for a in range(3))
+        self.j = j if self.tensor else tuple(np.asarray(j)[..., a] for a in range(3))
         self.gg = None if mean_motion is None else 3.0 * mean_motion ** 2
 
     def _apply(self, m, v):
@@ -165,9 +164,6 @@ class _Body:
 
     def inertia_times(self, v):
         return self._apply(self.j, v) if self.tensor else (self.j[0] * v[0], self.j[1] * v[1], self.j[2] * v[2])
-
-    def inertia_solve(self, v):
-        return self._apply(self.j_inv, v) if self.tensor else (v[0] / self.j[0], v[1] / self.j[1], v[2] / self.j[2])
 
     @staticmethod
     def matrix(q):
@@ -202,14 +198,10 @@ class _Body:
             r = self.rotate(rt, radial)
             g = _cross3(r, self.inertia_times(r))
             torque = tuple(t + self.gg * gi for t, gi in zip(torque, g))
-        # Euler's equations on the component arrays, J⁻¹ multiplied for a tensor as the
-        # compiled loop does (dynamics.kernels.euler_rates solves: equal only to rounding)
-        jw = self.inertia_times(w)
-        wjw = _cross3(w, jw)
-        w_dot = self.inertia_solve(tuple(t - c for t, c in zip(torque, wjw)))
         out = np.empty_like(state)
         out[:4] = dynamics_kernels.quaternion_rate(state[:4].T, state[4:].T).T
-        out[4], out[5], out[6] = w_dot
+        out[4:] = dynamics_kernels.euler_rates(state[4:].T, np.stack(np.broadcast_arrays(*torque), axis=-1),
+                                               self.inertia).T
         return out
 
     def rk4(self, fields, i, state, h, command, dipole):
