@@ -1,19 +1,19 @@
-r"""The control family's array kernels: the B-dot laws (and their compiled twin), the rotor
-spacecraft's program field, the projected damping dipole and Kovalenko's relay spin law,
-unchecked.
+r"""The control family's array kernels: the B-dot laws (and their compiled twin), the
+projected damping dipole and Kovalenko's relay spin law, unchecked. The rotor laws' program
+field is the Earth family's kernel (:func:`magbench.earth.kernels.orbital_dipole_b`, tilt 0).
 
 The checked public functions of :mod:`magbench.control.spin` call these after checking
 their arguments; the simulations (:mod:`magbench.sim`) call them directly inside their
 right-hand sides, where the checks would run once per stage. Vectors on a trailing axis
 of 3, members on leading axes; SI or the slides' normalised units, as the caller's
-arguments are. Like every kernel module, this one imports only numpy (import contract in
+arguments are. Like every kernel module, this one imports only numpy and numba (import contract in
 ``pyproject.toml``).
 """
 
 import numpy as np
 from numba import njit
 
-__all__ = ["bdot_dipole", "bdot_dipole_projected", "bdot_dipole_scalar", "program_field", "projected_dipole",
+__all__ = ["bdot_dipole", "bdot_dipole_projected", "bdot_dipole_scalar", "projected_dipole",
            "relay_dipole"]
 
 
@@ -51,17 +51,6 @@ def bdot_dipole_scalar(field, field_rate, gain, limit, projected):
     u0, u1, u2 = -gain * d0, -gain * d1, -gain * d2
     v0, v1, v2 = (p0, p1, p2) if projected else (u0, u1, u2)
     return (min(max(v0, -lim0), lim0), min(max(v1, -lim1), lim1), min(max(v2, -lim2), lim2))
-
-
-def program_field(u, i, b0):
-    r"""The direct dipole along a circular orbit in orbital axes, B0 (sin i cos u, cos i,
-    −2 sin i sin u) [T], for u [rad], i [rad] and b0 [T] (..., broadcasting); no checks. The
-    checked form, which documents it (rotor slides, seed lines 21 and 63; Kovalenko (1975)
-    eq. (2.40)), is :func:`magbench.control.rotor_program_field`.
-    """
-    su, cu, si, ci = np.sin(u), np.cos(u), np.sin(i), np.cos(i)
-    # ci + 0·u: the normal component takes the shape of u like the other two
-    return b0[..., None] * np.stack(np.broadcast_arrays(si * cu, ci + 0.0 * u, -2.0 * si * su), axis=-1)
 
 
 def projected_dipole(field, error, gain):

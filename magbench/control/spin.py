@@ -6,8 +6,9 @@ stability" and "Control implementation" (seed lines 41–88), with Kovalenko (19
 eqs. (4.30)–(4.32) and (7.3)–(7.5) for the projection law. Frames as in
 :mod:`magbench.dynamics.gyrostat` (``shared/reference/rotor_spin.md`` §2): the
 program field is the direct dipole in orbital axes (velocity, orbit normal, radial out),
-B_o(u) = B0 (sin i cos u, cos i, −2 sin i sin u), which equals
-:func:`magbench.earth.orbital_dipole_b` with tilt 0. The law works for the slides'
+B_o(u) = B0 (sin i cos u, cos i, −2 sin i sin u): the Earth family's tilted dipole
+(:func:`magbench.earth.orbital_dipole_b`, kernel :func:`magbench.earth.kernels.orbital_dipole_b`)
+with tilt 0. The law works for the slides'
 normalised quantities as well as SI (see each function). Kovalenko's relay spin law (7.12)
 closes the module. Pure functions; their unchecked kernels are in :mod:`magbench.control.kernels`.
 """
@@ -15,7 +16,8 @@ closes the module. Pure functions; their unchecked kernels are in :mod:`magbench
 import numpy as np
 
 from .._validate import as_finite, as_in_range, as_positive, as_vectors, shown
-from .kernels import program_field, projected_dipole, relay_dipole
+from ..earth.kernels import orbital_dipole_b
+from .kernels import projected_dipole, relay_dipole
 
 __all__ = ["rotor_program_field", "rotor_equilibrium_dipole", "rotor_equilibrium_axial_momentum",
            "rotor_reference_torque", "rotor_spin_reference", "projected_damping_dipole",
@@ -49,7 +51,7 @@ def rotor_program_field(argument_of_latitude, inclination, equatorial_b):
     u = as_finite("argument_of_latitude", argument_of_latitude)
     i = as_in_range("inclination", inclination, 0.0, np.pi, unit="rad")
     b0 = as_positive("equatorial_b", equatorial_b, unit="T")
-    return program_field(u, i, b0)
+    return orbital_dipole_b(u, i, 0.0, 0.0, b0)
 
 
 def rotor_equilibrium_dipole(argument_of_latitude, inclination, equatorial_b, gain, axial_momentum, orbital_rate):
@@ -96,7 +98,7 @@ def rotor_equilibrium_dipole(argument_of_latitude, inclination, equatorial_b, ga
     k = as_finite("gain", gain)
     h0 = as_finite("axial_momentum", axial_momentum)
     w0 = as_positive("orbital_rate", orbital_rate, unit="rad/s")
-    m = k[..., None] * program_field(u, i, b0)
+    m = k[..., None] * orbital_dipole_b(u, i, 0.0, 0.0, b0)
     m2 = h0 * w0 * np.cos(u) / (b0 * si)
     return m + np.stack(np.broadcast_arrays(0.0 * m2, m2, 0.0 * m2), axis=-1)
 

@@ -18,10 +18,11 @@ import numpy as np
 from .._docstrings import fill_docstring
 from .._validate import as_finite, as_in_range, as_positive_scalar
 from ..control.floquet import finite_difference_monodromy
-from ..control.kernels import program_field, projected_dipole
+from ..control.kernels import projected_dipole
 from ..control.rotor_stability import ROTOR_MODEL_PARAMETERS, rotor_model_numbers
 from ..dynamics.kernels import rotor_reduced_rates
 from ..earth.dipole import dipole_equatorial_b
+from ..earth.kernels import orbital_dipole_b as orbital_dipole_b_kernel
 from ..earth.orbit import orbital_dipole_b
 from ..integrate import rk4_step
 from .result import SimulationResult
@@ -33,7 +34,8 @@ _document_model = fill_docstring(ROTOR_MODEL_PARAMETERS)
 
 def _closed_loop(tau, x, a, c1, kappa, kappa_w, i, real=None):
     alpha, beta, h, w2, w3 = x
-    bo = program_field(np.asarray(tau, dtype=float), np.asarray(i), np.asarray(1.0))
+    # the law's program field (units of B0): the direct dipole, tilt 0
+    bo = orbital_dipole_b_kernel(np.asarray(tau, dtype=float), i, 0.0, 0.0, 1.0)
     # the real field (units of B0): the program field, or a tilted dipole (tilt, node phase)
     br = bo if real is None else (orbital_dipole_b(tau, i, 1.0, 1.0, tilt=real[0], node_phase=real[1])
                                   / dipole_equatorial_b(1.0, 1.0))
