@@ -58,10 +58,20 @@ def _inertia_times(v0, v1, v2, diag, j0, j1, j2, jt):
 
 
 @njit(cache=True, error_model="numpy")
-def _rhs(q0, q1, q2, q3, w0, w1, w2, bn0, bn1, bn2, br0, br1, br2, ra0, ra1, ra2, law, h0, h1, h2, k,
-         lim0, lim1, lim2, projected, gg, diag, j0, j1, j2, jt, jinv):
+def _rhs(q, w, field, command, law_args, body):
     """(q̇, ω̇) of one member: the numpy loop's ``_Body.rhs``, operation for operation; the
-    body's equations are the family's compiled twins (:mod:`magbench.dynamics.kernels`)."""
+    body's equations are the family's compiled twins (:mod:`magbench.dynamics.kernels`).
+
+    q (4-tuple) and w (3-tuple) are the member's state; field = (B, Ḃ, r̂) inertial at the
+    stage, command = (law, held dipole), law_args = (k, limits, projected) and body = (gg,
+    diag, principal moments, tensor, inverse tensor), each vector a 3-tuple.
+    """
+    q0, q1, q2, q3 = q
+    w0, w1, w2 = w
+    (bn0, bn1, bn2), (br0, br1, br2), (ra0, ra1, ra2) = field
+    law, (h0, h1, h2) = command
+    k, (lim0, lim1, lim2), projected = law_args
+    gg, diag, (j0, j1, j2), jt, jinv = body
     r00, r01, r02, r10, r11, r12, r20, r21, r22 = _rows(q0, q1, q2, q3)
     b0 = r00 * bn0 + r01 * bn1 + r02 * bn2
     b1 = r10 * bn0 + r11 * bn1 + r12 * bn2
@@ -146,10 +156,11 @@ def member_rates(time, x, out, clock, table, command, law_args, body):
     lim0, lim1, lim2 = lim[0], lim[1], lim[2]
     for m in range(x.shape[1]):
         out[0, m], out[1, m], out[2, m], out[3, m], out[4, m], out[5, m], out[6, m] = _rhs(
-            x[0, m], x[1, m], x[2, m], x[3, m], x[4, m], x[5, m], x[6, m], b[0, n, m], b[1, n, m], b[2, n, m],
-            b_rate[0, n, m], b_rate[1, n, m], b_rate[2, n, m], radial[0, n, m], radial[1, n, m], radial[2, n, m],
-            how[m] == LAW, held[0, m], held[1, m], held[2, m], gain[m], lim0, lim1, lim2, projected, gg, diag,
-            jd[0, m], jd[1, m], jd[2, m], jt, jinv)
+            (x[0, m], x[1, m], x[2, m], x[3, m]), (x[4, m], x[5, m], x[6, m]),
+            ((b[0, n, m], b[1, n, m], b[2, n, m]), (b_rate[0, n, m], b_rate[1, n, m], b_rate[2, n, m]),
+             (radial[0, n, m], radial[1, n, m], radial[2, n, m])),
+            (how[m] == LAW, (held[0, m], held[1, m], held[2, m])), (gain[m], (lim0, lim1, lim2), projected),
+            (gg, diag, (jd[0, m], jd[1, m], jd[2, m]), jt, jinv))
 
 
 @njit(cache=True, error_model="numpy")
