@@ -22,10 +22,16 @@ __all__ = ["normalised_flow"]
 
 
 @njit(cache=True, error_model="numpy")
-def _rhs(tau, x0, x1, x2, x3, x4, a, c1, kappa, kappa_w, si, ci, real, real_field):
-    """d/dτ of (α, β, h, Ω2, Ω3): rotor_normalised._closed_loop for one member, operation for operation."""
+def _rhs(tau, x, plant, gains, field):
+    """d/dτ of x = (α, β, h, Ω2, Ω3): rotor_normalised._closed_loop for one member, operation
+    for operation; plant = (a, c1), gains = (κ, κ_w), field = (sin i, cos i, real, real_field)."""
+    x0, x1, x2, x3, x4 = x
+    a, c1 = plant
+    kappa, kappa_w = gains
+    si, ci, real, real_field = field
     su, cu = math.sin(tau), math.cos(tau)
-    bo0, bo1, bo2 = 1.0 * (si * cu), 1.0 * (ci + 0.0 * tau), 1.0 * (-2.0 * si * su)
+    # the law's program field: the Earth kernel's dipole at tilt 0 (units of B0)
+    bo0, bo1, bo2 = orbital_dipole_b_scalar(cu, su, 1.0, 0.0, (si, ci, 0.0, 1.0), 1.0)
     if real:
         # orbital_dipole_b(τ, i, 1, 1, tilt, Λ) / dipole_equatorial_b(1, 1); real_field =
         # (sin i, cos i, sin δ, cos δ, cos Λ, sin Λ, b0), numpy's sines and cosines
@@ -57,7 +63,8 @@ def closed_loop_rates(tau, x, out, a, c1, kappa, kappa_w, si, ci, real, real_fie
     """d/dτ of the states x (5, M) of every member, each by :func:`_rhs`, into out (5, M)."""
     for m in range(x.shape[1]):
         out[0, m], out[1, m], out[2, m], out[3, m], out[4, m] = _rhs(
-            tau, x[0, m], x[1, m], x[2, m], x[3, m], x[4, m], a, c1, kappa[m], kappa_w[m], si, ci, real, real_field)
+            tau, (x[0, m], x[1, m], x[2, m], x[3, m], x[4, m]), (a, c1), (kappa[m], kappa_w[m]),
+            (si, ci, real, real_field))
 
 
 @njit(cache=True, error_model="numpy")
