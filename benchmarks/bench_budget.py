@@ -25,7 +25,7 @@ import time  # noqa: E402
 import numpy as np  # noqa: E402
 
 import magbench  # noqa: E402
-from magbench.chapters.ch04_mockup import budget  # noqa: E402
+from magbench.chapters.ch04_mockup import bench_setup, budget  # noqa: E402
 from magbench.params import chapter_parameters  # noqa: E402
 from magbench.sim import bench  # noqa: E402
 
@@ -33,7 +33,7 @@ from magbench.sim import bench  # noqa: E402
 def main(base_samples=32, loop_members=8):
     load_before = os.getloadavg()[0]
     p = chapter_parameters("ch04", overrides="")
-    setup = bench.BenchSetup.from_parameters(p)
+    setup = bench_setup(p)
     kw = dict(duration=p["bench_duration"], window=p["bench_error_window"], field_h=p["bench_field_h"])
     sources = budget.load_error_sources()
     _, values = bench.sobol_design(sources, base_samples=base_samples, seed=1)

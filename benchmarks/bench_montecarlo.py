@@ -31,13 +31,14 @@ from dataclasses import replace  # noqa: E402
 import numpy as np  # noqa: E402
 
 import magbench  # noqa: E402
+from magbench.chapters.ch04_mockup import bench_dispersion, bench_setup  # noqa: E402
 from magbench.sim import bench  # noqa: E402
 from magbench.params import chapter_parameters  # noqa: E402
 
 
 def _mc(setup, p, members, seed):
     return bench.monte_carlo(setup, np.pi / 3, members=members, seed=seed, duration=p["bench_duration"],
-                             dispersion=bench.BenchDispersion.from_parameters(p),
+                             dispersion=bench_dispersion(p),
                              record_interval=0.1, window=p["bench_error_window"])
 
 
@@ -55,7 +56,7 @@ def _agreement(setup, p, duration):
 def main(members=1000, peer_members=2, repeats=3):
     load_before = os.getloadavg()[0]
     p = chapter_parameters("ch04", overrides="")
-    setup = bench.BenchSetup.from_parameters(p)
+    setup = bench_setup(p)
     _mc(setup, p, 10, 0)        # warm-up (imports, caches)
     times = []
     for k in range(repeats):

@@ -52,7 +52,7 @@ def _agreement(a, b):
 def main(repeats=3):
     load_before = os.getloadavg()[0]
     p = chapter_parameters("ch07", overrides="")
-    sat, orbit = CH.satellite_from(p), CH.orbit_from(p)
+    sat, orbit = CH.tns0_satellite(p), CH.tns0_orbit(p)
     t1 = load_table1()
     l1, theta1 = float(t1.angular_momentum[0]), float(t1.nutation[0])
     direction = np.random.default_rng(int(p["capture_seed"])).normal(size=3)

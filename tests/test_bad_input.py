@@ -58,10 +58,10 @@ def test_quantise_duty_keeps_its_documented_results():
 
 
 def _bench():
+    from magbench.chapters.ch04_mockup import bench_setup
     from magbench.io import load_parameter_set
-    from magbench.sim.bench import BenchSetup
 
-    return BenchSetup.from_parameters({k: p.value_si for k, p in load_parameter_set("thesis").items()})
+    return bench_setup({k: p.value_si for k, p in load_parameter_set("thesis").items()})
 
 
 MC = dict(seed=1, duration=1.0, window=0.5)

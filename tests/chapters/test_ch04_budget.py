@@ -7,7 +7,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 from magbench import fields
-from magbench.chapters.ch04_mockup import budget
+from magbench.chapters.ch04_mockup import bench_setup, budget
 from magbench.hardware import sensors
 from magbench.params import chapter_parameters
 from magbench.sim import bench
@@ -22,7 +22,7 @@ def p():
 
 @pytest.fixture(scope="module")
 def setup(p):
-    return bench.BenchSetup.from_parameters(p)
+    return bench_setup(p)
 
 
 @pytest.fixture(scope="module")

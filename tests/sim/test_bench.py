@@ -6,12 +6,13 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
+from magbench.chapters.ch04_mockup import bench_setup
 from magbench.sim import bench
 from magbench import hardware
 from magbench.params import chapter_parameters
 
 P = chapter_parameters("ch04", overrides="")
-SETUP = bench.BenchSetup.from_parameters(P)
+SETUP = bench_setup(P)
 
 
 def test_vectorised_loop_matches_solve_ivp_member_by_member():

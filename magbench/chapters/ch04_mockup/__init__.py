@@ -14,9 +14,10 @@ from ...errata import source_check
 from ...io import load_parameter_set
 from .._base import Chapter, chapter_parameters
 from ...units import DEG
+from .models import bench_dispersion, bench_setup
 
-__all__ = ["CHAPTER", "INPUTS", "KD_SWEEP", "KP_SWEEP", "PRINTED_SETS", "bench_rows", "budget_rows",
-           "dynamics_checks", "gyro_offset_error"]
+__all__ = ["CHAPTER", "INPUTS", "KD_SWEEP", "KP_SWEEP", "PRINTED_SETS", "bench_dispersion", "bench_setup",
+           "bench_rows", "budget_rows", "dynamics_checks", "gyro_offset_error"]
 
 
 #: The chapter's inputs: names in the parameter set of its source.
@@ -62,7 +63,7 @@ def bench_rows(params=None):
     from ...io import measurement
 
     p = params or chapter_parameters("ch04")
-    setup = bench.BenchSetup.from_parameters(p)
+    setup = bench_setup(p)
     measured = measurement("orientation-error")
     rows = []
     for tag, label, figure, target in BENCH_TARGETS:
@@ -103,7 +104,7 @@ def budget_rows(params=None):
     from . import budget
 
     p = params or chapter_parameters("ch04")
-    setup = bench.BenchSetup.from_parameters(p)
+    setup = bench_setup(p)
     measured = measurement("orientation-error")
     sources = budget.load_error_sources()
     gyro_source = {"gyro_offset": sources["gyro_offset"]}

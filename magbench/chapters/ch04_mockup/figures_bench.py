@@ -14,6 +14,7 @@ from ...sim import bench
 from ...io import benchlog
 from ...io import load_parameter_set, measurement
 from . import CHAPTER
+from .models import bench_dispersion, bench_setup
 from .._base import chapter_parameters
 from ...rotations import wrap_angle
 from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
@@ -52,7 +53,7 @@ def _input_parameters():
 
 
 def _setup(p):
-    return bench.BenchSetup.from_parameters(p)
+    return bench_setup(p)
 
 
 #: The targets of the thesis's bench runs (Figs. 19 and 20) [rad]: the book draws one
@@ -97,7 +98,7 @@ def compute_trace(psi_des, release_angle, release_rate, envelope_members, **p):
     # rate (not about the target, as in ch04-montecarlo), so that the nominal run, whose
     # moments and thread are the centres of the members' spreads, is one of them.
     mc = bench.monte_carlo(setup, psi_des, members=n_env, seed=seed + 1, duration=p["bench_duration"],
-                           dispersion=bench.BenchDispersion.from_parameters(p),
+                           dispersion=bench_dispersion(p),
                            record_interval=0.1, window=p["bench_error_window"],
                            release_angle=release_angle, release_rate=release_rate)
     # Each member is shifted by the whole turns that bring its final angle nearest the
@@ -175,7 +176,7 @@ def compute_montecarlo(**p):
     for k, target in enumerate((np.pi / 3.0, 2.0 * np.pi / 3.0)):
         run = bench.monte_carlo(setup, target, members=int(round(p["bench_members"])),
                                 seed=int(p["bench_seed"]) + 10 * (k + 1), duration=p["bench_duration"],
-                                dispersion=bench.BenchDispersion.from_parameters(p),
+                                dispersion=bench_dispersion(p),
                                 record_interval=p["bench_duration"], window=p["bench_error_window"])
         series.append(Series(f"ψ_des = {np.degrees(target):.0f}°", {
             "error_band": ("deg", np.degrees(run.error_band)),

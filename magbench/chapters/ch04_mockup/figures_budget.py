@@ -13,6 +13,7 @@ import numpy as np
 from ...io import measurement
 from ...sim import bench
 from . import budget
+from .models import bench_setup
 from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 from .figures_bench import _input_parameters
 
@@ -44,7 +45,7 @@ def _budget_parameters(extra):
 
 
 def _common(p):
-    setup = bench.BenchSetup.from_parameters(p)
+    setup = bench_setup(p)
     return setup, dict(duration=p["bench_duration"], window=p["bench_error_window"],
                        field_h=p["bench_field_h"])
 

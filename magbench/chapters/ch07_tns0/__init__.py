@@ -16,8 +16,8 @@ from ...result_cache import cached_result
 from .._base import Chapter, chapter_parameters
 from ...units import DEG
 
-__all__ = ["CHAPTER", "INPUTS", "capture_run", "decay_fits", "decay_balance", "full_run", "orbit_from",
-           "satellite_from", "capture_rows", "full_run_rows", "session_fits", "cone_checks", "table_checks",
+__all__ = ["CHAPTER", "INPUTS", "capture_run", "decay_fits", "decay_balance", "full_run", "tns0_orbit",
+           "tns0_satellite", "capture_rows", "full_run_rows", "session_fits", "cone_checks", "table_checks",
            "kovalenko_checks", "table2_hours"]
 
 
@@ -37,7 +37,7 @@ INPUTS = (
     "full_run_duration",
 )
 
-#: The parameters the orbit and the satellite read (:func:`orbit_from`, :func:`satellite_from`):
+#: The parameters the orbit and the satellite read (:func:`tns0_orbit`, :func:`tns0_satellite`):
 #: the simulations declare theirs from these, so that one reruns only when its own inputs change.
 ORBIT_INPUTS = ("orbit_altitude", "orbit_inclination", "earth_dipole_moment")
 SATELLITE_INPUTS = ("transverse_inertia", "axial_inertia", "magnet_moment", "rod_volume", "rod_coercivity",
@@ -55,7 +55,7 @@ def _params(params):
     return params or chapter_parameters("ch07")
 
 
-def orbit_from(params=None):
+def tns0_orbit(params=None):
     """The circular orbit and direct dipole of a chapter-7 parameter set (SI).
 
     Parameters
@@ -69,7 +69,7 @@ def orbit_from(params=None):
     return CircularOrbit(EARTH_RADIUS + p["orbit_altitude"], p["orbit_inclination"], p["earth_dipole_moment"])
 
 
-def satellite_from(params=None):
+def tns0_satellite(params=None):
     """The passive satellite (magnet + two rods along body x and y) of a parameter set.
 
     Parameters
@@ -115,7 +115,7 @@ def _capture(key):
     if members < 1:
         raise ValueError(f"capture_members must be >= 1, got {members}")
     directions = rng.normal(size=(members, 3))
-    return simulate_passive(satellite_from(p), orbit_from(p), np.full(members, p["capture_initial_momentum"]),
+    return simulate_passive(tns0_satellite(p), tns0_orbit(p), np.full(members, p["capture_initial_momentum"]),
                             p["capture_initial_nutation"], directions, p["capture_duration"],
                             sample_interval=SAMPLE_INTERVAL)
 
@@ -144,7 +144,7 @@ def capture_run(params=None):
 
     p = _params(params)
     run = _capture(p)
-    final = passive_final_regime(run, satellite_from(p), orbit_from(p), orbits=3)
+    final = passive_final_regime(run, tns0_satellite(p), tns0_orbit(p), orbits=3)
     return {"run": run, "final_angle": final["final_angle"], "final_rate": final["final_rate"],
             "final_drift": final["drift"], "final_momentum": final["final_momentum"],
             "mean_field": final["mean_field"], "conical_angle": final["conical_angle"]}
@@ -176,7 +176,7 @@ def decay_balance(params=None):
     rng = np.random.default_rng(int(p["capture_seed"]))
     directions = rng.normal(size=(BALANCE_MEMBERS, 3))
     angles = rng.uniform(0.0, 2.0 * np.pi, BALANCE_MEMBERS)
-    rates = flat_spin_decay_rate(satellite_from(p), orbit_from(p), directions, angles)
+    rates = flat_spin_decay_rate(tns0_satellite(p), tns0_orbit(p), directions, angles)
     hours, momentum, linear, _ = decay_fits()
     slope = linear.parameters["slope"] / 3600.0
     mean = float(np.mean(rates))
@@ -193,7 +193,7 @@ def _full(key):
     p = dict(key)
     direction = np.random.default_rng(int(p["capture_seed"])).normal(size=3)
     t1 = load_table1()
-    run = simulate_passive(satellite_from(p), orbit_from(p), float(t1.angular_momentum[0]), float(t1.nutation[0]),
+    run = simulate_passive(tns0_satellite(p), tns0_orbit(p), float(t1.angular_momentum[0]), float(t1.nutation[0]),
                            direction, p["full_run_duration"], sample_interval=FULL_RUN_SAMPLE_INTERVAL)
     return run, direction
 
@@ -228,7 +228,7 @@ def full_run(params=None):
 
     p = _params(params)
     run, direction = _full(p)
-    final = passive_final_regime(run, satellite_from(p), orbit_from(p), orbits=FINAL_ORBITS)
+    final = passive_final_regime(run, tns0_satellite(p), tns0_orbit(p), orbits=FINAL_ORBITS)
     hours = run.time / 3600.0
     final_l = float(final["final_momentum"])
     relaxed, captured = passive_transition_times(run, final_l)

@@ -8,7 +8,7 @@ decay fits, a session model (model only) and the capture Monte Carlo.
 import numpy as np
 
 from ...constants import MU_0
-from . import CHAPTER, SENSOR_NORMALS, capture_run, decay_balance, decay_fits, full_run, orbit_from, session_fits
+from . import CHAPTER, SENSOR_NORMALS, capture_run, decay_balance, decay_fits, full_run, tns0_orbit, session_fits
 from .._base import chapter_parameters
 from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
 from ..._validate import shown
@@ -220,7 +220,7 @@ def compute_rod_loops(rod_coercivity, rod_remanence, rod_saturation, transit_fie
              earth_dipole_moment=earth_dipole_moment)
     return FigureData("", "", "", {}, series,
                       extra={"saturation_limit": 4.0 * rod_saturation * rod_coercivity,
-                             "orbit_h": tuple(b / MU_0 for b in field_magnitude_range(orbit_from(p)))})
+                             "orbit_h": tuple(b / MU_0 for b in field_magnitude_range(tns0_orbit(p)))})
 
 
 def plot_rod_loops(data):
@@ -508,7 +508,7 @@ def compute_full_run(**params):
                                   "L_high": ("kg m^2/s", high)}),
         Series("Table 2", {"angle": ("deg", [np.degrees(printed["tns0-table2-nutation"].value)]),
                            "L": ("kg m^2/s", [printed["tns0-table2-angular-momentum"].value])}),
-    ], extra={"orbit_samples": max(2, int(np.ceil(orbit_from(p).period / 300.0))),
+    ], extra={"orbit_samples": max(2, int(np.ceil(tns0_orbit(p).period / 300.0))),
               "capture_hours": full["capture_hours"], "relaxed_hours": full["relaxed_hours"],
               "conclusion": float(np.degrees(printed["tns0-final-angle"].value))})
 

@@ -4,12 +4,12 @@ and controller) and how each Monte Carlo member's bench departs from it
 :data:`ERROR_INPUTS`). SI values throughout.
 """
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
 
-from ... import control, fields, hardware
+from ... import hardware
 from ..._validate import as_finite, as_in_range, as_nonnegative, as_positive, shown
 from ...dynamics.pendulum import Mockup
 
@@ -20,8 +20,9 @@ __all__ = ["BenchSetup", "BenchErrors", "ERROR_INPUTS"]
 class BenchSetup:
     """The bench: mock-up, field, coils, driver, sensors and controller (SI values).
 
-    The thesis's bench is :meth:`from_parameters` of the chapter-4 inputs; every field
-    is documented with its unit and source there and in ``magbench/data/thesis/params.toml``.
+    The thesis's bench is :func:`magbench.chapters.ch04_mockup.bench_setup` of the chapter-4
+    inputs; every field is documented with its unit and source there and in
+    ``magbench/data/thesis/params.toml``.
     """
 
     inertia: float                      # J [kg m^2]
@@ -70,28 +71,6 @@ class BenchSetup:
             as_nonnegative("gyro_noise_density", self.gyro_noise_density)
         if self.magnetometer_noise is not None:
             as_nonnegative("magnetometer_noise", self.magnetometer_noise, unit="T")
-
-    @classmethod
-    def from_parameters(cls, params, **changes):
-        """The bench of a dict of the bench's inputs (SI; the mock-up chapter's inputs).
-
-        Field: ``bench_field_h`` (the 262 A/m measured at the simulator's centre) combined
-        with ``bench_background_h`` at ``bench_background_azimuth``; gains: the triple
-        pole at ``bench_bandwidth``. ``changes`` replace single fields afterwards.
-        """
-        p = params
-        b0 = fields.horizontal_field(p["bench_field_h"], p["bench_background_h"],
-                                     p["bench_background_azimuth"])
-        kp, ki, kd = control.pid_gains_for_triple_pole(p["mockup_inertia"], b0, p["bench_bandwidth"])
-        setup = cls(
-            inertia=p["mockup_inertia"], field=float(b0),
-            coil_resistance=(p["bench_coil_resistance"], p["bench_coil_resistance"]),
-            coil_turns=p["mtq_turns"], coil_side=p["mtq_side"], supply_voltage=p["mtq_voltage"],
-            kp=float(kp), ki=float(ki), kd=float(kd),
-            filter_coefficient=p["bench_filter_coefficient"],
-            sample_interval=p["bench_sample_interval"], pwm_levels=int(p["bench_pwm_levels"]),
-            thread_stiffness=p["bench_thread_stiffness"], gyro_bias=p["bench_gyro_bias"])
-        return replace(setup, **changes) if changes else setup
 
     @property
     def plant(self):

@@ -35,7 +35,7 @@ class BenchDispersion:
     Notes
     -----
     Not in the thesis: the thesis reports single runs with unstated initial conditions.
-    Chapter 4's values are :meth:`from_parameters` of its inputs.
+    Chapter 4's values are :func:`magbench.chapters.ch04_mockup.bench_dispersion` of its inputs.
     """
 
     moment_tolerance: float
@@ -48,16 +48,6 @@ class BenchDispersion:
         as_in_range("release_angle_spread", self.release_angle_spread, 0.0, np.pi, unit="rad")
         as_nonnegative("release_rate_std", self.release_rate_std, unit="rad/s")
         as_in_range("thread_stiffness_factor", self.thread_stiffness_factor, 1.0, 1e6)
-
-    @classmethod
-    def from_parameters(cls, params):
-        """The spreads of a dict of the bench's inputs (SI; the mock-up chapter's
-        ``bench_moment_tolerance``, ``bench_release_angle_spread``,
-        ``bench_release_rate_std`` and ``bench_thread_stiffness_factor``)."""
-        return cls(moment_tolerance=params["bench_moment_tolerance"],
-                   release_angle_spread=params["bench_release_angle_spread"],
-                   release_rate_std=params["bench_release_rate_std"],
-                   thread_stiffness_factor=params["bench_thread_stiffness_factor"])
 
 
 def monte_carlo(setup, psi_des, *, members, seed, duration, dispersion, record_interval=None, window=20.0,
@@ -102,8 +92,9 @@ def monte_carlo(setup, psi_des, *, members, seed, duration, dispersion, record_i
 
     Examples
     --------
-    >>> from magbench.io import load_parameter_set
-    >>> s = BenchSetup.from_parameters({k: p.value_si for k, p in load_parameter_set("thesis").items()})
+    >>> from magbench.chapters.ch04_mockup import bench_setup
+    >>> from magbench.params import chapter_parameters
+    >>> s = bench_setup(chapter_parameters("ch04"))
     >>> d = BenchDispersion(moment_tolerance=0.05, release_angle_spread=0.5, release_rate_std=0.01,
     ...                     thread_stiffness_factor=3.0)
     >>> a = monte_carlo(s, 1.0, members=3, seed=1, duration=1.0, dispersion=d, window=0.5)

@@ -299,8 +299,9 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
 
     Examples
     --------
-    >>> from magbench.io import load_parameter_set
-    >>> s = BenchSetup.from_parameters({k: p.value_si for k, p in load_parameter_set("thesis").items()})
+    >>> from magbench.chapters.ch04_mockup import bench_setup
+    >>> from magbench.params import chapter_parameters
+    >>> s = bench_setup(chapter_parameters("ch04"))
     >>> run = simulate_bench(s, np.pi / 3, duration=120.0)
     >>> bool(run.error_band[0] < np.radians(1.0))
     True

@@ -57,8 +57,9 @@ def simulate_bench_reference(setup, psi_des, *, duration, release_angle=0.0, rel
 
     Examples
     --------
-    >>> from magbench.io import load_parameter_set
-    >>> s = BenchSetup.from_parameters({k: p.value_si for k, p in load_parameter_set("thesis").items()})
+    >>> from magbench.chapters.ch04_mockup import bench_setup
+    >>> from magbench.params import chapter_parameters
+    >>> s = bench_setup(chapter_parameters("ch04"))
     >>> simulate_bench_reference(s, 1.0, duration=0.05).psi.shape
     (6,)
     """
