@@ -216,3 +216,13 @@ def test_a_figure_input_from_the_parameter_set_has_the_parameter_sets_unit():
                         wrong.append(f"{fid}: {name} in {p.unit!r}, the parameter set's SI unit is "
                                      f"{table[name].unit_si!r}")
     assert seen > 100 and not wrong, (seen, wrong)
+
+
+def test_caption_provenance_shows_a_changed_input_with_its_unit_and_a_pure_number_bare():
+    # "1" is the parameter tables' mark of a pure number: "orbits = 3", not "orbits = 3 1"
+    assert figures.caption_provenance("ch01-orbit-field", {"orbits": 3.0}).endswith("; orbits = 3.")
+    spec = figures.get_spec("ch01-orbit-field")
+    name, p = next((n, p) for n, p in spec.parameters.items() if p.unit not in ("", "1", "-"))
+    assert f"{name} = {2.0 * p.default:.6g} {p.unit}" in figures.caption_provenance(
+        "ch01-orbit-field", {name: 2.0 * p.default})
+    assert "all parameters at their defaults" in figures.caption_provenance("ch01-orbit-field", {"orbits": 2.0})

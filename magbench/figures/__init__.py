@@ -98,7 +98,9 @@ def caption_provenance(figure_id, parameters=None):
     for name, value in (parameters or {}).items():
         p = spec.parameters[name]
         if value != p.default:
-            changed.append(f"{name} = {value:.6g} {p.unit}")
+            # "1" marks a pure number in the parameter tables; a caption shows it bare
+            unit = "" if p.unit in ("", "1", "-") else f" {p.unit}"
+            changed.append(f"{name} = {value:.6g}{unit}")
     diff = "; ".join(changed) if changed else "all parameters at their defaults"
     return f"[{figure_id}] made by {spec.function_name}; {diff}."
 
