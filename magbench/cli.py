@@ -246,17 +246,20 @@ def design_explanation(result, max_power, max_mass, moment, voltage):
 
 def _cmd_design_coil(args):
     from .io import load_parameter_set
-    from .hardware import design_magnetorquer
+    from .hardware import Turn, WireSizes, design_magnetorquer
 
     thesis = load_parameter_set("thesis")       # the thesis's copper, unless given
     rho = thesis["copper_resistivity"].value_si if args.resistivity is None else args.resistivity
     gamma = thesis["copper_density"].value_si if args.density is None else args.density
     try:
         bare, overall, label = _coil_wires(args.wire_table, args.enamel)
+        # the turn and the wire are checked as they are built: inside the try, so their
+        # errors reach the user with the flag too
+        turn = Turn(args.shape, args.side)
+        wire = WireSizes(bare, rho, gamma, args.enamel, overall)
         res = design_magnetorquer(
-            args.moment, args.voltage, args.side, args.shape, args.max_power, args.max_mass,
-            bare, rho, gamma, args.enamel, winding_length=args.winding_length,
-            max_layers=args.max_layers, require_fit=True, overall_diameters=overall)
+            args.moment, args.voltage, turn, args.max_power, args.max_mass, wire,
+            winding_length=args.winding_length, max_layers=args.max_layers, require_fit=True)
     except ValueError as exc:
         message = str(exc)
         flag = _COIL_FLAGS.get(message.split(" ", 1)[0])

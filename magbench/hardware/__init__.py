@@ -11,7 +11,7 @@ from .sensors import (HMC5883L_GAINS, HMC5883L_MAX_COUNT, HMC5883L_MAX_OUTPUT_RA
                       MPU6050_GYRO_TOTAL_RMS_NOISE, MPU6050_GYRO_ZRO_TOLERANCE, accelerometer_readings,
                       gyro_readings, heading_readings, magnetometer_full_scale, magnetometer_readings,
                       noise_std_from_density, roll_readings)
-from .turn import SHAPES, Turn, awg_diameter, turn_area, turn_length, wire_area, wire_diameter
+from .turn import SHAPES, Turn, WireSizes, awg_diameter, turn_area, turn_length, wire_area, wire_diameter
 from .magnetorquer import (coil_current, coil_mass, coil_mass_for_moment, coil_resistance,
                            current_for_moment, dipole_moment, joule_power, joule_power_for_moment,
                            joule_power_for_winding_length, mass_power_product,
@@ -33,7 +33,7 @@ from .winding import (ampere_turns_power, coaxial_system_scale_for_power, helmho
                       winding_power, winding_resistance, winding_voltage)
 
 __all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
-           "rod_cycle_energy", "settled_hysteresis_loop", "limiting_loop_energy", "hysteresis_damping_torque", "SHAPES", "Turn", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
+           "rod_cycle_energy", "settled_hysteresis_loop", "limiting_loop_energy", "hysteresis_damping_torque", "SHAPES", "Turn", "WireSizes", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
            "dipole_moment", "current_for_moment", "coil_current", "turn_resistance", "coil_resistance",
            "moment_from_voltage", "wire_area_for_moment", "joule_power", "joule_power_for_moment",
            "turns_from_winding_length", "winding_length", "joule_power_for_winding_length", "coil_mass",

@@ -9,9 +9,9 @@ import math
 import numpy as np
 
 from .._docstrings import fill_docstring
-from .._validate import as_nonnegative, as_positive, shown
+from .._validate import as_positive, shown
 from .coil_sizing import _RTOL
-from .turn import _check_shape, turn_area, turn_length
+from .turn import Turn, WireSizes, turn_area, turn_length
 
 __all__ = ["coil_designs", "binding_limit", "design_magnetorquer"]
 
@@ -27,37 +27,24 @@ _PARAMETERS_DOC = """    Parameters
         Required dipole moment m [A·m²].
     voltage : float
         Supply voltage U [V].
-    side : float
-        Turn diameter (round) or side (square) l [m].
-    shape : {"round", "square"}
-        Turn shape [-].
+    turn : Turn
+        The turn's geometry (:class:`~magbench.hardware.turn.Turn`): its shape and its
+        diameter (round) or side (square) l [m], e.g. ``Turn.square(0.1)``.
     max_power : float
         Joule power limit per coil W_max [W].
     max_mass : float
         Conductor mass limit per coil M_max [kg].
-    wire_diameters : array_like, shape (k,)
-        Bare conductor diameters available [m] (a wire table).
-    resistivity : float
-        Conductor resistivity ρ [Ω·m].
-    density : float
-        Conductor density ρ̃ [kg/m³].
-    enamel_thickness : float, optional
-        Radial thickness of the enamel t [m]; the wire pitch is d + 2t. Used only for the
-        winding-fit check. The default 10 µm is an order of magnitude, not a standard
-        value: 0.100 mm grade-1 enamelled wire measures 0.108–0.117 mm overall (4–8.5 µm
-        radial; Elektrisola data quoted at enameled-wires.com, Technical-Documentation/341),
-        thicker wires carry somewhat more. Take the value from the wire's datasheet.
+    wire : WireSizes
+        The wire sizes to try (:class:`~magbench.hardware.turn.WireSizes`): bare diameters
+        d [m], resistivity ρ [Ω·m], density ρ̃ [kg/m³], and the enamel t [m] or overall
+        diameters [m] that set the winding pitch (d + 2t or the overall diameter).
     winding_length : float, optional
-        Axial length available for one layer [m]; default ``side``, the thesis's
+        Axial length available for one layer [m]; default ``turn.side``, the thesis's
         assumption of a single-layer winding as long as the face (thesis §3.2).
     max_layers : int, optional
         Number of layers the former can hold [-].
     require_fit : bool, optional
         If true, designs whose winding does not fit are not feasible [-].
-    overall_diameters : array_like, shape (k,), optional
-        Overall (enamelled) diameter of each wire of ``wire_diameters`` [m], e.g. the
-        maximum overall diameter of a wire standard's table; when given it is the winding
-        pitch and ``enamel_thickness`` is not used. Each must exceed its bare diameter.
 
 """
 
@@ -69,44 +56,31 @@ _COLUMNS = ("turns", "wire_diameter", "wire_area", "resistance", "current", "pow
             "pitch", "layer_length", "layers", "fits", "fill_factor")
 
 
-def _design_inputs(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
-                   enamel_thickness, winding_length, max_layers, overall_diameters):
-    """Checked inputs of the design solver, with the wires sorted by bare diameter."""
+def _design_inputs(moment, voltage, turn, max_power, max_mass, wire, winding_length, max_layers):
+    """Checked inputs of the design solver, with the wires sorted by bare diameter.
+
+    The turn and the wire sizes were checked when they were built (:class:`Turn`,
+    :class:`WireSizes`); here only that they are those objects.
+    """
     m_req = float(as_positive("moment", moment, unit="A·m²"))
     u = float(as_positive("voltage", voltage, unit="V"))
-    l = float(as_positive("side", side, unit="m"))
-    _check_shape(shape)
+    if not isinstance(turn, Turn):
+        raise ValueError(f"turn must be a Turn (e.g. Turn.square(side) [m]), got {shown(turn)}")
+    l = float(turn.side)
     w_max = float(as_positive("max_power", max_power, unit="W"))
     m_max = float(as_positive("max_mass", max_mass, unit="kg"))
-    d_all = np.atleast_1d(as_positive("wire_diameters", wire_diameters, unit="m"))
-    if d_all.ndim != 1 or d_all.size == 0:
-        raise ValueError(
-            f"wire_diameters must be a non-empty 1-D array, got shape {d_all.shape}"
-        )
-    if overall_diameters is None:
-        d_all = np.unique(d_all)
-        od_all = d_all + 2.0 * float(as_nonnegative("enamel_thickness", enamel_thickness, unit="m"))
-    else:
-        od_all = np.atleast_1d(as_positive("overall_diameters", overall_diameters, unit="m"))
-        if od_all.shape != d_all.shape:
-            raise ValueError(f"overall_diameters must have the shape of wire_diameters {d_all.shape}, "
-                             f"got {od_all.shape}")
-        if np.any(od_all <= d_all):
-            k = int(np.argmax(od_all <= d_all))
-            raise ValueError(f"overall_diameters must exceed the bare diameters, got {shown(od_all[k])} m "
-                             f"for wire_diameters {shown(d_all[k])} m")
-        if np.unique(d_all).size != d_all.size:
-            raise ValueError("wire_diameters must not repeat a size when overall_diameters are given")
-        order = np.argsort(d_all)
-        d_all, od_all = d_all[order], od_all[order]
-    rho = float(as_positive("resistivity", resistivity, unit="Ω·m"))
-    gamma = float(as_positive("density", density, unit="kg/m³"))
-    as_nonnegative("enamel_thickness", enamel_thickness, unit="m")   # checked even when unused
+    if not isinstance(wire, WireSizes):
+        raise ValueError(f"wire must be a WireSizes (diameters [m], resistivity [Ω·m], density [kg/m³]), "
+                         f"got {shown(wire)}")
+    # np.unique sorts by bare diameter and drops repeated sizes (allowed only without overall
+    # diameters, where a repeat has the same pitch d + 2t)
+    d_all, first = np.unique(np.array(wire.diameters), return_index=True)
+    od_all = wire.pitch[first]
     length_avail = l if winding_length is None else float(
         as_positive("winding_length", winding_length, unit="m"))
     if isinstance(max_layers, bool) or not isinstance(max_layers, (int, np.integer)) or max_layers < 1:
         raise ValueError(f"max_layers must be an integer >= 1, got {shown(max_layers)}")
-    return m_req, u, l, w_max, m_max, d_all, od_all, rho, gamma, length_avail
+    return m_req, u, l, w_max, m_max, d_all, od_all, wire.resistivity, wire.density, length_avail
 
 
 def _enumerate(m_req, u, l, shape, w_max, m_max, d_all, od_all, rho, gamma, length_avail, max_layers):
@@ -137,7 +111,7 @@ def _enumerate(m_req, u, l, shape, w_max, m_max, d_all, od_all, rho, gamma, leng
         if n_rows > _MAX_ROWS:
             raise ValueError(
                 f"max_mass = {shown(m_max)} kg admits more than {_MAX_ROWS} (turns, wire) designs; "
-                "tighten the limits or shorten wire_diameters"
+                "tighten the limits or give fewer sizes in wire.diameters"
             )
         n = np.arange(n_lo, n_hi + 1)
         per_layer = math.floor(length_avail / pitch * (1.0 + _RTOL))
@@ -194,23 +168,20 @@ def _limit(checked, adequate, any_power_mass, max_layers):
     return "winding fit", {"max_layers": max_layers, "winding_length": length_avail}
 
 
-def _solve(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
-           enamel_thickness, winding_length, max_layers, require_fit, overall_diameters):
-    checked = _design_inputs(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity,
-                             density, enamel_thickness, winding_length, max_layers, overall_diameters)
+def _solve(moment, voltage, turn, max_power, max_mass, wire, winding_length, max_layers, require_fit):
+    checked = _design_inputs(moment, voltage, turn, max_power, max_mass, wire, winding_length, max_layers)
     m_req, u, l, w_max, m_max, d_all, od_all, rho, gamma, length_avail = checked
-    table, adequate, any_power_mass = _enumerate(m_req, u, l, shape, w_max, m_max, d_all, od_all, rho, gamma,
-                                                 length_avail, max_layers)
+    table, adequate, any_power_mass = _enumerate(m_req, u, l, turn.shape, w_max, m_max, d_all, od_all, rho,
+                                                 gamma, length_avail, max_layers)
     if require_fit:
         keep = table["fits"]
         table = {k: v[keep] for k, v in table.items()}
-    return table, (*checked, float(turn_length(l, shape))), adequate, any_power_mass
+    return table, (*checked, float(turn_length(l, turn.shape))), adequate, any_power_mass
 
 
 @_document_parameters
-def coil_designs(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
-                 enamel_thickness=10e-6, *, winding_length=None, max_layers=1, require_fit=False,
-                 overall_diameters=None):
+def coil_designs(moment, voltage, turn, max_power, max_mass, wire, *, winding_length=None, max_layers=1,
+                 require_fit=False):
     r"""Every feasible (turns, wire) design of an air-core magnetorquer, as a table.
 
     Thesis §3.2, eqs. (17)–(32), enumerated over a wire table: a design is feasible when
@@ -227,14 +198,12 @@ def coil_designs(moment, voltage, side, shape, max_power, max_mass, wire_diamete
         ``current`` [A], ``power`` [W], ``mass`` [kg], ``moment`` [A·m²], ``pitch`` [m],
         ``layer_length`` [m], ``layers``, ``fits`` and ``fill_factor`` [-].
     """
-    return _solve(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
-                  enamel_thickness, winding_length, max_layers, require_fit, overall_diameters)[0]
+    return _solve(moment, voltage, turn, max_power, max_mass, wire, winding_length, max_layers, require_fit)[0]
 
 
 @_document_parameters
-def binding_limit(moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
-                  enamel_thickness=10e-6, *, winding_length=None, max_layers=1, require_fit=False,
-                  overall_diameters=None):
+def binding_limit(moment, voltage, turn, max_power, max_mass, wire, *, winding_length=None, max_layers=1,
+                  require_fit=False):
     r"""The limit that leaves no feasible design, and the numbers that show it.
 
     Thesis §3.2: the moment fixes the wire (eq. 20); the mass × power product, eq.
@@ -251,8 +220,7 @@ def binding_limit(moment, voltage, side, shape, max_power, max_mass, wire_diamet
         moment, the turns each limit allows, the two products, …).
     """
     table, checked, adequate, any_power_mass = _solve(
-        moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
-        enamel_thickness, winding_length, max_layers, require_fit, overall_diameters)
+        moment, voltage, turn, max_power, max_mass, wire, winding_length, max_layers, require_fit)
     if table["turns"].size:
         return None
     return _limit(checked, adequate, any_power_mass, max_layers)
@@ -262,19 +230,14 @@ def binding_limit(moment, voltage, side, shape, max_power, max_mass, wire_diamet
 def design_magnetorquer(
     moment,
     voltage,
-    side,
-    shape,
+    turn,
     max_power,
     max_mass,
-    wire_diameters,
-    resistivity,
-    density,
-    enamel_thickness=10e-6,
+    wire,
     *,
     winding_length=None,
     max_layers=1,
     require_fit=False,
-    overall_diameters=None,
 ):
     r"""Every feasible (turns, wire) design of an air-core magnetorquer, and the best two.
 
@@ -309,18 +272,17 @@ def design_magnetorquer(
 
     Examples
     --------
-    >>> res = design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, [0.18e-3, 0.2e-3],
-    ...                           0.0175e-6, 8.9e3)
+    >>> copper = WireSizes([0.18e-3, 0.2e-3], 0.0175e-6, 8.9e3)
+    >>> res = design_magnetorquer(0.4, 12.0, Turn.square(0.1), 2.0, 0.1, copper)
     >>> best = res["min_mass"]
     >>> int(best["turns"]), round(best["wire_diameter"] * 1e3, 2), round(best["power"], 3)
     (262, 0.18, 1.998)
-    >>> design_magnetorquer(0.4, 12.0, 0.1, "square", 1.0, 0.02, [0.2e-3], 0.0175e-6,
-    ...                     8.9e3)["binding_limit"]
+    >>> design_magnetorquer(0.4, 12.0, Turn.square(0.1), 1.0, 0.02,
+    ...                     WireSizes([0.2e-3], 0.0175e-6, 8.9e3))["binding_limit"]
     'power and mass'
     """
     table, checked, adequate, any_power_mass = _solve(
-        moment, voltage, side, shape, max_power, max_mass, wire_diameters, resistivity, density,
-        enamel_thickness, winding_length, max_layers, require_fit, overall_diameters)
+        moment, voltage, turn, max_power, max_mass, wire, winding_length, max_layers, require_fit)
     out = dict(table)
     out["feasible"] = feasible = out["turns"].size > 0
     out["min_power"] = out["min_mass"] = None

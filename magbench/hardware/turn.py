@@ -1,4 +1,5 @@
-"""Turns and wires: the area and length of a round or square turn, wire cross-sections.
+"""Turns and wires: the area and length of a round or square turn, wire cross-sections,
+and the wire sizes a coil may be wound from.
 
 Thesis §3.1 (eq. 19: the turn's length and the wire's cross-section) and the AWG and
 IEC 60317 wire series (not in the sources). A turn has the characteristic size ``side``
@@ -10,10 +11,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._validate import as_finite, as_positive, shown
+from .._validate import as_finite, as_nonnegative, as_positive, shown
 from ._parameters import document_coil
 
-__all__ = ["SHAPES", "Turn", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter"]
+__all__ = ["SHAPES", "Turn", "WireSizes", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter"]
 
 
 #: The turn shapes understood by the ``shape`` keyword.
@@ -75,6 +76,93 @@ class Turn:
     def length(self):
         """Length of one turn [m]."""
         return turn_length(self.side, self.shape)
+
+
+@dataclass(frozen=True)
+class WireSizes:
+    """The wire sizes a coil may be wound from: one conductor and enamel, several diameters.
+
+    What the magnetorquer design solver (:func:`magbench.hardware.design_magnetorquer`)
+    enumerates. The fields are checked and stored as plain floats (``diameters`` and
+    ``overall_diameters`` as tuples, in the order given), so a bad table is refused where
+    it is built, naming the field, the value and the range.
+
+    Thesis §3.2 (the wire of eq. 21, bought in a standard size); not in the thesis: the
+    enamel and the overall diameter (IEC 60317-0-1).
+
+    Parameters
+    ----------
+    diameters : array_like, shape (k,)
+        Bare conductor diameters available d [m], > 0; a size may repeat only when
+        ``overall_diameters`` is not given.
+    resistivity : float
+        Conductor resistivity ρ [Ω·m], > 0.
+    density : float
+        Conductor density ρ̃ [kg/m³], > 0.
+    enamel_thickness : float, optional
+        Radial thickness of the enamel t [m], >= 0; the wire pitch is d + 2t. Used only for
+        the winding-fit check, and only without ``overall_diameters``. The default 10 µm is
+        an order of magnitude, not a standard value: 0.100 mm grade-1 enamelled wire
+        measures 0.108–0.117 mm overall (4–8.5 µm radial; Elektrisola data quoted at
+        enameled-wires.com, Technical-Documentation/341), thicker wires carry somewhat
+        more. Take the value from the wire's datasheet.
+    overall_diameters : array_like, shape (k,), optional
+        Overall (enamelled) diameter of each wire of ``diameters`` [m], e.g. the maximum
+        overall diameter of a wire standard's table; when given it is the winding pitch and
+        ``enamel_thickness`` is not used. Each must exceed its bare diameter.
+
+    Examples
+    --------
+    >>> wire = WireSizes([0.2e-3, 0.18e-3], 0.0175e-6, 8.9e3)
+    >>> [round(float(p) * 1e3, 3) for p in wire.pitch]
+    [0.22, 0.2]
+    """
+
+    diameters: tuple
+    resistivity: float
+    density: float
+    enamel_thickness: float = 10e-6
+    overall_diameters: tuple | None = None
+
+    def __post_init__(self):
+        # The messages name the solver's parameters as they were before the wire became one
+        # argument (wire_diameters, ...): tests and the command line's flags match them.
+        d = np.atleast_1d(as_positive("wire_diameters", self.diameters, unit="m"))
+        if d.ndim != 1 or d.size == 0:
+            raise ValueError(
+                f"wire_diameters must be a non-empty 1-D array, got shape {d.shape}"
+            )
+        od = None
+        if self.overall_diameters is None:
+            as_nonnegative("enamel_thickness", self.enamel_thickness, unit="m")
+        else:
+            od = np.atleast_1d(as_positive("overall_diameters", self.overall_diameters, unit="m"))
+            if od.shape != d.shape:
+                raise ValueError(f"overall_diameters must have the shape of wire_diameters {d.shape}, "
+                                 f"got {od.shape}")
+            if np.any(od <= d):
+                k = int(np.argmax(od <= d))
+                raise ValueError(f"overall_diameters must exceed the bare diameters, got {shown(od[k])} m "
+                                 f"for wire_diameters {shown(d[k])} m")
+            # a repeated size with two overall diameters would be two pitches for one wire
+            if np.unique(d).size != d.size:
+                raise ValueError("wire_diameters must not repeat a size when overall_diameters are given")
+            od = tuple(od.tolist())
+        rho = float(as_positive("resistivity", self.resistivity, unit="Ω·m"))
+        gamma = float(as_positive("density", self.density, unit="kg/m³"))
+        # checked even when overall_diameters make it unused: a negative enamel is a typo
+        t = float(as_nonnegative("enamel_thickness", self.enamel_thickness, unit="m"))
+        for name, value in (("diameters", tuple(d.tolist())), ("overall_diameters", od),
+                            ("resistivity", rho), ("density", gamma), ("enamel_thickness", t)):
+            object.__setattr__(self, name, value)
+
+    @property
+    def pitch(self):
+        """Winding pitch of each size, in the order of ``diameters`` [m]: its overall
+        diameter when given, else d + 2t."""
+        if self.overall_diameters is not None:
+            return np.array(self.overall_diameters)
+        return np.array(self.diameters) + 2.0 * self.enamel_thickness
 
 
 @document_coil

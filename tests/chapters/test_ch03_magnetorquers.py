@@ -23,6 +23,11 @@ RHO, GAMMA = 0.0175e-6, 8.9e3
 EXACT = dict(rtol=1e-12)
 
 
+def iec_copper(table):
+    """The thesis's copper in the sizes of a wire table, at its maximum overall diameters."""
+    return hardware.WireSizes(table.nominal_diameter, RHO, GAMMA, overall_diameters=table.max_overall_diameter)
+
+
 # --- wire tables -----------------------------------------------------------------------
 
 def test_wire_table_is_the_r20_series_with_its_tolerances():
@@ -82,9 +87,8 @@ def _brute_force_table(moment, u, side, shape, w_max, m_max, bare, overall, leng
     ("square", 2.0, 0.1, 0.1, 1), ("round", 1.5, 0.06, 0.05, 2), ("square", 3.0, 0.2, 0.03, 3)])
 def test_solver_with_table_matches_brute_force(shape, w_max, m_max, length, layers):
     t = load_wire_table("iec60317")
-    res = hardware.design_magnetorquer(0.4, 12.0, 0.1, shape, w_max, m_max, t.nominal_diameter, RHO,
-                                 GAMMA, winding_length=length, max_layers=layers, require_fit=True,
-                                 overall_diameters=t.max_overall_diameter)
+    res = hardware.design_magnetorquer(0.4, 12.0, hardware.Turn(shape, 0.1), w_max, m_max, iec_copper(t),
+                                       winding_length=length, max_layers=layers, require_fit=True)
     ref = _brute_force_table(0.4, 12.0, 0.1, shape, w_max, m_max, t.nominal_diameter,
                              t.max_overall_diameter, length, layers)
     assert res["feasible"] and len(ref) == res["turns"].size
@@ -97,8 +101,8 @@ def test_solver_with_table_matches_brute_force(shape, w_max, m_max, length, laye
 
 def test_solver_thesis_inputs_with_the_iec_table():
     t = load_wire_table("iec60317")
-    res = hardware.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, t.nominal_diameter, RHO, GAMMA,
-                                 require_fit=True, overall_diameters=t.max_overall_diameter)
+    res = hardware.design_magnetorquer(0.4, 12.0, hardware.Turn.square(0.1), 2.0, 0.1, iec_copper(t),
+                                       require_fit=True)
     best = res["min_mass"]
     # 0.18 mm is the thinnest wire that reaches 0.4 A·m² (0.172 mm needed); N = 262 is the
     # fewest turns within 2 W: ceil(144/(2 r)) with r = ρ 0.4/S_r
@@ -115,19 +119,24 @@ def test_solver_thesis_inputs_with_the_iec_table():
 
 def test_solver_overall_diameter_is_backward_compatible():
     d = [0.18e-3, 0.2e-3]
-    a = hardware.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, d, RHO, GAMMA, 10e-6)
-    b = hardware.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, d[::-1], RHO, GAMMA,
-                               overall_diameters=[0.22e-3, 0.2e-3])
+    turn = hardware.Turn.square(0.1)
+    a = hardware.design_magnetorquer(0.4, 12.0, turn, 2.0, 0.1, hardware.WireSizes(d, RHO, GAMMA, 10e-6))
+    b = hardware.design_magnetorquer(0.4, 12.0, turn, 2.0, 0.1,
+                                     hardware.WireSizes(d[::-1], RHO, GAMMA, overall_diameters=[0.22e-3, 0.2e-3]))
     for key in ("turns", "wire_diameter", "power", "mass", "layer_length", "fits"):
         assert_allclose(np.asarray(a[key], float), np.asarray(b[key], float), **EXACT)
 
 
 @pytest.mark.parametrize("overall,match", [([0.2e-3], "shape"), ([0.17e-3, 0.3e-3], "exceed"),
-                                           ([0.2e-3, -1.0], "overall_diameters")])
+                                           ([0.2e-3, -1.0], "overall_diameters"),
+                                           ([0.2e-3, 0.22e-3, 0.3e-3], "shape"),
+                                           ("repeat", "must not repeat a size")])
 def test_solver_bad_overall_diameters(overall, match):
+    d = [0.18e-3, 0.2e-3]
+    if overall == "repeat":
+        d, overall = [0.2e-3, 0.2e-3], [0.22e-3, 0.23e-3]
     with pytest.raises(ValueError, match=match):
-        hardware.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, [0.18e-3, 0.2e-3], RHO, GAMMA,
-                               overall_diameters=overall)
+        hardware.WireSizes(d, RHO, GAMMA, overall_diameters=overall)
 
 
 # --- the built coil's 55 Ω ----------------------------------------------------------------
@@ -294,8 +303,8 @@ def test_actuator_figure_agrees_with_the_library():
     data = figures.compute("ch03-actuators")
     cols = {k: np.asarray(v, float) for k, (u, v) in data.series[0].columns.items()}
     t = load_wire_table("iec60317")
-    coil = hardware.design_magnetorquer(0.4, 12.0, 0.1, "square", 2.0, 0.1, t.nominal_diameter, RHO, GAMMA,
-                                  require_fit=True, overall_diameters=t.max_overall_diameter)["min_mass"]
+    coil = hardware.design_magnetorquer(0.4, 12.0, hardware.Turn.square(0.1), 2.0, 0.1, iec_copper(t),
+                                        require_fit=True)["min_mass"]
     assert_allclose([cols["mass"][0], cols["power"][0]], [coil["mass"], coil["power"]], **EXACT)
     # the rod's central magnetisation from the curve (9.23) reaches at least the assumed J°,
     # so its moment is at least the required 0.4 A·m²

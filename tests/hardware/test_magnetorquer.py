@@ -37,6 +37,13 @@ WIRES = 1e-3 * np.array([0.100, 0.112, 0.125, 0.140, 0.160, 0.180, 0.200, 0.224,
 
 EXACT = dict(rtol=1e-12)    # algebraic identities: floating-point rounding only
 
+TURN = hardware.Turn.square(SIDE)
+
+
+def copper(diameters, enamel_thickness=10e-6):
+    """The thesis's copper in the given bare diameters [m]."""
+    return hardware.WireSizes(diameters, RHO, GAMMA, enamel_thickness)
+
 
 # --- Eq. (32) and the thesis's design at N = 240 -------------------------------------
 
@@ -193,7 +200,7 @@ def _brute_force(moment, u, side, shape, w_max, m_max, wires, rho, gamma, t, n_t
                                                ("square", 0.8, 0.07)])
 def test_design_solver_matches_brute_force(shape, w_max, m_max):
     t = 10e-6
-    res = hardware.design_magnetorquer(M_REQ, U, SIDE, shape, w_max, m_max, WIRES, RHO, GAMMA, t)
+    res = hardware.design_magnetorquer(M_REQ, U, hardware.Turn(shape, SIDE), w_max, m_max, copper(WIRES, t))
     ref = _brute_force(M_REQ, U, SIDE, shape, w_max, m_max, WIRES, RHO, GAMMA, t)
     assert res["feasible"] and len(ref) > 0
     assert max(row[0] for row in ref) < 5000      # the brute force's N range was wide enough
@@ -209,7 +216,7 @@ def test_design_solver_matches_brute_force(shape, w_max, m_max):
 
 
 def test_design_solver_rejects_the_built_coil():
-    res = hardware.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, [D_BUILT], RHO, GAMMA)
+    res = hardware.design_magnetorquer(M_REQ, U, TURN, W_MAX, M_MAX, copper([D_BUILT]))
     # the smallest power-compliant count for 0.2 mm wire is 324 turns (144/(2 r) = 323.1), not 240
     assert res["feasible"]
     assert res["turns"].min() == 324
@@ -226,7 +233,7 @@ def test_built_coil_violates_the_power_limit():
 
 
 def test_design_solver_infeasible_moment():
-    res = hardware.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, WIRES[:3], RHO, GAMMA)
+    res = hardware.design_magnetorquer(M_REQ, U, TURN, W_MAX, M_MAX, copper(WIRES[:3]))
     assert not res["feasible"] and res["turns"].size == 0
     assert res["binding_limit"] == "moment"
     explanation = design_explanation(res, W_MAX, M_MAX, M_REQ, U)
@@ -236,7 +243,7 @@ def test_design_solver_infeasible_moment():
 
 def test_design_solver_infeasible_power_and_mass():
     # M·W >= 16ρρ̃m²/l² = 0.0399 kg·W > 1 W × 0.02 kg
-    res = hardware.design_magnetorquer(M_REQ, U, SIDE, "square", 1.0, 0.02, WIRES, RHO, GAMMA)
+    res = hardware.design_magnetorquer(M_REQ, U, TURN, 1.0, 0.02, copper(WIRES))
     assert not res["feasible"]
     assert res["binding_limit"] == "power and mass"
     explanation = design_explanation(res, 1.0, 0.02, M_REQ, U)
@@ -244,18 +251,18 @@ def test_design_solver_infeasible_power_and_mass():
 
 
 def test_design_solver_infeasible_winding_fit():
-    res = hardware.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, WIRES, RHO, GAMMA,
-                                 winding_length=0.01, require_fit=True)
+    res = hardware.design_magnetorquer(M_REQ, U, TURN, W_MAX, M_MAX, copper(WIRES),
+                                       winding_length=0.01, require_fit=True)
     assert not res["feasible"] and res["binding_limit"] == "winding fit"
-    loose = hardware.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, WIRES, RHO, GAMMA,
-                                   winding_length=0.01, max_layers=20, require_fit=True)
+    loose = hardware.design_magnetorquer(M_REQ, U, TURN, W_MAX, M_MAX, copper(WIRES),
+                                         winding_length=0.01, max_layers=20, require_fit=True)
     assert loose["feasible"] and np.all(loose["fits"]) and np.all(loose["layers"] <= 20)
 
 
 def test_design_solver_accepts_thesis_exact_wire_at_240_turns():
     # with the continuous eq. (21) wire, N = 240 sits exactly on the 2 W limit
     d = float(hardware.wire_diameter(hardware.wire_area_for_moment(M_REQ, U, SIDE, RHO)))
-    res = hardware.design_magnetorquer(M_REQ, U, SIDE, "square", W_MAX, M_MAX, [d], RHO, GAMMA)
+    res = hardware.design_magnetorquer(M_REQ, U, TURN, W_MAX, M_MAX, copper([d]))
     assert res["min_mass"]["turns"] == 240
     assert res["turns"].max() == 1203          # the exact mass bound, 1203.8
     assert_allclose(res["min_mass"]["moment"], M_REQ, **EXACT)
@@ -264,24 +271,41 @@ def test_design_solver_accepts_thesis_exact_wire_at_240_turns():
 @pytest.mark.parametrize("kwargs,name", [
     (dict(moment=-1.0), "moment"),
     (dict(voltage=0.0), "voltage"),
-    (dict(side=float("nan")), "side"),
-    (dict(shape="hexagon"), "shape"),
+    (dict(turn=SIDE), "turn must be a Turn"),
     (dict(max_power=-2.0), "max_power"),
     (dict(max_mass=0.0), "max_mass"),
-    (dict(wire_diameters=[]), "wire_diameters"),
-    (dict(wire_diameters=[0.2e-3, -1.0]), "wire_diameters"),
-    (dict(resistivity=0.0), "resistivity"),
-    (dict(density=-1.0), "density"),
-    (dict(enamel_thickness=-1e-6), "enamel_thickness"),
+    (dict(wire=WIRES), "wire must be a WireSizes"),
     (dict(winding_length=0.0), "winding_length"),
     (dict(max_layers=0), "max_layers"),
 ])
 def test_design_solver_bad_input(kwargs, name):
-    args = dict(moment=M_REQ, voltage=U, side=SIDE, shape="square", max_power=W_MAX,
-                max_mass=M_MAX, wire_diameters=WIRES, resistivity=RHO, density=GAMMA)
+    args = dict(moment=M_REQ, voltage=U, turn=TURN, max_power=W_MAX, max_mass=M_MAX, wire=copper(WIRES))
     args.update(kwargs)
     with pytest.raises(ValueError, match=name):
         hardware.design_magnetorquer(**args)
+
+
+@pytest.mark.parametrize("make,name", [
+    (lambda: hardware.Turn("square", float("nan")), "side"),
+    (lambda: hardware.Turn("hexagon", SIDE), "shape"),
+    (lambda: copper([]), "wire_diameters"),
+    (lambda: copper([0.2e-3, -1.0]), "wire_diameters"),
+    (lambda: copper([[0.2e-3], [0.18e-3]]), "non-empty 1-D"),
+    (lambda: hardware.WireSizes(WIRES, 0.0, GAMMA), "resistivity"),
+    (lambda: hardware.WireSizes(WIRES, RHO, -1.0), "density"),
+    (lambda: copper(WIRES, -1e-6), "enamel_thickness"),
+])
+def test_design_solver_turn_and_wire_refuse_bad_input(make, name):
+    # the turn and the wire sizes check their fields where they are built
+    with pytest.raises(ValueError, match=name):
+        make()
+
+
+def test_wire_sizes_store_plain_floats():
+    wire = copper(np.array([0.2e-3, 0.18e-3]))
+    assert wire.diameters == (0.2e-3, 0.18e-3) and wire.overall_diameters is None
+    assert_allclose(wire.pitch, [0.22e-3, 0.2e-3], **EXACT)
+    assert wire == copper([0.2e-3, 0.18e-3])       # a frozen record: equal fields, equal wires
 
 
 @pytest.mark.parametrize("call,name", [

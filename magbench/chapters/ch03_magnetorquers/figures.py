@@ -156,8 +156,8 @@ def compute_design_space(mtq_moment, mtq_voltage, mtq_side, mtq_max_power, mtq_m
         "n_min_power": ("1", n_min_power), "n_max_mass": ("1", n_max_mass),
         "n_max_single_layer": ("1", hardware.turns_per_layer(l, od)),
     }
-    res = hardware.design_magnetorquer(m, u, l, "square", mtq_max_power, mtq_max_mass, d, rho, g,
-                                  require_fit=True, overall_diameters=od)
+    res = hardware.design_magnetorquer(m, u, hardware.Turn.square(l), mtq_max_power, mtq_max_mass,
+                                       hardware.WireSizes(d, rho, g, overall_diameters=od), require_fit=True)
     best = res["min_mass"] or {}
     return FigureData("ch03-design-space", "", "", {}, [
         Series("eq. (21) wire", {"turns": ("1", n), "power": ("W", power), "mass": ("kg", mass)}),
@@ -302,8 +302,9 @@ def compute_actuators(mtq_moment, mtq_voltage, mtq_side, mtq_max_power, mtq_max_
                          f"below the saturation of the magnetisation curve (Kovalenko 9.21), "
                          f"got {shown(permalloy_design_magnetization)}")
     d, od, _ = _wire_sizes()
-    coil = hardware.design_magnetorquer(m, u, mtq_side, "square", mtq_max_power, mtq_max_mass, d, rho, g,
-                                   require_fit=True, overall_diameters=od)["min_mass"]
+    coil = hardware.design_magnetorquer(m, u, hardware.Turn.square(mtq_side), mtq_max_power, mtq_max_mass,
+                                        hardware.WireSizes(d, rho, g, overall_diameters=od),
+                                        require_fit=True)["min_mass"]
     em = hardware.electromagnet_design(m, em_elongation, permalloy_design_magnetization,
                                   permalloy_design_field, core_averaging_factor, em_current_density,
                                   em_fill_factor, rho, core_density, g, u)
