@@ -288,39 +288,60 @@ def _wm_parameters():
 
 # --- three actuators for the same moment --------------------------------------------------
 
-def compute_actuators(mtq_moment, mtq_voltage, mtq_side, mtq_max_power, mtq_max_mass,
-                      copper_resistivity, copper_density, em_elongation, permalloy_design_magnetization,
-                      permalloy_design_field, permalloy_a, permalloy_b, core_averaging_factor,
-                      em_current_density, em_fill_factor, core_density, magnet_remanence,
-                      magnet_density, alnico_max_magnetization, alnico_elongation):
-    """Mass, power and size of an air-core coil, a rod electromagnet and permanent magnets."""
-    m, u, rho, g = mtq_moment, mtq_voltage, copper_resistivity, copper_density
+def _air_core_row(p):
+    """The least-mass air-core coil on the IEC wire table that meets the moment, power and mass."""
+    d, od, _ = _wire_sizes()
+    coil = hardware.design_magnetorquer(p["mtq_moment"], p["mtq_voltage"], hardware.Turn.square(p["mtq_side"]),
+                                        p["mtq_max_power"], p["mtq_max_mass"],
+                                        hardware.WireSizes(d, p["copper_resistivity"], p["copper_density"],
+                                                           overall_diameters=od),
+                                        require_fit=True)["min_mass"]
+    row = ("air-core coil (IEC wire, least mass)", coil["mass"] if coil else np.nan,
+           coil["power"] if coil else np.nan, p["mtq_side"], p["mtq_moment"] if coil is None else coil["moment"], 1.0)
+    return row, coil
+
+
+def _electromagnet_row(p):
+    """Kovalenko's rod electromagnet (9.63)–(9.73), with the moment its winding's field
+    actually gives on the magnetisation curve (9.21)."""
+    j_design, a = p["permalloy_design_magnetization"], p["permalloy_a"]
     # electromagnet_design takes J° and H° as given; the curve (9.21) J = aH/(b + H) never
     # reaches a, so a design magnetisation at or above it is no state of this material.
-    if not 0 < permalloy_design_magnetization < permalloy_a:
-        raise ValueError(f"permalloy_design_magnetization must lie in (0, permalloy_a = {permalloy_a:g}) A/m, "
+    if not 0 < j_design < a:
+        raise ValueError(f"permalloy_design_magnetization must lie in (0, permalloy_a = {a:g}) A/m, "
                          f"below the saturation of the magnetisation curve (Kovalenko 9.21), "
-                         f"got {shown(permalloy_design_magnetization)}")
-    d, od, _ = _wire_sizes()
-    coil = hardware.design_magnetorquer(m, u, hardware.Turn.square(mtq_side), mtq_max_power, mtq_max_mass,
-                                        hardware.WireSizes(d, rho, g, overall_diameters=od),
-                                        require_fit=True)["min_mass"]
-    em = hardware.electromagnet_design(m, em_elongation, permalloy_design_magnetization,
-                                  permalloy_design_field, core_averaging_factor, em_current_density,
-                                  em_fill_factor, rho, core_density, g, u)
+                         f"got {shown(j_design)}")
+    em = hardware.electromagnet_design(p["mtq_moment"], p["em_elongation"], j_design, p["permalloy_design_field"],
+                                       p["core_averaging_factor"], p["em_current_density"], p["em_fill_factor"],
+                                       p["copper_resistivity"], p["core_density"], p["copper_density"],
+                                       p["mtq_voltage"])
     # saturation check: the central magnetisation the winding's field actually produces
-    j_c = float(hardware.core_central_magnetization(em["coil_field"], em["demagnetizing_factor"],
-                                               permalloy_a, permalloy_b))
-    em_moment = float(hardware.electromagnet_moment(j_c, em["core_diameter"], em["length"], core_averaging_factor))
-    j_r = magnet_remanence / MU_0
-    pm = [("permanent magnet, B_r = %.2g T" % magnet_remanence, j_r, alnico_elongation, magnet_density),
-          ("permanent magnet, AlNiCo YuN13DK25BA", alnico_max_magnetization, alnico_elongation, magnet_density)]
-    rows = [("air-core coil (IEC wire, least mass)", coil["mass"] if coil else np.nan,
-             coil["power"] if coil else np.nan, mtq_side, m if coil is None else coil["moment"], 1.0),
-            ("rod electromagnet, permalloy 50N", em["mass"], em["power"], em["length"], em_moment, 1.0)]
-    for label, j, p0, gam in pm:
-        length, dia, mass = hardware.permanent_magnet_min_mass(m, j, p0, gam)
+    j_c = float(hardware.core_central_magnetization(em["coil_field"], em["demagnetizing_factor"], a,
+                                                    p["permalloy_b"]))
+    em_moment = float(hardware.electromagnet_moment(j_c, em["core_diameter"], em["length"],
+                                                    p["core_averaging_factor"]))
+    return ("rod electromagnet, permalloy 50N", em["mass"], em["power"], em["length"], em_moment, 1.0), em, j_c
+
+
+def _magnet_rows(p):
+    """Least-mass permanent magnets (10.17)–(10.20): the best remanence, and the AlNiCo alloy."""
+    m = p["mtq_moment"]
+    rows = []
+    for label, j in (("permanent magnet, B_r = %.2g T" % p["magnet_remanence"], p["magnet_remanence"] / MU_0),
+                     ("permanent magnet, AlNiCo YuN13DK25BA", p["alnico_max_magnetization"])):
+        length, dia, mass = hardware.permanent_magnet_min_mass(m, j, p["alnico_elongation"], p["magnet_density"])
         rows.append((label, float(mass), 0.0, float(length), m, 0.0))
+    return rows
+
+
+def compute_actuators(**params):
+    """Mass, power and size of an air-core coil, a rod electromagnet and permanent magnets
+    for one moment; ``params`` are the figure's inputs, declared with their units in
+    :func:`_actuator_parameters` (the coil's, the electromagnet's and the magnets')."""
+    p = {**_defaults(), **params}
+    coil_row, coil = _air_core_row(p)
+    em_row, em, j_c = _electromagnet_row(p)
+    rows = [coil_row, em_row, *_magnet_rows(p)]
     cols = {
         "mass": ("kg", [r[1] for r in rows]), "power": ("W", [r[2] for r in rows]),
         "length": ("m", [r[3] for r in rows]), "moment": ("A m^2", [r[4] for r in rows]),
