@@ -131,10 +131,12 @@ def viscous_damper_torque(relative_rate, coefficient):
 def dry_friction_damper_torque(relative_rate, b, friction_torque):
     """M_T ω_rel⊥/|ω_rel⊥| on the body (zero where ω_rel⊥ = 0); the checked form is
     :func:`magbench.dynamics.dry_friction_damper_torque`."""
-    bb = np.sum(b * b, axis=-1, keepdims=True)
-    perp = cross(b, cross(relative_rate, b)) / bb
-    norm = np.linalg.norm(perp, axis=-1, keepdims=True)
-    return np.asarray(friction_torque)[..., None] * np.where(norm > 0.0, perp / np.where(norm > 0.0, norm, 1.0), 0.0)
+    bhat = b / np.linalg.norm(b, axis=-1, keepdims=True)
+    perp = relative_rate - np.sum(relative_rate * bhat, axis=-1, keepdims=True) * bhat
+    scale = np.max(np.abs(perp), axis=-1, keepdims=True)  # scaled first: |perp|² may underflow
+    unit = perp / np.where(scale > 0.0, scale, 1.0)
+    unit = unit / np.where(scale > 0.0, np.linalg.norm(unit, axis=-1, keepdims=True), 1.0)
+    return np.asarray(friction_torque)[..., None] * unit
 
 
 def spherical_damper_rhs(state, body_torque, ball_torque, j, ball_inertia, coupling):
