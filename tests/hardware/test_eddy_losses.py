@@ -8,9 +8,13 @@ from numpy.testing import assert_allclose
 
 from magbench import hardware
 from magbench.constants import MU_0
+from magbench.io import load_printed
 
-COPPER = 0.0175e-6          # Ω·m, the book's ρ_м (seed OCR "O,9175-10~6", line 229)
-PERMALLOY = (0.45e-6, 0.9e-6)  # Ω·m, the book's ρ_c range
+PRINTED = load_printed("kovalenko")
+COPPER = PRINTED["kovalenko-eddy-shell-resistivity"].value          # Ω·m, ρ_м (seed line 229)
+PERMALLOY = (PRINTED["kovalenko-eddy-rod-resistivity"].value_low * 1.0,
+             PRINTED["kovalenko-eddy-rod-resistivity"].value_high * 1.0)   # Ω·m ("ohm m" is SI)
+C_PRINTED = PRINTED["kovalenko-eddy-parabola-c"].value
 GAUSS = np.polynomial.legendre.leggauss(30)
 
 
@@ -45,7 +49,8 @@ def test_alpha_at_the_book_s_c_is_0_2889():
                    "his c = 0.85 is 0.28892, which rounds to 0.289: the printed value is truncated "
                    "(last-digit rounding, no downstream effect: 1.04·10⁻² holds with either)")
 def test_alpha_printed_0_288_within_half_its_last_digit():
-    assert abs(hardware.rod_eddy_profile_coefficient(0.85) - 0.288) <= 0.0005
+    row = PRINTED["kovalenko-eddy-alpha"]
+    assert abs(hardware.rod_eddy_profile_coefficient(C_PRINTED) - row.value) <= row.resolution
 
 
 def test_the_rod_loss_is_the_sum_of_its_ring_losses():
@@ -65,9 +70,10 @@ def test_the_mean_torque_is_the_mean_loss_over_the_rate():
 
 
 def test_the_ideal_rod_coefficient_is_the_printed_1_04e_2():
-    alpha = hardware.rod_eddy_profile_coefficient(0.85)
+    alpha = hardware.rod_eddy_profile_coefficient(C_PRINTED)
     coefficient = alpha / (32 * 0.93 ** 2)
-    assert abs(coefficient / 1e-2 - 1.04) <= 0.005          # printed "1,04" (seed line 223)
+    row = PRINTED["kovalenko-eddy-ideal-rod-coefficient"]    # printed "1,04" (seed line 223)
+    assert abs(coefficient - row.value) <= row.resolution
     v, d, rho, w, h0, p = 7e-6, 2.8e-3, 0.6e-6, 0.002, 24.0, 400.0
     assert_allclose(hardware.rod_eddy_torque_from_field(v, d, rho, w, h0, p),
                     coefficient * v * d ** 2 * w * MU_0 ** 2 * h0 ** 2 * p ** 3.4 / rho, rtol=1e-12)
@@ -82,11 +88,14 @@ def test_the_shell_loss_is_the_sum_of_its_ring_losses_with_the_rod_s_flux():
     assert_allclose(hardware.shell_eddy_torque(v, d, big, rho, w, rate / w), direct / 2 / w, rtol=1e-12)
 
 
-@pytest.mark.parametrize("rho_c, printed", [(0.45e-6, 2.8e-2), (0.9e-6, 1.4e-2)])
-def test_e44_rod_to_shell_ratio_reproduces_the_printed_range(rho_c, printed):
-    """E44 (seed lines 228–229): V_c = V_к, D = √2 d, ρ_м = 0.0175·10⁻⁶, ρ_c = (0.45–0.9)·10⁻⁶."""
+@pytest.mark.parametrize("end", ["low", "high"])
+def test_e44_rod_to_shell_ratio_reproduces_the_printed_range(end):
+    """E44 (seed lines 228–229): V_c = V_к, D = √2 d, ρ_м = 0.0175·10⁻⁶, ρ_c = (0.45–0.9)·10⁻⁶;
+    the low ratio comes with the high resistivity."""
+    row = PRINTED["kovalenko-eddy-rod-shell-ratio"]
+    rho_c, printed = (PERMALLOY[1], row.value_low) if end == "low" else (PERMALLOY[0], row.value_high)
     ratio = hardware.rod_to_shell_eddy_ratio(rho_c, COPPER, np.sqrt(2))
-    assert abs(ratio - printed) <= 0.05e-2                  # half a unit of the printed 1.4 / 2.8 (·10⁻²)
+    assert abs(ratio - printed) <= row.resolution           # half a unit of the printed 1.4 / 2.8 (·10⁻²)
     d, l = 2.8e-3, 1.14
     v = np.pi * d ** 2 * l / 4
     v_shell = np.pi * (2 * d ** 2 - d ** 2) * l / 4
