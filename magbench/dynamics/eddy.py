@@ -302,7 +302,7 @@ def cylinder_eddy_coefficients(radius, length, thickness, conductivity):
     Notes
     -----
     Kovalenko (1975) eqs. (4.25), (4.26), seed lines 87–88 (pp. 86–87), after his ref. [52].
-    The book prints them in Gaussian (CGSE) units: lengths in cm, H₀ in Oe, torques in
+    The book prints them in Gaussian (CGSE) units (seed line 89, p. 88): lengths in cm, H₀ in Oe, torques in
     dyn·cm, c = 3·10¹⁰ cm/s and σ [S/m] × 9·10⁹ [s⁻¹]; the spin-axis torque (4.25) has the
     magnitude Q = π σ_G c⁻² H₀² ω sin α r³ τ l [1 − (2r/l) th(l/2r)]. In SI, with
     σ_G = σ/(4πε0) [s⁻¹], c² = 1/(μ0ε0) and H₀ [Oe] = 10⁴ B₀ [T], the same expression with σ

@@ -188,8 +188,11 @@ def test_the_book_s_cgs_form_of_4_25_gives_the_si_torque():
     r, l, tau, sigma, w, b, alpha = 0.05, 0.3, 1e-3, SIGMA_AL, 2.0, 3e-5, 0.7
     transverse, _ = dynamics.cylinder_eddy_coefficients(r, l, tau, sigma)
     si = transverse * b ** 2 * w * np.sin(alpha) ** 2
+    from magbench.io import load_printed
+
+    factor = load_printed("kovalenko")["kovalenko-eddy-cgs-conductivity-factor"].value   # 9·10⁹, seed line 89
     rc, lc, tc, h0 = 100 * r, 100 * l, 100 * tau, 1e4 * b
-    q = np.pi * sigma * 9e9 * (3e10) ** -2 * h0 ** 2 * w * np.sin(alpha) * rc ** 3 * tc * lc * (
+    q = np.pi * sigma * factor * (3e10) ** -2 * h0 ** 2 * w * np.sin(alpha) * rc ** 3 * tc * lc * (
         1 - 2 * rc / lc * np.tanh(lc / (2 * rc)))
     # the book's 9e9 and 3e10 stand for 1/(4πε0) and c: (9e9)/(3e10)² = 1e-11 exactly, as
     # 8.988e9/(2.998e10)² = 1e-11 to 4 digits; the identity is exact with the book's constants
