@@ -12,7 +12,8 @@ from .gyrostat import (airplane_231_angles, airplane_231_matrix, gyrostat_kineti
                        gyrostat_rates, gyrostat_rhs, gyrostat_turning_field_rhs, rotor_dimensionless_numbers,
                        rotor_reduced_rhs, semi_body_axes, semi_body_field, semi_body_rhs)
 from .eddy import (anisotropic_eddy_torque, cylinder_eddy_coefficients, eddy_despin_time_constant, eddy_torque,
-                   eddy_torque_components, solid_sphere_eddy_coefficient, spherical_shell_eddy_coefficient,
+                   eddy_torque_components, shell_despin_time_constant, solid_sphere_eddy_coefficient,
+                   spherical_shell_eddy_coefficient,
                    spherical_shell_eddy_torque, spherical_shell_time_constant)
 from .dampers import (dry_friction_damper_torque, spherical_damper_energy, spherical_damper_rhs,
                       viscous_damper_torque)
@@ -41,4 +42,5 @@ __all__ = ["momentum_exchange_energy_ratio", "thesis_energy_ratio", "two_coil_to
            "rotor_dimensionless_numbers", "eddy_torque", "eddy_torque_components", "anisotropic_eddy_torque",
            "spherical_shell_eddy_coefficient", "spherical_shell_time_constant", "spherical_shell_eddy_torque",
            "solid_sphere_eddy_coefficient", "cylinder_eddy_coefficients", "eddy_despin_time_constant",
+           "shell_despin_time_constant",
            "viscous_damper_torque", "dry_friction_damper_torque", "spherical_damper_rhs", "spherical_damper_energy"]

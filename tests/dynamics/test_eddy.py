@@ -261,10 +261,12 @@ def test_tns0_hull_shell_that_would_give_fig_14_decay_is_centimetres_thick():
     p = chapter_parameters("ch07")
     _, _, linear, exponential = decay_fits()
     tau = linear.parameters["initial"] / -linear.parameters["slope"] * 3600.0   # s
-    b2_perp = 2.0 / 3.0 * mean_square_field(tns0_orbit(p), duration=86400.0, samples=4000)  # axis with no preference (ours)
+    b2_perp = 2.0 / 3.0 * mean_square_field(tns0_orbit(p))  # over a day; an axis with no preferred direction (ours)
     radius, length, j = p["diameter"] / 2, p["length"], p["transverse_inertia"]
     per_metre = dynamics.spherical_shell_eddy_coefficient(radius, 1e-6, SIGMA_AL) / 1e-6
     sphere = j / (tau * per_metre * b2_perp)
+    # k ∝ d: the wall found by one division gives back the time constant through the orbit
+    assert_allclose(dynamics.shell_despin_time_constant(j, radius, sphere, SIGMA_AL, tns0_orbit(p)), tau, rtol=1e-12)
     gt, ga = dynamics.cylinder_eddy_coefficients(radius, length, 1e-6, SIGMA_AL)
     cylinder = j / (tau * 0.5 * (gt + ga) / 1e-6 * b2_perp)
     assert_allclose(dynamics.eddy_despin_time_constant(j, per_metre * sphere, b2_perp), tau, rtol=1e-12)
@@ -288,3 +290,29 @@ def test_tns0_hull_shell_that_would_give_fig_14_decay_is_centimetres_thick():
 def test_bad_input_names_the_parameter(call, name):
     with pytest.raises(ValueError, match=name):
         call()
+
+
+def test_the_field_across_three_orthogonal_axes_averages_to_two_thirds_of_the_mean_square():
+    from magbench.earth import CircularOrbit, mean_square_field, mean_square_perpendicular_field
+
+    orbit = CircularOrbit(6.721e6, np.radians(51.6), 7.766e22)
+    rng = np.random.default_rng(5)
+    axes, _ = np.linalg.qr(rng.normal(size=(3, 3)))
+    across = [mean_square_perpendicular_field(orbit, a, samples=2000) for a in axes.T]
+    # Σ_i (B² − (e_i·B)²) = 2B² at every instant, for any orthonormal e_i: rounding only
+    assert_allclose(np.mean(across), 2 / 3 * mean_square_field(orbit, samples=2000), rtol=1e-12)
+    # the orbit normal sees the in-plane field, more than the average (|B|² sin²α varies by axis)
+    assert np.ptp(across) > 0
+    with pytest.raises(ValueError, match="axis"):
+        mean_square_perpendicular_field(orbit, [0.0, 0.0, 0.0])
+
+
+def test_the_shell_despin_time_constant_composes_the_coefficient_and_the_orbit_field():
+    from magbench.earth import CircularOrbit, mean_square_field, mean_square_perpendicular_field
+
+    orbit = CircularOrbit(6.721e6, np.radians(51.6), 7.766e22)
+    k = dynamics.spherical_shell_eddy_coefficient(0.05, 1e-3, SIGMA_AL)
+    tau = dynamics.shell_despin_time_constant(0.0406, 0.05, 1e-3, SIGMA_AL, orbit)
+    assert_allclose(tau, 0.0406 / (k * 2 / 3 * mean_square_field(orbit)), rtol=1e-14)
+    tau_z = dynamics.shell_despin_time_constant(0.0406, 0.05, 1e-3, SIGMA_AL, orbit, axis=[0.0, 0.0, 1.0])
+    assert_allclose(tau_z, 0.0406 / (k * mean_square_perpendicular_field(orbit, [0.0, 0.0, 1.0])), rtol=1e-14)
