@@ -273,7 +273,7 @@ def test_tns0_hull_shell_that_would_give_fig_14_decay_is_centimetres_thick():
     # the numbers the docstring and report quote, to 2 digits
     assert sphere == pytest.approx(0.046, abs=0.001) and sphere > 0.9 * radius
     assert cylinder == pytest.approx(0.0087, abs=0.0002)
-    # matched to the exponential fit's τ instead (430 h), both are 1.5 times thinner
+    # matched to the exponential fit's τ instead (430 h), both walls are 1.5 times thicker
     ratio = exponential.parameters["time_constant"] * 3600.0 / tau
     assert 0.6 < ratio < 0.7
 

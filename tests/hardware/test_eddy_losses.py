@@ -125,3 +125,26 @@ def test_the_winding_parameter_does_not_depend_on_the_number_of_turns():
 def test_bad_input_names_the_parameter(call, name):
     with pytest.raises(ValueError, match=name):
         call()
+
+
+def test_the_winding_torque_peaks_at_a0_equal_n_over_k_with_the_value_of_12_31():
+    v, h0, n, k = 7e-6, 24.0, 0.79e-4, 0.72
+    a = np.geomspace(1e-6, 1e-2, 20001)
+    m = hardware.winding_damping_torque(v, h0, n, a, k)
+    # the grid's spacing is 0.05 %: the peak's place to that, its value to second order
+    assert_allclose(a[np.argmax(m)], n / k, rtol=1e-3)
+    assert_allclose(hardware.winding_damping_torque(v, h0, n, n / k, k), k * v * MU_0 * h0 ** 2 / (4 * n), rtol=1e-14)
+
+
+def test_e45_transit_winding_beats_hysteresis_several_times():
+    """E45 (seed line 229): Transit rods, p = 248, H₀ = 0.3 Oe ≈ 24 A/m, (∮HdB)_ц ≈ 3.6 T·A/m,
+    N_ц ≈ 0.79·10⁻⁴. The book's ratio M*max/M_Г = πμ0H₀²/(2N_ц(∮HdB)_ц) is lost in the OCR;
+    it says only "several times". With (12.31) and (12.1) at k = k_φ it is 4.0."""
+    h0 = PRINTED["kov-transit-field-si"].value
+    loop = PRINTED["kov-transit-loop-si"].value
+    n = PRINTED["kov-transit-rod-demag"].value
+    v, k = 7e-6, 0.72
+    winding = hardware.winding_damping_torque(v, h0, n, n / k, k)
+    hysteresis = hardware.hysteresis_damping_torque(v, loop, k)      # (12.1): k_φ V ∮HdB/(2π)
+    assert_allclose(winding / hysteresis, np.pi * MU_0 * h0 ** 2 / (2 * n * loop), rtol=1e-13)
+    assert round(float(winding / hysteresis), 1) == 4.0
