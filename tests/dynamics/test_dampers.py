@@ -126,3 +126,13 @@ def test_dry_friction_keeps_momentum_and_sticks_with_a_chatter_set_by_the_step()
 def test_bad_input_names_the_parameter(call, name):
     with pytest.raises(ValueError, match=name):
         call()
+
+
+def test_the_flown_spherical_damper_coefficients_in_si():
+    """E01c (seed line 18): 0.7–16.0 N·cm/(rad/s) is 0.007–0.16 N·m·s/rad; K above lies inside."""
+    from magbench.io import load_printed
+
+    row = load_printed("kovalenko")["kovalenko-damper-sphere-coefficient"]
+    low, high = (dynamics.viscous_damper_torque([0.0, 0.0, 1.0], v * 1e-2)[2] for v in (row.value_low, row.value_high))
+    assert_allclose([low, high], [0.007, 0.16], rtol=1e-14)     # 1 N·cm = 1e-2 N·m, exact up to rounding
+    assert low <= K <= high
