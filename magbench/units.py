@@ -40,6 +40,7 @@ SI_FACTORS = {
     "rad": 1.0, "rad/s": 1.0, "year": 1.0, "N m/rad": 1.0, "m^2": 1.0, "W/V": 1.0, "kg V": 1.0,
     "ohm kg/m^2": 1.0, "A/m^2": 1.0, "N m": 1.0, "N m/kg": 1.0, "kg/(N m)": 1.0,
     "m^3": 1.0, "kg m^2/s": 1.0, "J/m^3": 1.0, "A m^2 s/T": 1.0,
+    "N m s/rad": 1.0, "N cm": 1e-2, "N cm s/rad": 1e-2,   # damping torques (Kovalenko 1975, p. 16)
     "mm": 1e-3, "km": 1e3, "cm": 1e-2, "cm^3": 1e-6,
     "deg": np.pi / 180.0, "deg/s": np.pi / 180.0,
     "%": 1e-2,
@@ -52,7 +53,8 @@ SI_FACTORS = {
 
 #: The SI unit of each printed unit that is not SI itself.
 SI_UNIT_NAMES = {"cm^3": "m^3", "mm": "m", "km": "m", "cm": "m", "deg": "rad", "deg/s": "rad/s", "%": "1",
-            "emu": "A m^2", "Oe": "A/m", "nT": "T", "uT": "T", "G": "T", "rpm": "rad/s", "G Oe": "J/m^3"}
+            "emu": "A m^2", "Oe": "A/m", "nT": "T", "uT": "T", "G": "T", "rpm": "rad/s", "G Oe": "J/m^3",
+            "N cm": "N m", "N cm s/rad": "N m s/rad"}
 
 # 1 Oe = 1000/(4 pi) A/m exactly (definition of the CGS-Gaussian oersted).
 _A_PER_M_PER_OERSTED = 1000.0 / (4.0 * np.pi)

@@ -11,6 +11,12 @@ from .aerodynamic_angles import aerodynamic_angles, aerodynamic_attitude_matrix,
 from .gyrostat import (airplane_231_angles, airplane_231_matrix, gyrostat_kinetic_energy, gyrostat_momentum,
                        gyrostat_rates, gyrostat_rhs, gyrostat_turning_field_rhs, rotor_dimensionless_numbers,
                        rotor_reduced_rhs, semi_body_axes, semi_body_field, semi_body_rhs)
+from .eddy import (anisotropic_eddy_torque, cylinder_eddy_coefficients, eddy_despin_time_constant, eddy_torque,
+                   eddy_torque_components, shell_despin_time_constant, solid_sphere_eddy_coefficient,
+                   spherical_shell_eddy_coefficient,
+                   spherical_shell_eddy_torque, spherical_shell_time_constant)
+from .dampers import (dry_friction_damper_torque, spherical_damper_energy, spherical_damper_rhs,
+                      viscous_damper_torque)
 from .energy_exchange import momentum_exchange_energy_ratio, thesis_energy_ratio
 from .pendulum import (Mockup, amplitude_for_period, body_rates_313, euler_313_matrix, field_for_period,
                        mockup_loads, mockup_rhs, natural_frequency, pendulum_energy, pendulum_peak_rate, pendulum_period, pendulum_rhs,
@@ -33,4 +39,8 @@ __all__ = ["momentum_exchange_energy_ratio", "thesis_energy_ratio", "two_coil_to
            "body_rate_from_momentum", "momentum_and_nutation", "conical_rotation_angle", "conical_rotation_rate",
            "airplane_231_matrix", "airplane_231_angles", "semi_body_axes", "semi_body_field", "gyrostat_rates",
            "gyrostat_rhs", "gyrostat_turning_field_rhs", "gyrostat_kinetic_energy", "gyrostat_momentum", "semi_body_rhs", "rotor_reduced_rhs",
-           "rotor_dimensionless_numbers"]
+           "rotor_dimensionless_numbers", "eddy_torque", "eddy_torque_components", "anisotropic_eddy_torque",
+           "spherical_shell_eddy_coefficient", "spherical_shell_time_constant", "spherical_shell_eddy_torque",
+           "solid_sphere_eddy_coefficient", "cylinder_eddy_coefficients", "eddy_despin_time_constant",
+           "shell_despin_time_constant",
+           "viscous_damper_torque", "dry_friction_damper_torque", "spherical_damper_rhs", "spherical_damper_energy"]

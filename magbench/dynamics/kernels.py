@@ -21,7 +21,9 @@ from ..constants import MU_0
 from ..rotations import hamilton_product
 
 __all__ = ["cross", "rotate", "quaternion_rate", "apply_inertia", "euler_rates", "gravity_gradient_torque",
-           "gyrostat_rates", "gyrostat_rhs", "rod_moment", "gyrostat_turning_field_rhs"]
+           "gyrostat_rates", "gyrostat_rhs", "rod_moment", "gyrostat_turning_field_rhs", "eddy_torque",
+           "anisotropic_eddy_torque", "spherical_shell_eddy_torque", "viscous_damper_torque",
+           "dry_friction_damper_torque", "spherical_damper_rhs"]
 
 
 def cross(a, b):
@@ -97,6 +99,54 @@ def gyrostat_rhs(state, dipole, field_orbital, j, rotor_momentum, mean_motion):
 def rod_moment(induction, rod_axes, volume):
     """Σ_k V_k B_k/μ0 r̂_k; the checked form is :func:`magbench.dynamics.hysteresis_rod_moment`."""
     return np.einsum("...k,kj->...j", induction * volume / MU_0, rod_axes)
+
+
+def eddy_torque(rate, b, coefficient):
+    """k (ω × B) × B, ω = rate; the checked form is :func:`magbench.dynamics.eddy_torque`."""
+    return np.asarray(coefficient)[..., None] * cross(cross(rate, b), b)
+
+
+def anisotropic_eddy_torque(rate, b, coefficients):
+    """(Γ (ω × B)) × B, Γ = diag(coefficients); the checked form is
+    :func:`magbench.dynamics.anisotropic_eddy_torque`."""
+    return cross(coefficients * cross(rate, b), b)
+
+
+def spherical_shell_eddy_torque(rate, b, coefficient, time_constant):
+    """k [(ω × B) × B − τω² B⊥ × B]/(1 + ω²τ²); the checked form is
+    :func:`magbench.dynamics.spherical_shell_eddy_torque`."""
+    w2 = np.sum(rate * rate, axis=-1, keepdims=True)
+    safe = np.where(w2 > 0.0, w2, 1.0)
+    b_perp = b - np.sum(b * rate, axis=-1, keepdims=True) * rate / safe
+    tau = np.asarray(time_constant)[..., None]
+    k = np.asarray(coefficient)[..., None]
+    return k * (cross(cross(rate, b), b) - tau * w2 * cross(b_perp, b)) / (1.0 + w2 * tau * tau)
+
+
+def viscous_damper_torque(relative_rate, coefficient):
+    """k ω_rel on the body; the checked form is :func:`magbench.dynamics.viscous_damper_torque`."""
+    return np.asarray(coefficient)[..., None] * relative_rate
+
+
+def dry_friction_damper_torque(relative_rate, b, friction_torque):
+    """M_T ω_rel⊥/|ω_rel⊥| on the body (zero where ω_rel⊥ = 0); the checked form is
+    :func:`magbench.dynamics.dry_friction_damper_torque`."""
+    bhat = b / np.linalg.norm(b, axis=-1, keepdims=True)
+    perp = relative_rate - np.sum(relative_rate * bhat, axis=-1, keepdims=True) * bhat
+    scale = np.max(np.abs(perp), axis=-1, keepdims=True)  # scaled first: |perp|² may underflow
+    unit = perp / np.where(scale > 0.0, scale, 1.0)
+    unit = unit / np.where(scale > 0.0, np.linalg.norm(unit, axis=-1, keepdims=True), 1.0)
+    return np.asarray(friction_torque)[..., None] * unit
+
+
+def spherical_damper_rhs(state, body_torque, ball_torque, j, ball_inertia, coupling):
+    """(ω̇, ω̇_d) of a body and a free spherical ball; the checked form is
+    :func:`magbench.dynamics.spherical_damper_rhs` (which documents the state and frames)."""
+    w, wd = state[..., :3], state[..., 3:]
+    coupled = body_torque + coupling
+    w_rate = euler_rates(w, coupled, j)
+    wd_rate = (ball_torque - coupling) / np.asarray(ball_inertia)[..., None] - cross(w, wd)
+    return np.concatenate([w_rate, wd_rate], axis=-1)
 
 
 # The unused tensor slots of gyrostat_rates_scalar's inertia for principal moments.

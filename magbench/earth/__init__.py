@@ -12,7 +12,7 @@ from .dipole import (dipole_b, dipole_elements, dipole_equatorial_b, dipole_fiel
                      earth_dipole_moment_vector, field_elements, lowes_spectrum)
 from .orbit import orbital_dipole_b
 from .field_statistics import (dipole_max_field, field_direction_rate_range, field_magnitude_range,
-                               field_square_ratio, mean_square_field)
+                               field_square_ratio, mean_square_field, mean_square_perpendicular_field)
 from .field_cone import (cone_field_direction, field_cone_axis, field_cone_deviation, field_cone_half_angle,
                          field_cone_rate, orbit_field_direction)
 from .igrf import (IgrfDipole, IgrfField, decimal_year_to_datetime, igrf_dipole, igrf_field,
@@ -26,5 +26,5 @@ __all__ = ["geomagnetic_latitude", "geomagnetic_longitude", "dipole_equatorial_b
            "decimal_year_to_datetime", "igrf_dipole", "igrf_field", "igrf_mean_surface_b",
            "igrf_gauss_coefficients", "CircularOrbit", "field_cone_half_angle", "field_cone_axis",
            "orbit_field_direction", "cone_field_direction", "field_cone_deviation", "field_cone_rate",
-           "dipole_max_field", "mean_square_field", "field_square_ratio", "field_direction_rate_range",
+           "dipole_max_field", "mean_square_field", "mean_square_perpendicular_field", "field_square_ratio", "field_direction_rate_range",
            "field_magnitude_range"]

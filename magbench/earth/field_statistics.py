@@ -10,10 +10,11 @@ orbit says so). SI throughout.
 
 import numpy as np
 
-from .._validate import as_count, as_positive_scalar
+from .._validate import as_count, as_finite, as_positive_scalar
 from ..constants import MU_0
 
-__all__ = ["dipole_max_field", "mean_square_field", "field_square_ratio", "field_direction_rate_range",
+__all__ = ["dipole_max_field", "mean_square_field", "mean_square_perpendicular_field", "field_square_ratio",
+           "field_direction_rate_range",
            "field_magnitude_range"]
 
 
@@ -75,6 +76,43 @@ def mean_square_field(orbit, duration=86400.0, samples=20000):
     t = np.linspace(0.0, span, n, endpoint=False)
     b = orbit.field(t)
     return float(np.mean(np.sum(b * b, axis=-1)))
+
+
+def mean_square_perpendicular_field(orbit, axis, duration=86400.0, samples=20000):
+    r"""Time mean of the square of the field across a direction fixed in inertial space.
+
+    Parameters
+    ----------
+    orbit : CircularOrbit
+        The orbit and its field [-].
+    axis : array_like, shape (3,)
+        The direction ŝ in inertial axes (a spin axis that holds its direction), non-zero;
+        normalised here [-].
+    duration : float, optional
+        Span averaged over from t = 0, > 0 [s]; a day by default.
+    samples : int, optional
+        Equally spaced instants, the end excluded, ≥ 2 [-].
+
+    Returns
+    -------
+    float
+        ⟨|ŝ × B|²⟩ = ⟨B² sin²α⟩ [T²], α the angle between B and ŝ.
+
+    Notes
+    -----
+    Kovalenko (1975) eq. (4.23a), seed line 87 (p. 86): the eddy braking of a spin goes as
+    B² sin²α. Averaged over all directions ŝ it is (2/3)⟨B²⟩ (:func:`mean_square_field`; the
+    tests hold it to that).
+    """
+    s = as_finite("axis", axis)
+    if s.shape != (3,) or not np.any(s):
+        raise ValueError(f"axis must be a non-zero vector of shape (3,), got {s.tolist()}")
+    span = as_positive_scalar("duration", duration, unit="s")
+    n = as_count("samples", samples, minimum=2)
+    b = orbit.field(np.linspace(0.0, span, n, endpoint=False))
+    s = s / np.linalg.norm(s)
+    along = b @ s
+    return float(np.mean(np.sum(b * b, axis=-1) - along ** 2))
 
 
 def field_square_ratio(orbit, samples=3601):

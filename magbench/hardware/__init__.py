@@ -26,14 +26,19 @@ from .cores import (core_central_magnetization, effective_permeability, electrom
                     field_for_magnetization, magnetization_curve, rod_demagnetizing_factor)
 from .magnets import (magnet_mass_for_torque, magnet_moment_per_mass, magnet_torque_per_mass,
                       permanent_magnet_min_mass)
+from .eddy_losses import (rod_eddy_power, rod_eddy_profile_coefficient, rod_eddy_torque, rod_eddy_torque_from_field,
+                          rod_to_shell_eddy_ratio, shell_eddy_torque, winding_damping_torque, winding_parameter)
 from .hysteresis import (hysteresis_damping_torque, hysteresis_loop_energy, hysteresis_response,
                          hysteresis_slope, limb_constants, limb_induction, limiting_loop_energy,
                          rod_cycle_energy, settled_hysteresis_loop)
 from .winding import (ampere_turns_power, coaxial_system_scale_for_power, helmholtz_pair_power, winding_mass,
                       winding_power, winding_resistance, winding_voltage)
 
-__all__ = ["limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
-           "rod_cycle_energy", "settled_hysteresis_loop", "limiting_loop_energy", "hysteresis_damping_torque", "SHAPES", "Turn", "WireSizes", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
+__all__ = ["rod_eddy_profile_coefficient", "rod_eddy_power", "rod_eddy_torque", "rod_eddy_torque_from_field",
+           "shell_eddy_torque", "rod_to_shell_eddy_ratio", "winding_parameter", "winding_damping_torque",
+           "limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
+           "rod_cycle_energy", "settled_hysteresis_loop", "limiting_loop_energy", "hysteresis_damping_torque",
+           "SHAPES", "Turn", "WireSizes", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
            "dipole_moment", "current_for_moment", "coil_current", "turn_resistance", "coil_resistance",
            "moment_from_voltage", "wire_area_for_moment", "joule_power", "joule_power_for_moment",
            "turns_from_winding_length", "winding_length", "joule_power_for_winding_length", "coil_mass",

@@ -30,8 +30,9 @@ def _significant_digits(value):
 
 
 def _digits(text):
-    """A seed line without decimal separators and spaces ('0,0223' and '0.0223' alike)."""
-    return text.replace(".", "").replace(",", "").replace(" ", "")
+    """A seed line without decimal separators and spaces ('0,0223' and '0.0223' alike; the OCR
+    also reads a decimal comma as ';', as in E44's '(1;4^2,8)-10^', seed line 228)."""
+    return text.replace(".", "").replace(",", "").replace(";", "").replace(" ", "")
 
 
 def test_thesis_measurements_have_provenance():
