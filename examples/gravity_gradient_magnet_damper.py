@@ -3,8 +3,9 @@ with a permanent magnet along it and a viscous spherical damper, 100 members on 
 
 The body's state is (q, ω, ω_d): attitude (body → inertial), body rate and the damper ball's
 rate, all in body axes. Torques: gravity gradient (Kovalenko (1975) eq. (4.18)), the magnet's
-m × B, and the damper's c(ω_d − ω); the ball feels the opposite torque (a free sphere of
-moment J_d, its inertial rate written in body axes: ω̇_d = −c(ω_d − ω)/J_d − ω × ω_d). Run:
+m × B, and the damper's c(ω_d − ω) (:func:`magbench.dynamics.viscous_damper_torque`); the ball
+feels the opposite torque (a free sphere of moment J_d, its inertial rate written in body axes:
+:func:`magbench.dynamics.spherical_damper_rhs`, Kovalenko's (5.19)–(5.22)). Run:
 ``python examples/gravity_gradient_magnet_damper.py``.
 """
 
@@ -22,12 +23,11 @@ def satellite_rhs(time, state, orbit, inertia, magnet, damper_inertia, damping):
     position = orbit.position(time)
     radial = kernels.rotate(q, position / np.linalg.norm(position, axis=-1, keepdims=True), -1.0)
     field = kernels.rotate(q, orbit.field(time), -1.0)
-    relative = damping * (wd - w)
-    torque = (kernels.gravity_gradient_torque(radial, inertia, orbit.mean_motion)
-              + kernels.cross(magnet, field) + relative)
-    wd_rate = -relative / damper_inertia - kernels.cross(w, wd)
-    return np.concatenate([kernels.quaternion_rate(q, w), kernels.euler_rates(w, torque, inertia), wd_rate],
-                          axis=-1)
+    torque = kernels.gravity_gradient_torque(radial, inertia, orbit.mean_motion) + kernels.cross(magnet, field)
+    coupling = kernels.viscous_damper_torque(wd - w, damping)
+    rates = kernels.spherical_damper_rhs(state[:, 4:], torque, np.zeros_like(torque), inertia, damper_inertia,
+                                         coupling)
+    return np.concatenate([kernels.quaternion_rate(q, w), rates], axis=-1)
 
 
 def run(members=100, orbits=2.0, step=5.0, seed=0, damping=2e-4, magnet=(0.0, 0.0, 0.01)):
