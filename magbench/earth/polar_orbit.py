@@ -100,7 +100,7 @@ def polar_field_direction_acceleration(argument_of_latitude, mean_motion=1.0):
     Examples
     --------
     >>> round(float(polar_field_direction_acceleration(np.pi / 4)), 6)
-    -2.4
+    -0.96
     """
     u = as_finite("argument_of_latitude", argument_of_latitude)
     n = as_positive("mean_motion", mean_motion, unit="rad/s")
