@@ -433,8 +433,13 @@ def _disturbance_ratio(u, inertia, inertia_difference, friction, mean_motion, eq
     return (kinematic + gravity - friction) / (equatorial_b * np.sqrt(1.0 + 3.0 * s2))
 
 
-def polar_error_factor():
+def polar_error_factor(tolerance=1e-12):
     r"""Largest value of 6 sin 2u/(1 + 3 sin²u)^{5/2} and where it is reached.
+
+    Parameters
+    ----------
+    tolerance : float, optional
+        Absolute tolerance on u of the search, > 0 [rad].
 
     Returns
     -------
@@ -447,12 +452,14 @@ def polar_error_factor():
     -----
     Kovalenko (1975) eqs. (6.73)–(6.74) (seed lines 146–147): J|η̈|/(LB) on a magnetopolar
     orbit is (ω0² J/(L B0)) 6 sin 2u/(1 + 3 sin²u)^{5/2}. Maximised with scipy's bounded
-    Brent search on (0, π/2) to 1e-12 rad.
+    Brent search on (0, π/2) (the function has one maximum there).
     """
+    xatol = float(as_positive("tolerance", tolerance, unit="rad"))
+
     def minus(u):
         return -6.0 * np.sin(2.0 * u) / (1.0 + 3.0 * np.sin(u) ** 2) ** 2.5
 
-    best = minimize_scalar(minus, bounds=(0.0, np.pi / 2), method="bounded", options={"xatol": 1e-12})
+    best = minimize_scalar(minus, bounds=(0.0, np.pi / 2), method="bounded", options={"xatol": xatol})
     return float(-best.fun), float(best.x)
 
 
