@@ -75,7 +75,6 @@ def simulate_planar(body, damper, mean_motion, equatorial_b, initial_angle, init
 
     Examples
     --------
-    >>> from magbench.dynamics import PlanarBody, PlanarDamper
     >>> run = simulate_planar(PlanarBody(650.0, 500.0), PlanarDamper(viscous=0.2), 1e-3, 2e-5,
     ...                       [0.0, 0.1], 0.0, 600.0, 10.0)
     >>> run.gamma.shape
