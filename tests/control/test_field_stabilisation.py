@@ -260,3 +260,21 @@ def test_e48_printed_6_78_value():
 def test_bad_input_is_refused_by_name(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def test_the_printed_values_used_here_are_the_data_files():
+    """The printed numbers of E47, E48 and E50 asserted above, as magbench/data/kovalenko/printed.csv
+    records them (value and half-unit resolution)."""
+    from magbench.io import load_printed
+
+    printed = load_printed("kovalenko")
+    used = {"kov-polar-eta1": (0.34, 0.005), "kov-polar-eta2": (0.075, 0.0005), "kov-polar-etaddot1": (1.36, 0.005),
+            "kov-polar-etaddot2": (1.20, 0.005), "kov-polar-gravity1": (0.88, 0.005),
+            "kov-polar-gravity2": (0.27, 0.005), "kov-polar-gravity3": (0.08, 0.005),
+            "kov-polar-error-factor": (1.92, 0.005), "kov-polar-error-factor-angle": (16, 0.5),
+            "kov-e47-disturbance-peak": (82, 0.5), "kov-e47-error-estimate": (9.5, 0.05),
+            "kov-e47-natural-frequency": (3.9, 0.05), "kov-e48-error-674": (6.5, 0.05),
+            "kov-e48-error-678": (2.75, 0.005)}
+    for key, (value, resolution) in used.items():
+        row = printed[key]
+        assert (row.value_low, row.resolution) == (value, resolution), key
