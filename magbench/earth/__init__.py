@@ -15,7 +15,7 @@ from .field_statistics import (dipole_max_field, field_direction_rate_range, fie
                                field_square_ratio, mean_square_field)
 from .field_cone import (cone_field_direction, field_cone_axis, field_cone_deviation, field_cone_half_angle,
                          field_cone_rate, orbit_field_direction)
-from .polar_orbit import (polar_field_b, polar_field_direction_acceleration, polar_field_direction_angle,
+from .polar_orbit import (polar_eccentric_coefficients, polar_field_b, polar_field_direction_acceleration, polar_field_direction_angle,
                           polar_field_direction_rate, polar_fourier_coefficients, polar_gravity_factor,
                           polar_orbit_acceleration, polar_orbit_rate)
 from .igrf import (IgrfDipole, IgrfField, decimal_year_to_datetime, igrf_dipole, igrf_field,
@@ -32,4 +32,4 @@ __all__ = ["geomagnetic_latitude", "geomagnetic_longitude", "dipole_equatorial_b
            "dipole_max_field", "mean_square_field", "field_square_ratio", "field_direction_rate_range",
            "field_magnitude_range", "polar_field_direction_angle", "polar_field_direction_rate",
            "polar_field_direction_acceleration", "polar_field_b", "polar_gravity_factor", "polar_fourier_coefficients",
-           "polar_orbit_rate", "polar_orbit_acceleration"]
+           "polar_orbit_rate", "polar_orbit_acceleration", "polar_eccentric_coefficients"]

@@ -15,7 +15,7 @@ from .._validate import as_count, as_finite, as_positive
 
 __all__ = ["polar_field_direction_angle", "polar_field_direction_rate", "polar_field_direction_acceleration",
            "polar_field_b", "polar_gravity_factor", "polar_fourier_coefficients", "polar_orbit_rate",
-           "polar_orbit_acceleration"]
+           "polar_orbit_acceleration", "polar_eccentric_coefficients"]
 
 #: The ratio of the three geometric series: every coefficient below is a power of 1/3.
 _Q = 1.0 / 3.0
@@ -249,6 +249,36 @@ def polar_orbit_acceleration(time, mean_motion, eccentricity):
     n = as_positive("mean_motion", mean_motion, unit="rad/s")
     e = _eccentricity(eccentricity)
     return -2.0 * e * n**2 * np.sin(n * t)
+
+
+def polar_eccentric_coefficients(count=3):
+    r"""First-order eccentricity terms of −η̈/ω0² on a magnetopolar orbit whose perigee is at the node.
+
+    Parameters
+    ----------
+    count : int, optional
+        How many terms, in sin ω0t, sin 3ω0t, … sin (2·count − 1)ω0t [-].
+
+    Returns
+    -------
+    ndarray, shape (count,)
+        c_k with −η̈/ω0² = Σ b_n sin 2nω0t + e Σ_k c_k sin (2k + 1)ω0t + O(e²):
+        c_k = (4/3)(2k + 1)² (1/3)^k, k = 0, 1, …: 1.333, 4.0, 3.704, 2.420 [-].
+
+    Notes
+    -----
+    Kovalenko (1975) eq. (6.34) (seed line 136) prints e(4.0 sin ω0t + 5.8 sin 3ω0t +
+    2.4 sin 5ω0t), from (6.33) differentiated with (6.30)–(6.31).
+
+    Not in the sources: the exact first-order terms. With the perigee at the ascending node
+    (u and the mean anomaly both ω0t, as the book writes), u = M + 2e sin M + O(e²), so
+    η(u) = η(M) + 2e sin M η'(M), η'(M) = 1 + 2 Σ (1/3)ⁿ cos 2nM; then
+    sin M η'(M) = sin M + Σ (1/3)ⁿ [sin (2n+1)M − sin (2n−1)M], and twice differentiated
+    the coefficient of sin (2k+1)M in η̈/ω0² is −2e (2k+1)² (1/3)^k (1 − 1/3). ν̈ of (6.31)
+    adds 2e sin ω0t more to −(η̈ + ν̈)/ω0² (the book's (6.39) has 6.0 = 4.0 + 2.0 there).
+    """
+    k = np.arange(as_count("count", count), dtype=float)
+    return 4.0 / 3.0 * (2.0 * k + 1.0) ** 2 * _Q**k
 
 
 def _eccentricity(eccentricity):
