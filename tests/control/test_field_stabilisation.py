@@ -263,7 +263,7 @@ def test_bad_input_is_refused_by_name(call, match):
 
 
 def test_the_printed_values_used_here_are_the_data_files():
-    """The printed numbers of E47, E48 and E50 asserted here and in tests/earth/test_polar_orbit.py, as magbench/data/kovalenko/printed.csv
+    """The printed numbers of E47, E48 and E50 asserted here, in tests/earth/test_polar_orbit.py and tests/sim/test_planar.py, as magbench/data/kovalenko/printed.csv
     records them (value and half-unit resolution)."""
     from magbench.io import load_printed
 
@@ -275,7 +275,8 @@ def test_the_printed_values_used_here_are_the_data_files():
             "kov-e47-disturbance-peak": (82, 0.5), "kov-e47-error-estimate": (9.5, 0.05),
             "kov-e47-natural-frequency": (3.9, 0.05), "kov-e48-error-674": (6.5, 0.05),
             "kov-e48-error-678": (2.75, 0.005), "kov-polar-etaddot-e1": (4.0, 0.05),
-            "kov-polar-etaddot-e3": (5.8, 0.05), "kov-polar-etaddot-e5": (2.4, 0.05)}
+            "kov-polar-etaddot-e3": (5.8, 0.05), "kov-polar-etaddot-e5": (2.4, 0.05),
+            "kov-e47-simulated-error": (17, 0.5), "kov-e47-simulated-angle": (40, 0.5)}
     for key, (value, resolution) in used.items():
         row = printed[key]
         assert (row.value_low, row.resolution) == (value, resolution), key

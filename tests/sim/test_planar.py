@@ -105,3 +105,31 @@ def test_bad_input_is_refused(kwargs, match):
     args.update(kwargs)
     with pytest.raises(ValueError, match=match):
         simulate_planar(**args)
+
+
+def _e47_run():
+    """E47 (seed line 147): h ≈ 1000 km, J = 650 / 250 kg·m², L = 500 A·m², k_д = 0.2 N·m·s;
+    Kovalenko's dipole 8.1e22 A·m²; ten orbits (the damping time 2J/k_д is one orbit)."""
+    from magbench.constants import EARTH_GM, EARTH_RADIUS, MU_0
+
+    r = EARTH_RADIUS + 1000e3
+    n, b0 = np.sqrt(EARTH_GM / r**3), MU_0 * 8.1e22 / (4 * np.pi * r**3)
+    period = 2 * np.pi / n
+    run = simulate_planar(PlanarBody(650.0, 500.0, 400.0), PlanarDamper(viscous=0.2), n, b0, 0.0, 0.0,
+                          10 * period, period / 200)
+    last = run.time > 8 * period
+    i = np.argmax(np.abs(run.gamma[last, 0]))
+    return np.degrees(abs(run.gamma[last, 0][i])), np.degrees((n * run.time[last][i]) % np.pi)
+
+
+def test_e47_fig_6_7_computed():
+    largest, where = _e47_run()
+    # Our run: 16.47° at u = 39.6° (mod 180°); step halved changes it by 1e-3°.
+    assert_allclose(largest, 16.47, atol=0.01)
+    assert_allclose(where, 40, atol=0.5)          # printed "ω0t ≈ 40°": agrees
+
+
+@pytest.mark.xfail(strict=True, reason="the integrated model's largest steady error is 16.47°, which rounds to 16, "
+                                       "0.03° outside the half unit of the printed 'about 17°' (read off Fig. 6.7)")
+def test_e47_fig_6_7_printed_17_degrees():
+    assert_allclose(_e47_run()[0], 17, atol=0.5)
