@@ -1,6 +1,7 @@
 r"""The control family's array kernels: the B-dot laws (and their compiled twin), the
-projected damping dipole and Kovalenko's relay spin law, unchecked. The rotor laws' program
-field is the Earth family's kernel (:func:`magbench.earth.kernels.orbital_dipole_b`, tilt 0).
+projected damping dipole, Kovalenko's relay spin law and his orienting laws for
+stabilisation along B (:mod:`magbench.control.field_stabilisation`), unchecked. The rotor
+laws' program field is the Earth family's kernel (:func:`magbench.earth.kernels.orbital_dipole_b`, tilt 0).
 
 The checked public functions of :mod:`magbench.control.spin` call these after checking
 their arguments; the simulations (:mod:`magbench.sim`) call them directly inside their

@@ -1,10 +1,11 @@
-r"""The dynamics family's array kernels: the rigid body, the gyrostat and the rod moment.
+r"""The dynamics family's array kernels: the rigid body, the gyrostat, the rod moment and the
+planar pitch model of a magnet-held body (Kovalenko §6.4).
 
 Unchecked, SI, Monte Carlo members on leading axes, vectors on a trailing axis of 3 (the
 layout of :mod:`magbench.dynamics`). The checked public functions of
-:mod:`~magbench.dynamics.rigid_body`, :mod:`~magbench.dynamics.gyrostat` and
-:mod:`~magbench.dynamics.torques` validate their inputs and call these; a simulator that has
-validated its inputs once calls them per step. Their docstrings name the checked function
+:mod:`~magbench.dynamics.rigid_body`, :mod:`~magbench.dynamics.gyrostat`,
+:mod:`~magbench.dynamics.torques` and :mod:`~magbench.dynamics.planar` validate their inputs
+and call these; a simulator that has validated its inputs once calls them per step. Their docstrings name the checked function
 that documents the physics.
 
 A compiled (numba) twin sits beside a numpy kernel where a solver calls a right-hand side once
