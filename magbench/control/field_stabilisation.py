@@ -350,7 +350,8 @@ def polar_forced_response(inertia, moment, field_b, viscous, mean_motion, inerti
 
     Notes
     -----
-    Kovalenko (1975) eqs. (6.62)–(6.64) (seed lines 144–145, the third harmonic on 145): γ̈ + 2bγ̇ + ω_c²γ = Σ A_k sin 2kω0t,
+    Kovalenko (1975) eqs. (6.62)–(6.64) (seed lines 144–145, the third harmonic on 145):
+    γ̈ + 2bγ̇ + ω_c²γ = Σ A_k sin 2kω0t,
     2b = k_д/J, ω_c² = LB/J. The book's arctg is taken as the two-argument arctangent, so
     that the phase passes π/2 at resonance instead of jumping.
 

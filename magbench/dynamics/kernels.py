@@ -5,8 +5,8 @@ Unchecked, SI, Monte Carlo members on leading axes, vectors on a trailing axis o
 layout of :mod:`magbench.dynamics`). The checked public functions of
 :mod:`~magbench.dynamics.rigid_body`, :mod:`~magbench.dynamics.gyrostat`,
 :mod:`~magbench.dynamics.torques` and :mod:`~magbench.dynamics.planar` validate their inputs
-and call these; a simulator that has validated its inputs once calls them per step. Their docstrings name the checked function
-that documents the physics.
+and call these; a simulator that has validated its inputs once calls them per step. Their
+docstrings name the checked function that documents the physics.
 
 A compiled (numba) twin sits beside a numpy kernel where a solver calls a right-hand side once
 per stage from Python (:func:`scipy.integrate.solve_ivp`): there a numpy kernel on one state

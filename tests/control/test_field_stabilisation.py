@@ -195,8 +195,8 @@ def test_e47_computed():
 def test_e47_printed_82_at_20_degrees_is_the_value_at_20_not_the_peak():
     n, b0 = _orbit(E47["altitude"])
     u = np.radians(20.0)
-    at_20 = (-E47["inertia"] * polar_field_direction_acceleration(u, n)
-             + planar_gravity_torque(polar_field_direction_angle(u), n, E47["inertia_difference"])) / polar_field_b(u, b0)
+    gravity = planar_gravity_torque(polar_field_direction_angle(u), n, E47["inertia_difference"])
+    at_20 = (-E47["inertia"] * polar_field_direction_acceleration(u, n) + gravity) / polar_field_b(u, b0)
     assert_allclose(at_20, 82, atol=0.5)          # printed digits: agrees at u = 20°
     # The printed γ_max from the printed 82 by (6.75): arcsin(82/500) = 9.44°.
     assert_allclose(np.degrees(np.arcsin(82 / 500)), 9.44, atol=0.005)
@@ -263,7 +263,8 @@ def test_bad_input_is_refused_by_name(call, match):
 
 
 def test_the_printed_values_used_here_are_the_data_files():
-    """The printed numbers of E47, E48 and E50 asserted here, in tests/earth/test_polar_orbit.py and tests/sim/test_planar.py, as magbench/data/kovalenko/printed.csv
+    """The printed numbers of E47, E48 and E50 asserted here, in tests/earth/test_polar_orbit.py and
+    tests/sim/test_planar.py, as magbench/data/kovalenko/printed.csv
     records them (value and half-unit resolution)."""
     from magbench.io import load_printed
 

@@ -48,7 +48,8 @@ def test_steady_forced_response_matches_the_linearised_solution():
 
 def test_elastic_damper_steady_response_matches_the_transfer_function():
     """(6.65)–(6.69): the body without a magnet of its own, held by an elastically coupled damper
-    magnet; the steady γ is the superposition of A_k |W(2kω0)| sin(2kω0t + φ_k) (40 harmonics: the 13th still moves γ by 1e-7 rad). Stiff
+    magnet; the steady γ is the superposition of A_k |W(2kω0)| sin(2kω0t + φ_k) (40 harmonics:
+    the 13th still moves γ by 1e-7 rad). Stiff
     enough (ω_yc² = 400 ω0², ω_c² = 900 ω0²) that γ1 ≈ 2e-3 rad and sin γ1 ≈ γ1; the
     slowest pole decays at 5.2 ω0 (e^(−5.2·4π) ≈ 1e-28 after two orbits)."""
     j = 150.0
