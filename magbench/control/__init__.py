@@ -5,7 +5,8 @@ L = m × B (:mod:`.allocation`), the loop's poles and limits (:mod:`.linear`) an
 readings of the thesis's unit-less gains (:mod:`.gain_readings`), and B-dot detumbling
 (:mod:`.bdot`, SamSat-218D and Kovalenko ch. 6), the rotor spacecraft's spin laws (:mod:`.spin`,
 rotor slides, and Kovalenko's relay spin law), Floquet analysis of periodic systems
-(:mod:`.floquet`) and the rotor's stability map (:mod:`.rotor_stability`); their unchecked
+(:mod:`.floquet`), stabilisation along B with Kovalenko's §6.5 estimates
+(:mod:`.field_stabilisation`) and the rotor's stability map (:mod:`.rotor_stability`); their unchecked
 array kernels are in :mod:`.kernels`. Re-exports the public names of its modules. The
 simulated loop moved to :mod:`magbench.sim.pid_loop`; its names are still served from here,
 imported on use.
@@ -14,6 +15,11 @@ imported on use.
 from .allocation import ALLOCATIONS, body_field_exact, body_field_small_angle, dipole_allocation
 from .bdot import (avanzini_giulietti_gain, bdot_dipole, bdot_dipole_projected, held_bdot_rate_limit,
                    kovalenko_detumble_time, samsat_gain)
+from .field_stabilisation import (capture_momentum, dry_detumble_time, dry_friction_torque, dry_transient_time,
+                                   elastic_damper_response, orienting_dipole, orienting_dipole_per_axis,
+                                   orienting_torque, polar_disturbance_peak, polar_error_factor,
+                                   polar_forced_response, polar_forcing_coefficients, steady_state_error_closed_form,
+                                   steady_state_error_estimate, viscous_detumble_time)
 from .floquet import degree_of_stability, finite_difference_monodromy, floquet_multipliers
 from .gain_readings import GAIN_READINGS, gain_reading_scale
 from .linear import (closed_loop_poles, closed_loop_polynomial, closed_loop_state_space, closed_loop_transfer,
@@ -37,4 +43,8 @@ __all__ = ["pid_step", "pid_gains_for_triple_pole", "ALLOCATIONS", "body_field_e
            "rotor_reference_torque", "rotor_spin_reference", "projected_damping_dipole", "slides_printed_damping_torque",
            "rotor_reference_momentum", "momentum_damping_dipole", "relay_spin_dipole", "floquet_multipliers",
            "finite_difference_monodromy", "degree_of_stability", "rotor_model_numbers", "rotor_linearised_matrices",
-           "rotor_floquet_multipliers", "rotor_stability_map"]
+           "rotor_floquet_multipliers", "rotor_stability_map", "orienting_dipole", "orienting_torque",
+           "orienting_dipole_per_axis", "viscous_detumble_time", "dry_detumble_time", "dry_friction_torque",
+           "capture_momentum", "dry_transient_time", "polar_forcing_coefficients", "polar_forced_response",
+           "elastic_damper_response", "polar_error_factor", "polar_disturbance_peak", "steady_state_error_estimate",
+           "steady_state_error_closed_form"]

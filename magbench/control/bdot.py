@@ -10,6 +10,7 @@ import numpy as np
 
 from .._validate import as_finite, as_in_range, as_positive, as_positive_or_infinite, as_vectors
 from . import kernels
+from .field_stabilisation import viscous_detumble_time
 
 __all__ = ["bdot_dipole", "bdot_dipole_projected", "avanzini_giulietti_gain", "samsat_gain", "kovalenko_detumble_time",
            "held_bdot_rate_limit"]
@@ -152,7 +153,7 @@ def kovalenko_detumble_time(inertia, gain, mean_square_field, initial_rate, fina
 
     Notes
     -----
-    Kovalenko (1975) eq. (6.50). The 2/3 is the mean of sin² of the angle between ω and B
+    Kovalenko (1975) eq. (6.50), :func:`magbench.control.viscous_detumble_time`. The 2/3 is the mean of sin² of the angle between ω and B
     over their relative directions (his averaging). It is unsaturated: a limited dipole
     lengthens the time (chapter 5 sets it beside the simulated envelope).
 
@@ -166,8 +167,7 @@ def kovalenko_detumble_time(inertia, gain, mean_square_field, initial_rate, fina
     b2 = as_positive("mean_square_field", mean_square_field, unit="T²")
     w0 = as_positive("initial_rate", initial_rate, unit="rad/s")
     w1 = as_positive("final_rate", final_rate, unit="rad/s")
-    damping = 2.0 / 3.0 * k * b2
-    return j / damping * np.log(w0 / w1)
+    return viscous_detumble_time(j, 2.0 / 3.0 * k * b2, w0, w1)
 
 
 def samsat_gain(max_dipole, initial_rate, max_field):

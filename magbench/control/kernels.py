@@ -1,6 +1,7 @@
 r"""The control family's array kernels: the B-dot laws (and their compiled twin), the
-projected damping dipole and Kovalenko's relay spin law, unchecked. The rotor laws' program
-field is the Earth family's kernel (:func:`magbench.earth.kernels.orbital_dipole_b`, tilt 0).
+projected damping dipole, Kovalenko's relay spin law and his orienting laws for
+stabilisation along B (:mod:`magbench.control.field_stabilisation`), unchecked. The rotor
+laws' program field is the Earth family's kernel (:func:`magbench.earth.kernels.orbital_dipole_b`, tilt 0).
 
 The checked public functions of :mod:`magbench.control.spin` call these after checking
 their arguments; the simulations (:mod:`magbench.sim`) call them directly inside their
@@ -111,3 +112,30 @@ def relay_dipole(field, moment, direction):
     bx, by = field[..., 0], field[..., 1]
     lx, ly = -level * np.copysign(1.0, by), level * np.copysign(1.0, bx)
     return np.stack(np.broadcast_arrays(lx, ly, 0.0 * lx), axis=-1)
+
+
+# Kovalenko's orienting laws for stabilisation along B (§6.2).
+__all__ += ["orienting_dipole", "orienting_dipole_per_axis"]
+
+
+def orienting_dipole(field, axis, gain):
+    """L0 = k̃0 [i0 B² − B(B·i0)]/B², k̃0 = k0 θ/|B × i0| (k0/|B| where B ∥ i0), B = field
+    (..., 3), i0 = axis a unit vector (..., 3), k0 = gain [N·m/rad] broadcasting over the
+    leading axes; no checks. The checked form, which documents the law, is
+    :func:`magbench.control.orienting_dipole`."""
+    b2 = np.sum(field * field, axis=-1)
+    along = np.sum(field * axis, axis=-1)
+    c = np.cross(field, axis)
+    sine = np.sqrt(np.sum(c * c, axis=-1))
+    theta = np.arctan2(sine, along)
+    ratio = np.where(sine > 0.0, theta / np.where(sine > 0.0, sine, 1.0), 1.0 / np.sqrt(b2))
+    scale = np.asarray(gain) * ratio
+    return scale[..., None] * (axis * b2[..., None] - field * along[..., None]) / b2[..., None]
+
+
+def orienting_dipole_per_axis(field, gains):
+    """(k0x(B_y² + B_z²), −k0y B_x B_y, −k0z B_x B_z) for i0 = x, B = field (..., 3), gains
+    (3,) or (..., 3); no checks. The checked form is
+    :func:`magbench.control.orienting_dipole_per_axis`."""
+    bx, by, bz = field[..., 0], field[..., 1], field[..., 2]
+    return gains * np.stack([by * by + bz * bz, -bx * by, -bx * bz], axis=-1)

@@ -2,7 +2,8 @@
 the swing of a suspended magnet (thesis §2.1), torques on a dipole (thesis §1.2), and the
 exchange of momentum and energy with the Earth (thesis §1.3), and the rigid spacecraft on
 orbit with SamSat-218D's attitude angles (chapter 5), the gyrostat with a coaxial rotor of the
-rotor slides (chapter 6), the axisymmetric body of TNS-0 (chapter 7). Pure functions, SI.
+rotor slides (chapter 6), the axisymmetric body of TNS-0 (chapter 7), the planar motion of a magnet-stabilised body on a
+magnetopolar orbit (Kovalenko §6.4). Pure functions, SI.
 
 Re-exports the public names of its modules.
 """
@@ -21,6 +22,7 @@ from .energy_exchange import momentum_exchange_energy_ratio, thesis_energy_ratio
 from .pendulum import (Mockup, amplitude_for_period, body_rates_313, euler_313_matrix, field_for_period,
                        mockup_loads, mockup_rhs, natural_frequency, pendulum_energy, pendulum_peak_rate, pendulum_period, pendulum_rhs,
                        plant_step, small_angle_period, thread_center_of_mass, two_coil_rhs, two_coil_torque)
+from .planar import PlanarBody, PlanarDamper, planar_energy, planar_gravity_torque, planar_rhs
 from .rigid_body import euler_rates, gravity_gradient_torque, quaternion_rate, rotate_to_body, rotate_to_inertial
 from .swing import oscillation_field_h, oscillation_moment
 from .torques import (axial_magnet_torque, hysteresis_rod_moment, magnetic_torque, magnetic_torque_from_h,
@@ -43,4 +45,5 @@ __all__ = ["momentum_exchange_energy_ratio", "thesis_energy_ratio", "two_coil_to
            "spherical_shell_eddy_coefficient", "spherical_shell_time_constant", "spherical_shell_eddy_torque",
            "solid_sphere_eddy_coefficient", "cylinder_eddy_coefficients", "eddy_despin_time_constant",
            "shell_despin_time_constant",
-           "viscous_damper_torque", "dry_friction_damper_torque", "spherical_damper_rhs", "spherical_damper_energy"]
+           "viscous_damper_torque", "dry_friction_damper_torque", "spherical_damper_rhs", "spherical_damper_energy",
+           "PlanarBody", "PlanarDamper", "planar_rhs", "planar_gravity_torque", "planar_energy"]

@@ -1,11 +1,12 @@
-r"""The dynamics family's array kernels: the rigid body, the gyrostat and the rod moment.
+r"""The dynamics family's array kernels: the rigid body, the gyrostat, the rod moment and the
+planar pitch model of a magnet-held body (Kovalenko §6.4).
 
 Unchecked, SI, Monte Carlo members on leading axes, vectors on a trailing axis of 3 (the
 layout of :mod:`magbench.dynamics`). The checked public functions of
-:mod:`~magbench.dynamics.rigid_body`, :mod:`~magbench.dynamics.gyrostat` and
-:mod:`~magbench.dynamics.torques` validate their inputs and call these; a simulator that has
-validated its inputs once calls them per step. Their docstrings name the checked function
-that documents the physics.
+:mod:`~magbench.dynamics.rigid_body`, :mod:`~magbench.dynamics.gyrostat`,
+:mod:`~magbench.dynamics.torques` and :mod:`~magbench.dynamics.planar` validate their inputs
+and call these; a simulator that has validated its inputs once calls them per step. Their
+docstrings name the checked function that documents the physics.
 
 A compiled (numba) twin sits beside a numpy kernel where a solver calls a right-hand side once
 per stage from Python (:func:`scipy.integrate.solve_ivp`): there a numpy kernel on one state
@@ -258,3 +259,27 @@ def rotor_reduced_rates(x, t1, t2, t3, a):
         w2 / cb - 1.0, w3, t1,
         -h * w3 + w2 * w3 * tb + t2 - 3.0 * (a - 1.0) * sa * ca * cb,
         h * w2 - w2**2 * tb + t3 + 3.0 * (a - 1.0) * sa**2 * sb * cb))
+
+
+# The planar (pitch) motion of a body held along B on a magnetopolar orbit (Kovalenko §6.4).
+__all__ += ["planar_rates"]
+
+
+def planar_rates(state, field_angle, field_angle_acceleration, field_b, mean_motion, body, damper):
+    """(γ̇, γ̈, γ̇1) of the planar model, state (..., 3) = (γ, γ̇, γ1), members on the leading
+    axes; body = (J, L, ΔJ), damper = (k_д, M_T, friction_rate, c, L_y), each a scalar or an
+    array over the members; no checks. The checked form, which documents the equations, is
+    :func:`magbench.dynamics.planar_rhs`."""
+    gamma, rate, gamma1 = state[..., 0], state[..., 1], state[..., 2]
+    inertia, moment, inertia_difference = body
+    viscous, friction, friction_rate, stiffness, damper_moment = damper
+    elastic = np.asarray(damper_moment) > 0.0
+    held = -viscous * rate - friction * np.tanh(rate / friction_rate)
+    magnet = damper_moment * field_b * np.sin(gamma1)
+    damper_torque = np.where(elastic, -magnet, held)
+    safe = np.where(elastic, viscous, 1.0)
+    rate1 = np.where(elastic, rate + (stiffness * (gamma - gamma1) - magnet) / safe, 0.0)
+    torque = (-moment * field_b * np.sin(gamma)
+              + 1.5 * mean_motion**2 * inertia_difference * np.sin(2.0 * (field_angle + gamma)) + damper_torque)
+    acceleration = torque / inertia - field_angle_acceleration
+    return np.stack(np.broadcast_arrays(rate, acceleration, rate1), axis=-1)

@@ -1,5 +1,5 @@
 """The Earth's field: the centred dipole and geomagnetic coordinates, the field along an
-orbit (and a circular orbit with the dipole field along it, the cone its direction sweeps), and the IGRF-14 model (through ppigrf). Pure functions of numpy arrays, SI.
+orbit (and a circular orbit with the dipole field along it, the cone its direction sweeps, the field's direction on a magnetopolar orbit), and the IGRF-14 model (through ppigrf). Pure functions of numpy arrays, SI.
 
 Re-exports the public names of its modules.
 """
@@ -15,6 +15,9 @@ from .field_statistics import (dipole_max_field, field_direction_rate_range, fie
                                field_square_ratio, mean_square_field, mean_square_perpendicular_field)
 from .field_cone import (cone_field_direction, field_cone_axis, field_cone_deviation, field_cone_half_angle,
                          field_cone_rate, orbit_field_direction)
+from .polar_orbit import (polar_eccentric_coefficients, polar_field_b, polar_field_direction_acceleration, polar_field_direction_angle,
+                          polar_field_direction_rate, polar_fourier_coefficients, polar_gravity_factor,
+                          polar_orbit_acceleration, polar_orbit_rate)
 from .igrf import (IgrfDipole, IgrfField, decimal_year_to_datetime, igrf_dipole, igrf_field,
                    igrf_gauss_coefficients, igrf_mean_surface_b)
 
@@ -26,5 +29,7 @@ __all__ = ["geomagnetic_latitude", "geomagnetic_longitude", "dipole_equatorial_b
            "decimal_year_to_datetime", "igrf_dipole", "igrf_field", "igrf_mean_surface_b",
            "igrf_gauss_coefficients", "CircularOrbit", "field_cone_half_angle", "field_cone_axis",
            "orbit_field_direction", "cone_field_direction", "field_cone_deviation", "field_cone_rate",
-           "dipole_max_field", "mean_square_field", "mean_square_perpendicular_field", "field_square_ratio", "field_direction_rate_range",
-           "field_magnitude_range"]
+           "dipole_max_field", "mean_square_field", "mean_square_perpendicular_field", "field_square_ratio",
+           "field_direction_rate_range", "field_magnitude_range", "polar_field_direction_angle", "polar_field_direction_rate",
+           "polar_field_direction_acceleration", "polar_field_b", "polar_gravity_factor", "polar_fourier_coefficients",
+           "polar_orbit_rate", "polar_orbit_acceleration", "polar_eccentric_coefficients"]
