@@ -22,6 +22,7 @@ from .energy_exchange import momentum_exchange_energy_ratio, thesis_energy_ratio
 from .pendulum import (Mockup, amplitude_for_period, body_rates_313, euler_313_matrix, field_for_period,
                        mockup_loads, mockup_rhs, natural_frequency, pendulum_energy, pendulum_peak_rate, pendulum_period, pendulum_rhs,
                        plant_step, small_angle_period, thread_center_of_mass, two_coil_rhs, two_coil_torque)
+from .libration import libration_angles
 from .planar import PlanarBody, PlanarDamper, planar_energy, planar_gravity_torque, planar_rhs
 from .rigid_body import euler_rates, gravity_gradient_torque, quaternion_rate, rotate_to_body, rotate_to_inertial
 from .swing import oscillation_field_h, oscillation_moment
@@ -30,7 +31,7 @@ from .torques import (axial_magnet_torque, hysteresis_rod_moment, magnetic_torqu
 from .axisymmetric import (body_rate_from_momentum, conical_rotation_angle, conical_rotation_rate, euler_case_angles,
                            euler_case_matrix, euler_case_rates, momentum_and_nutation)
 
-__all__ = ["momentum_exchange_energy_ratio", "thesis_energy_ratio", "two_coil_torque", "Mockup",
+__all__ = ["libration_angles", "momentum_exchange_energy_ratio", "thesis_energy_ratio", "two_coil_torque", "Mockup",
            "euler_313_matrix", "thread_center_of_mass", "mockup_loads", "body_rates_313", "pendulum_rhs", "two_coil_rhs", "mockup_rhs", "plant_step",
            "pendulum_energy", "natural_frequency", "small_angle_period", "pendulum_period",
            "pendulum_peak_rate", "field_for_period", "amplitude_for_period", "magnetic_torque",

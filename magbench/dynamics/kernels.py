@@ -24,7 +24,7 @@ from ..rotations import hamilton_product
 __all__ = ["cross", "rotate", "quaternion_rate", "apply_inertia", "euler_rates", "gravity_gradient_torque",
            "gyrostat_rates", "gyrostat_rhs", "rod_moment", "gyrostat_turning_field_rhs", "eddy_torque",
            "anisotropic_eddy_torque", "spherical_shell_eddy_torque", "viscous_damper_torque",
-           "dry_friction_damper_torque", "spherical_damper_rhs"]
+           "dry_friction_damper_torque", "spherical_damper_rhs", "libration_angles"]
 
 
 def cross(a, b):
@@ -148,6 +148,15 @@ def spherical_damper_rhs(state, body_torque, ball_torque, j, ball_inertia, coupl
     w_rate = euler_rates(w, coupled, j)
     wd_rate = (ball_torque - coupling) / np.asarray(ball_inertia)[..., None] - cross(w, wd)
     return np.concatenate([w_rate, wd_rate], axis=-1)
+
+
+def libration_angles(q, orbital_axes):
+    """(pitch, roll, total) of the body z axis from the local vertical, shape (..., 3); the
+    checked form is :func:`magbench.dynamics.libration_angles`."""
+    boom = rotate(q, np.array([0.0, 0.0, 1.0]), 1.0)
+    b = np.einsum("...ij,...j->...i", orbital_axes, boom)
+    return np.stack([np.arctan2(b[..., 0], b[..., 2]), np.arcsin(np.clip(b[..., 1], -1.0, 1.0)),
+                     np.arccos(np.clip(b[..., 2], -1.0, 1.0))], axis=-1)
 
 
 # The unused tensor slots of gyrostat_rates_scalar's inertia for principal moments.
