@@ -7,7 +7,8 @@ whose step follows the rate: :mod:`.detumble_segments`), the spinning spacecraft
 :mod:`.turning_field`, its variants beyond the slides :mod:`.rotor_variants`), Kovalenko's relay spin
 correction (:mod:`.spin_correction`) and the passive magnetic satellite (:mod:`.passive`, its flat
 spin's energy balance :mod:`.passive_balance`, its final regime :mod:`.passive_regime`), and the planar pitch motion of a magnet-held body on a
-magnetopolar orbit (:mod:`.planar`).
+magnetopolar orbit (:mod:`.planar`), and the gravity-gradient boom with a magnetic libration
+damper (:mod:`.libration`).
 
 Re-exports the integrator, the result type, the mock-up's PID loop, detumbling, the spinning
 spacecraft and the passive satellite; the bench loop is imported from its package.
@@ -21,6 +22,7 @@ from .pid_loop import PidLoop, loop_torque, pid_continuous_rhs, simulate_pid
 from .passive import PassiveRun, PassiveSatellite, initial_passive_state, simulate_passive
 from .passive_regime import orbit_mean_field, passive_final_regime, passive_transition_times
 from .passive_balance import flat_spin_decay_rate
+from .libration import LibrationSatellite, simulate_libration
 from .planar import simulate_planar
 from .result import SimulationResult
 from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimensionless, rotor_finite_difference_monodromy,
@@ -46,4 +48,4 @@ __all__ = ["rk4_step", "SimulationResult", "simulate_free_swing", "integrated_sw
            "rotor_satellite_with_products", "reference_momentum_rate_offset", "normalised_pointing_error",
            "maxima_per_orbit", "pointing_error_orbit_maxima", "tilted_dipole_pointing_error",
            "symmetric_rotor_orbit_maxima", "relay_spin_correction", "relay_spin_torque_over_turn",
-           "simulate_planar"]
+           "simulate_planar", "LibrationSatellite", "simulate_libration"]
