@@ -156,12 +156,18 @@ def simulate_libration(satellite, orbit, initial_pitch, initial_roll, duration, 
         raise ValueError(f"record_interval must be a whole number of steps ({h} s), got {record_interval!r}")
     every = int(round(every))
     phase = np.atleast_1d(np.asarray(orbit.argument_of_latitude0, dtype=float))
-    pitch, roll = np.broadcast_arrays(np.atleast_1d(as_finite("initial_pitch", initial_pitch)),
-                                      np.atleast_1d(as_finite("initial_roll", initial_roll)), phase)[:2]
+    pitch0 = np.atleast_1d(as_finite("initial_pitch", initial_pitch))
+    roll0 = np.atleast_1d(as_finite("initial_roll", initial_roll))
+    rate0 = as_finite("initial_rate", initial_rate)
+    try:
+        pitch, roll = np.broadcast_arrays(pitch0, roll0, phase)[:2]
+        rate = np.broadcast_to(rate0[..., None] if rate0.ndim == 0 else rate0, pitch.shape + (3,))
+    except ValueError:
+        raise ValueError(f"initial_pitch {pitch0.shape}, initial_roll {roll0.shape}, the orbit's phases "
+                         f"{phase.shape} and initial_rate {rate0.shape} (scalar, (3,) or (M, 3)) must agree on "
+                         "the members M") from None
     if pitch.ndim != 1:
         raise ValueError(f"initial_pitch and initial_roll must be scalars or shape (M,), got shape {pitch.shape}")
-    rate = np.broadcast_to(as_finite("initial_rate", initial_rate), pitch.shape + (3,)) if np.ndim(
-        initial_rate) else np.full(pitch.shape + (3,), float(as_finite("initial_rate", initial_rate)))
     steps = int(np.ceil(total / h - 1e-9))
     check_member_steps(pitch.size, steps)
     state = _initial_state(orbit, pitch, roll, rate)

@@ -130,5 +130,9 @@ def test_bad_run_is_refused_by_name(orbit):
         simulate_libration(sat, orbit, 0.1, 0.0, 100.0, 10.0, record_interval=15.0)
     with pytest.raises(ValueError, match="step must be > 0"):
         simulate_libration(sat, orbit, 0.1, 0.0, 100.0, -1.0)
+    with pytest.raises(ValueError, match="must agree on the members"):
+        simulate_libration(sat, orbit, [0.1, 0.2], [0.0, 0.1, 0.2], 100.0, 10.0)
+    with pytest.raises(ValueError, match="initial_rate"):
+        simulate_libration(sat, orbit, 0.1, 0.0, 100.0, 10.0, initial_rate=[1.0, 2.0])
     with pytest.raises(ValueError, match="satellite must be a LibrationSatellite"):
         simulate_libration(INERTIA, orbit, 0.1, 0.0, 100.0, 10.0)
