@@ -9,6 +9,7 @@ Kovalenko (1975) §6.2, eqs. (6.8)–(6.14) (seed lines 127–129) and §6.5, eq
 import numpy as np
 from scipy.optimize import minimize_scalar
 
+from .._docstrings import fill_docstring
 from .._validate import as_count, as_finite, as_nonnegative, as_positive, as_vectors
 from ..earth.polar_orbit import polar_fourier_coefficients
 from . import kernels
@@ -17,6 +18,23 @@ __all__ = ["orienting_dipole", "orienting_torque", "orienting_dipole_per_axis", 
            "dry_detumble_time", "dry_friction_torque", "capture_momentum", "dry_transient_time",
            "polar_forcing_coefficients", "polar_forced_response", "elastic_damper_response", "polar_error_factor",
            "polar_disturbance_peak", "steady_state_error_estimate", "steady_state_error_closed_form"]
+
+#: Parameters described once for the functions that share them (:func:`magbench._docstrings.fill_docstring`).
+_STABILISATION_PARAMETERS = {
+    "field": """field : array_like, shape (..., 3)
+    B in body axes, not zero [T].""",
+    "field_b": """field_b : array_like
+    B > 0 [T].""",
+    "inertia": """inertia : array_like
+    J > 0 [kg·m²].""",
+    "initial_rate": """initial_rate : array_like
+    ω_н > 0 [rad/s].""",
+    "mean_motion": """mean_motion : array_like
+    ω0 > 0 [rad/s].""",
+    "moment": """moment : array_like
+    L ≥ 0 [A·m²].""",
+}
+_document_stabilisation = fill_docstring(_STABILISATION_PARAMETERS)
 
 #: Kovalenko's printed forcing coefficients of (6.62): A_k = ω0² (a_k + g_k ΔJ/J).
 PRINTED_FORCING = ((1.36, 1.32), (1.2, 0.4), (0.0, 0.13))
@@ -37,13 +55,13 @@ def _nonzero_field(field):
     return b
 
 
+@_document_stabilisation
 def orienting_dipole(field, axis, gain):
     r"""Kovalenko's orienting dipole: turn the body axis i0 toward B with a torque k0 θ.
 
     Parameters
     ----------
-    field : array_like, shape (..., 3)
-        B in body axes, not zero [T].
+    {field}
     axis : array_like, shape (..., 3)
         i0, the body's orientation axis; normalised here [-].
     gain : array_like
@@ -70,13 +88,13 @@ def orienting_dipole(field, axis, gain):
     return kernels.orienting_dipole(_nonzero_field(field), _unit_axis(axis), k)
 
 
+@_document_stabilisation
 def orienting_torque(field, axis, gain):
     r"""Torque of Kovalenko's orienting dipole.
 
     Parameters
     ----------
-    field : array_like, shape (..., 3)
-        B in body axes, not zero [T].
+    {field}
     axis : array_like, shape (..., 3)
         i0; normalised here [-].
     gain : array_like
@@ -122,17 +140,16 @@ def orienting_dipole_per_axis(field, gains):
                                              as_nonnegative("gains", gains, unit="A·m²/T²"))
 
 
+@_document_stabilisation
 def viscous_detumble_time(inertia, viscous, initial_rate, final_rate):
     r"""Time for a viscous damper to slow the body from ω_н to ω_к.
 
     Parameters
     ----------
-    inertia : array_like
-        J > 0 [kg·m²].
+    {inertia}
     viscous : array_like
         k_д > 0, the damping coefficient [N·m·s].
-    initial_rate : array_like
-        ω_н > 0 [rad/s].
+    {initial_rate}
     final_rate : array_like
         ω_к > 0 [rad/s].
 
@@ -154,17 +171,16 @@ def viscous_detumble_time(inertia, viscous, initial_rate, final_rate):
     return j / k * np.log(w0 / w1)
 
 
+@_document_stabilisation
 def dry_detumble_time(inertia, friction, initial_rate, final_rate=0.0):
     r"""Time for a dry-friction damper to slow the body from ω_н to ω_к.
 
     Parameters
     ----------
-    inertia : array_like
-        J > 0 [kg·m²].
+    {inertia}
     friction : array_like
         M_T > 0, the friction torque [N·m].
-    initial_rate : array_like
-        ω_н > 0 [rad/s].
+    {initial_rate}
     final_rate : array_like, optional
         ω_к, in [0, ω_н] [rad/s].
 
@@ -215,17 +231,13 @@ def dry_friction_torque(damper_moment, mean_b, angle):
     return ly * b * np.sin(a)
 
 
+@_document_stabilisation
 def capture_momentum(inertia, moment, field_b, capture_angle):
     r"""Angular momentum of a magnet-held body passing B after a capture at rest.
 
     Parameters
     ----------
-    inertia : array_like
-        J > 0 [kg·m²].
-    moment : array_like
-        L ≥ 0 [A·m²].
-    field_b : array_like
-        B > 0 [T].
+    {inertia, moment, field_b}
     capture_angle : array_like
         γ0, the angle from B at capture (γ̇ = 0) [rad].
 
@@ -245,17 +257,13 @@ def capture_momentum(inertia, moment, field_b, capture_angle):
     return np.sqrt(2.0 * m * b * j * (1.0 - np.cos(g0)))
 
 
+@_document_stabilisation
 def dry_transient_time(inertia, moment, field_b, capture_angle, friction):
     r"""Duration of the transient with a dry-friction damper after capture by the field.
 
     Parameters
     ----------
-    inertia : array_like
-        J > 0 [kg·m²].
-    moment : array_like
-        L ≥ 0 [A·m²].
-    field_b : array_like
-        B > 0 [T].
+    {inertia, moment, field_b}
     capture_angle : array_like
         γ0 [rad].
     friction : array_like
@@ -275,17 +283,16 @@ def dry_transient_time(inertia, moment, field_b, capture_angle, friction):
     return capture_momentum(inertia, moment, field_b, capture_angle) / m_t
 
 
+@_document_stabilisation
 def polar_forcing_coefficients(inertia, inertia_difference, mean_motion, count=3, printed=False):
     r"""Amplitudes A_k of the harmonic forcing sin 2kω0t of the linearised pitch equation.
 
     Parameters
     ----------
-    inertia : array_like
-        J > 0 [kg·m²].
+    {inertia}
     inertia_difference : array_like
         ΔJ = J_transverse − J_axial [kg·m²].
-    mean_motion : array_like
-        ω0 > 0 [rad/s].
+    {mean_motion}
     count : int, optional
         Harmonics k = 1 … count (at most 3 when ``printed``) [-].
     printed : bool, optional
@@ -319,22 +326,21 @@ def polar_forcing_coefficients(inertia, inertia_difference, mean_motion, count=3
     return n**2 * np.stack(np.broadcast_arrays(*rows))
 
 
+@_document_stabilisation
 def polar_forced_response(inertia, moment, field_b, viscous, mean_motion, inertia_difference=0.0, count=3,
                           printed=False):
     r"""Steady forced pitch oscillation of a magnet-held body with a viscous damper.
 
     Parameters
     ----------
-    inertia : array_like
-        J > 0 [kg·m²].
+    {inertia}
     moment : array_like
         L > 0 [A·m²].
     field_b : array_like
         B > 0, the field in ω_c² = LB/J (the book takes B0) [T].
     viscous : array_like
         k_д ≥ 0 [N·m·s].
-    mean_motion : array_like
-        ω0 > 0 [rad/s].
+    {mean_motion}
     inertia_difference : array_like, optional
         ΔJ [kg·m²].
     count : int, optional
@@ -374,6 +380,7 @@ def polar_forced_response(inertia, moment, field_b, viscous, mean_motion, inerti
     return forcing / np.hypot(real, imag), np.arctan2(imag, real)
 
 
+@_document_stabilisation
 def elastic_damper_response(forcing, frequency, inertia, stiffness, viscous, damper_moment, field_b):
     r"""Forced response of a body whose orienting magnet is an elastically coupled viscous damper.
 
@@ -383,16 +390,14 @@ def elastic_damper_response(forcing, frequency, inertia, stiffness, viscous, dam
         A, the amplitude of the forcing (torque/J) [rad/s²].
     frequency : array_like
         ω of the forcing, 2kω0 for the k-th harmonic [rad/s].
-    inertia : array_like
-        J > 0 [kg·m²].
+    {inertia}
     stiffness : array_like
         c ≥ 0 [N·m/rad].
     viscous : array_like
         k_д > 0 [N·m·s].
     damper_moment : array_like
         L_y > 0, the damper's magnet [A·m²].
-    field_b : array_like
-        B > 0 [T].
+    {field_b}
 
     Returns
     -------
@@ -549,17 +554,16 @@ def steady_state_error_estimate(inertia, moment, mean_motion, equatorial_b, iner
     return float(np.arcsin(max(peak, 0.0) / m))
 
 
+@_document_stabilisation
 def steady_state_error_closed_form(inertia, moment, mean_motion, equatorial_b):
     r"""Kovalenko's closed-form error bound arcsin(1.903 ω0² J/(L B0)).
 
     Parameters
     ----------
-    inertia : array_like
-        J > 0 [kg·m²].
+    {inertia}
     moment : array_like
         L > 0 [A·m²].
-    mean_motion : array_like
-        ω0 > 0 [rad/s].
+    {mean_motion}
     equatorial_b : array_like
         B0 > 0 [T].
 

@@ -15,6 +15,7 @@ shape, size and conductivity; the torque is m × B and the power it takes from t
 
 import numpy as np
 
+from .._docstrings import fill_docstring
 from .._validate import as_finite, as_nonnegative, as_positive, as_vectors
 from ..constants import MU_0
 from . import kernels
@@ -23,16 +24,31 @@ __all__ = ["eddy_torque", "eddy_torque_components", "anisotropic_eddy_torque", "
            "spherical_shell_time_constant", "spherical_shell_eddy_torque", "solid_sphere_eddy_coefficient",
            "cylinder_eddy_coefficients", "eddy_despin_time_constant", "shell_despin_time_constant"]
 
+#: Parameters described once for the functions that share them (:func:`magbench._docstrings.fill_docstring`).
+_EDDY_PARAMETERS = {
+    "b": """b : array_like, shape (..., 3)
+    Flux density **B**₀ in the same axes [T].""",
+    "conductivity": """conductivity : float or array_like
+    Conductivity σ > 0 [S/m].""",
+    "inertia": """inertia : float or array_like
+    Moment of inertia about the spin axis J > 0 [kg·m²].""",
+    "radius": """radius : float or array_like
+    Shell radius a > 0 [m].""",
+    "rate": """rate : array_like, shape (..., 3)
+    Body angular velocity **ω**, body axes [rad/s].""",
+    "thickness": """thickness : float or array_like
+    Wall thickness d > 0, d < a [m].""",
+}
+_document_eddy = fill_docstring(_EDDY_PARAMETERS)
 
+
+@_document_eddy
 def eddy_torque(rate, b, coefficient):
     r"""Eddy-current torque on an isotropic conducting body spinning in a uniform field.
 
     Parameters
     ----------
-    rate : array_like, shape (..., 3)
-        Body angular velocity **ω**, body axes [rad/s].
-    b : array_like, shape (..., 3)
-        Flux density **B**₀ in the same axes [T].
+    {rate, b}
     coefficient : float or array_like
         Eddy coefficient k_в ≥ 0 [N·m·s/T²] (:func:`spherical_shell_eddy_coefficient`,
         :func:`solid_sphere_eddy_coefficient`).
@@ -99,13 +115,13 @@ def eddy_torque_components(rate, b, coefficient):
     return -k * b2 * speed * sin2, k * b2 * speed * np.sqrt(sin2) * np.abs(cos_a)
 
 
+@_document_eddy
 def anisotropic_eddy_torque(rate, b, coefficients):
     r"""Eddy-current torque on a body whose eddy polarisability differs between its axes.
 
     Parameters
     ----------
-    rate : array_like, shape (..., 3)
-        Body angular velocity **ω**, body axes [rad/s].
+    {rate}
     b : array_like, shape (..., 3)
         Flux density **B**₀ in body axes [T].
     coefficients : array_like, shape (..., 3)
@@ -137,13 +153,13 @@ def anisotropic_eddy_torque(rate, b, coefficients):
     return kernels.anisotropic_eddy_torque(w, bb, g)
 
 
+@_document_eddy
 def spherical_shell_eddy_coefficient(radius, thickness, conductivity):
     r"""Low-frequency eddy coefficient of a thin conducting spherical shell.
 
     Parameters
     ----------
-    radius : float or array_like
-        Shell radius a > 0 [m].
+    {radius}
     thickness : float or array_like
         Wall thickness d > 0, d ≪ a [m].
     conductivity : float or array_like
@@ -180,13 +196,13 @@ def spherical_shell_eddy_coefficient(radius, thickness, conductivity):
     return 2.0 * np.pi / 3.0 * s * d * a ** 4
 
 
+@_document_eddy
 def spherical_shell_time_constant(radius, thickness, conductivity):
     r"""L/R time constant of a thin conducting spherical shell.
 
     Parameters
     ----------
-    radius : float or array_like
-        Shell radius a > 0 [m].
+    {radius}
     thickness : float or array_like
         Wall thickness d > 0 [m].
     conductivity : float or array_like
@@ -210,6 +226,7 @@ def spherical_shell_time_constant(radius, thickness, conductivity):
     return MU_0 * s * d * a / 3.0
 
 
+@_document_eddy
 def spherical_shell_eddy_torque(rate, b, radius, thickness, conductivity):
     r"""Eddy torque on a thin spherical shell spinning in a uniform field, at any frequency.
 
@@ -217,14 +234,7 @@ def spherical_shell_eddy_torque(rate, b, radius, thickness, conductivity):
     ----------
     rate : array_like, shape (..., 3)
         Shell angular velocity **ω**, body axes [rad/s].
-    b : array_like, shape (..., 3)
-        Flux density **B**₀ in the same axes [T].
-    radius : float or array_like
-        Shell radius a > 0 [m].
-    thickness : float or array_like
-        Wall thickness d > 0, d < a [m].
-    conductivity : float or array_like
-        Conductivity σ > 0 [S/m].
+    {b, radius, thickness, conductivity}
 
     Returns
     -------
@@ -250,6 +260,7 @@ def spherical_shell_eddy_torque(rate, b, radius, thickness, conductivity):
     return kernels.spherical_shell_eddy_torque(w, bb, k, tau)
 
 
+@_document_eddy
 def solid_sphere_eddy_coefficient(radius, conductivity):
     r"""Low-frequency eddy coefficient of a solid conducting sphere.
 
@@ -257,8 +268,7 @@ def solid_sphere_eddy_coefficient(radius, conductivity):
     ----------
     radius : float or array_like
         Sphere radius a > 0 [m].
-    conductivity : float or array_like
-        Conductivity σ > 0 [S/m].
+    {conductivity}
 
     Returns
     -------
@@ -278,6 +288,7 @@ def solid_sphere_eddy_coefficient(radius, conductivity):
     return 2.0 * np.pi / 15.0 * s * a ** 5
 
 
+@_document_eddy
 def cylinder_eddy_coefficients(radius, length, thickness, conductivity):
     r"""Low-frequency eddy coefficients of a thin open cylindrical shell (no end caps).
 
@@ -289,8 +300,7 @@ def cylinder_eddy_coefficients(radius, length, thickness, conductivity):
         Cylinder length l > 0 [m].
     thickness : float or array_like
         Wall thickness τ > 0, τ ≪ r [m].
-    conductivity : float or array_like
-        Conductivity σ > 0 [S/m].
+    {conductivity}
 
     Returns
     -------
@@ -324,13 +334,13 @@ def cylinder_eddy_coefficients(radius, length, thickness, conductivity):
     return base * (1.0 - 2.0 * r / l * np.tanh(l / (2.0 * r))), 0.5 * base
 
 
+@_document_eddy
 def eddy_despin_time_constant(inertia, coefficient, mean_square_perpendicular_b):
     r"""Time constant of the exponential spin decay that eddy currents alone cause.
 
     Parameters
     ----------
-    inertia : float or array_like
-        Moment of inertia about the spin axis J > 0 [kg·m²].
+    {inertia}
     coefficient : float or array_like
         Eddy coefficient about that axis, k_в > 0 [N·m·s/T²] (for an anisotropic body the
         Γ of the plane across the spin axis averaged over a turn, e.g. ½(Γ⊥ + Γ∥) for a
@@ -357,19 +367,13 @@ def eddy_despin_time_constant(inertia, coefficient, mean_square_perpendicular_b)
     return j / (k * b2)
 
 
+@_document_eddy
 def shell_despin_time_constant(inertia, radius, thickness, conductivity, orbit, axis=None):
     r"""Spin-decay time constant of a body wrapped in a thin conducting spherical shell, on orbit.
 
     Parameters
     ----------
-    inertia : float or array_like
-        Moment of inertia about the spin axis J > 0 [kg·m²].
-    radius : float or array_like
-        Shell radius a > 0 [m].
-    thickness : float or array_like
-        Wall thickness d > 0, d < a [m].
-    conductivity : float or array_like
-        Conductivity σ > 0 [S/m].
+    {inertia, radius, thickness, conductivity}
     orbit : CircularOrbit
         The orbit and its field (:class:`magbench.earth.CircularOrbit`) [-].
     axis : array_like, shape (3,), optional

@@ -11,11 +11,25 @@ numpy, SI, rad; every function broadcasts over arrays.
 
 import numpy as np
 
+from .._docstrings import fill_docstring
 from .._validate import as_count, as_finite, as_positive
 
 __all__ = ["polar_field_direction_angle", "polar_field_direction_rate", "polar_field_direction_acceleration",
            "polar_field_b", "polar_gravity_factor", "polar_fourier_coefficients", "polar_orbit_rate",
            "polar_orbit_acceleration", "polar_eccentric_coefficients"]
+
+#: Parameters described once for the functions that share them (:func:`magbench._docstrings.fill_docstring`).
+_ORBIT_PARAMETERS = {
+    "argument_of_latitude": """argument_of_latitude : array_like
+    u [rad].""",
+    "eccentricity": """eccentricity : array_like
+    e, in [0, 1) and small [-].""",
+    "mean_motion": """mean_motion : array_like
+    ω0 [rad/s].""",
+    "time": """time : array_like
+    t from perigee [s].""",
+}
+_document_orbit = fill_docstring(_ORBIT_PARAMETERS)
 
 #: The ratio of the three geometric series: every coefficient below is a power of 1/3.
 _Q = 1.0 / 3.0
@@ -52,13 +66,13 @@ def polar_field_direction_angle(argument_of_latitude):
     return u + np.arctan2(np.sin(2.0 * u), 3.0 - np.cos(2.0 * u))
 
 
+@_document_orbit
 def polar_field_direction_rate(argument_of_latitude):
     r"""Derivative dη/du of the field-direction angle on a circular magnetopolar orbit.
 
     Parameters
     ----------
-    argument_of_latitude : array_like
-        u [rad].
+    {argument_of_latitude}
 
     Returns
     -------
@@ -107,13 +121,13 @@ def polar_field_direction_acceleration(argument_of_latitude, mean_motion=1.0):
     return -6.0 * n**2 * np.sin(2.0 * u) / (1.0 + 3.0 * np.sin(u) ** 2) ** 2
 
 
+@_document_orbit
 def polar_field_b(argument_of_latitude, equatorial_b):
     r"""Magnitude of the dipole field along a circular magnetopolar orbit.
 
     Parameters
     ----------
-    argument_of_latitude : array_like
-        u [rad].
+    {argument_of_latitude}
     equatorial_b : array_like
         B0 = μ0 M/(4π r³), the field over the magnetic equator at the orbit's radius [T].
 
@@ -132,13 +146,13 @@ def polar_field_b(argument_of_latitude, equatorial_b):
     return b0 * np.sqrt(1.0 + 3.0 * np.sin(u) ** 2)
 
 
+@_document_orbit
 def polar_gravity_factor(argument_of_latitude):
     r"""The gravity-gradient factor sin 2λ of a body held along B on a magnetopolar orbit.
 
     Parameters
     ----------
-    argument_of_latitude : array_like
-        u [rad].
+    {argument_of_latitude}
 
     Returns
     -------
@@ -193,17 +207,13 @@ def polar_fourier_coefficients(count=3):
     return q / n, -4.0 * n * q, 8.0 / 3.0 * q
 
 
+@_document_orbit
 def polar_orbit_rate(time, mean_motion, eccentricity):
     r"""Rate of the true anomaly on a slightly elliptic orbit, to first order in e.
 
     Parameters
     ----------
-    time : array_like
-        t from perigee [s].
-    mean_motion : array_like
-        ω0 [rad/s].
-    eccentricity : array_like
-        e, in [0, 1) and small [-].
+    {time, mean_motion, eccentricity}
 
     Returns
     -------
@@ -221,17 +231,13 @@ def polar_orbit_rate(time, mean_motion, eccentricity):
     return n * (1.0 + 2.0 * e * np.cos(n * t))
 
 
+@_document_orbit
 def polar_orbit_acceleration(time, mean_motion, eccentricity):
     r"""Angular acceleration of the true anomaly on a slightly elliptic orbit, to first order in e.
 
     Parameters
     ----------
-    time : array_like
-        t from perigee [s].
-    mean_motion : array_like
-        ω0 [rad/s].
-    eccentricity : array_like
-        e, in [0, 1) and small [-].
+    {time, mean_motion, eccentricity}
 
     Returns
     -------

@@ -12,11 +12,27 @@ B_x = B_ц[1 − c(2x/l)²], c = 3(1 − k) ≈ 0.85, k the ratio of the mean to
 
 import numpy as np
 
+from .._docstrings import fill_docstring
 from .._validate import as_finite, as_in_range, as_nonnegative, as_positive
 from ..constants import MU_0
 
 __all__ = ["rod_eddy_profile_coefficient", "rod_eddy_power", "rod_eddy_torque", "rod_eddy_torque_from_field",
            "shell_eddy_torque", "rod_to_shell_eddy_ratio", "winding_parameter", "winding_damping_torque"]
+
+#: Parameters described once for the functions that share them (:func:`magbench._docstrings.fill_docstring`).
+_LOSS_PARAMETERS = {
+    "diameter": """diameter : float or array_like
+    Rod diameter d > 0 [m].""",
+    "parabola_coefficient": """parabola_coefficient : float or array_like, optional
+    c of the axial profile (12.4), in [0, 1] [-].""",
+    "rate": """rate : float or array_like
+    Rate ω ≥ 0 of the rod relative to the field [rad/s].""",
+    "resistivity": """resistivity : float or array_like
+    Resistivity ρ_c > 0 [Ω·m].""",
+    "volume": """volume : float or array_like
+    Rod volume V > 0 [m³].""",
+}
+_document_losses = fill_docstring(_LOSS_PARAMETERS)
 
 
 def rod_eddy_profile_coefficient(parabola_coefficient=0.85):
@@ -48,6 +64,7 @@ def rod_eddy_profile_coefficient(parabola_coefficient=0.85):
     return 0.5 - c / 3.0 + c ** 2 / 10.0
 
 
+@_document_losses
 def rod_eddy_power(volume, diameter, resistivity, induction_rate, parabola_coefficient=0.85):
     r"""Instantaneous eddy-current loss in a long rod whose induction changes.
 
@@ -55,14 +72,12 @@ def rod_eddy_power(volume, diameter, resistivity, induction_rate, parabola_coeff
     ----------
     volume : float or array_like
         Rod volume V = πd²l/4 > 0 [m³].
-    diameter : float or array_like
-        Rod diameter d > 0 [m].
+    {diameter}
     resistivity : float or array_like
         Resistivity of the rod's material ρ_c > 0 [Ω·m].
     induction_rate : float or array_like
         dB_ц/dt at the rod's centre [T/s].
-    parabola_coefficient : float or array_like, optional
-        c of the axial profile (12.4), in [0, 1] [-].
+    {parabola_coefficient}
 
     Returns
     -------
@@ -83,23 +98,18 @@ def rod_eddy_power(volume, diameter, resistivity, induction_rate, parabola_coeff
     return alpha * v * d ** 2 * rate ** 2 / (16.0 * rho)
 
 
+@_document_losses
 def rod_eddy_torque(volume, diameter, resistivity, rate, induction_amplitude, parabola_coefficient=0.85):
     r"""Mean damping torque of the eddy currents in a rod turning uniformly in a field.
 
     Parameters
     ----------
-    volume : float or array_like
-        Rod volume V > 0 [m³].
-    diameter : float or array_like
-        Rod diameter d > 0 [m].
-    resistivity : float or array_like
-        Resistivity ρ_c > 0 [Ω·m].
+    {volume, diameter, resistivity}
     rate : float or array_like
         Rate ω ≥ 0 at which the rod turns relative to the field [rad/s].
     induction_amplitude : float or array_like
         Amplitude B_0ц of the central induction, B_ц = B_0ц sin ωt (12.6) [T].
-    parabola_coefficient : float or array_like, optional
-        c of the axial profile (12.4), in [0, 1] [-].
+    {parabola_coefficient}
 
     Returns
     -------
@@ -119,26 +129,19 @@ def rod_eddy_torque(volume, diameter, resistivity, rate, induction_amplitude, pa
     return alpha * v * d ** 2 * w * b0 ** 2 / (32.0 * rho)
 
 
+@_document_losses
 def rod_eddy_torque_from_field(volume, diameter, resistivity, rate, field_amplitude, elongation,
                                parabola_coefficient=0.85):
     r"""Rod eddy torque for an ideally soft rod (μ → ∞) in a field of amplitude H₀.
 
     Parameters
     ----------
-    volume : float or array_like
-        Rod volume V > 0 [m³].
-    diameter : float or array_like
-        Rod diameter d > 0 [m].
-    resistivity : float or array_like
-        Resistivity ρ_c > 0 [Ω·m].
-    rate : float or array_like
-        Rate ω ≥ 0 of the rod relative to the field [rad/s].
+    {volume, diameter, resistivity, rate}
     field_amplitude : float or array_like
         Amplitude H₀ of the field along the rod [A/m].
     elongation : float or array_like
         p = l/d ≥ 10 [-].
-    parabola_coefficient : float or array_like, optional
-        c of the axial profile (12.4), in [0, 1] [-].
+    {parabola_coefficient}
 
     Returns
     -------
@@ -158,6 +161,7 @@ def rod_eddy_torque_from_field(volume, diameter, resistivity, rate, field_amplit
     return rod_eddy_torque(volume, diameter, resistivity, rate, MU_0 * h0 / n, parabola_coefficient)
 
 
+@_document_losses
 def shell_eddy_torque(volume, diameter, outer_diameter, resistivity, rate, induction_amplitude,
                       parabola_coefficient=0.85):
     r"""Mean damping torque of the currents in a conducting shell (or a short-circuited winding)
@@ -173,12 +177,10 @@ def shell_eddy_torque(volume, diameter, outer_diameter, resistivity, rate, induc
         Shell's outer diameter D > d [m].
     resistivity : float or array_like
         Resistivity of the shell ρ_м > 0 [Ω·m].
-    rate : float or array_like
-        Rate ω ≥ 0 of the rod relative to the field [rad/s].
+    {rate}
     induction_amplitude : float or array_like
         Amplitude B_0ц of the rod's central induction [T].
-    parabola_coefficient : float or array_like, optional
-        c of the axial profile (12.4), in [0, 1] [-].
+    {parabola_coefficient}
 
     Returns
     -------
@@ -239,13 +241,13 @@ def rod_to_shell_eddy_ratio(rod_resistivity, shell_resistivity, diameter_ratio):
     return rm / (4.0 * rc * np.log(q))
 
 
+@_document_losses
 def winding_parameter(rate, diameter, outer_diameter, resistivity, fill_factor=1.0):
     r"""The parameter a = ωL_к/R_к of a short-circuited winding (or a shell) round a rod.
 
     Parameters
     ----------
-    rate : float or array_like
-        Rate ω ≥ 0 of the rod relative to the field [rad/s].
+    {rate}
     diameter : float or array_like
         Rod (inner) diameter d > 0 [m].
     outer_diameter : float or array_like
@@ -278,13 +280,13 @@ def winding_parameter(rate, diameter, outer_diameter, resistivity, fill_factor=1
     return w * MU_0 * d ** 2 * (big - d) * k / (4.0 * rho * (big + d))
 
 
+@_document_losses
 def winding_damping_torque(volume, field_amplitude, demagnetizing_factor, winding_parameter, averaging_factor=0.72):
     r"""Mean damping torque of a short-circuited winding on an ideally soft, lossless rod.
 
     Parameters
     ----------
-    volume : float or array_like
-        Rod volume V > 0 [m³].
+    {volume}
     field_amplitude : float or array_like
         Amplitude H₀ of the external field along the rod [A/m].
     demagnetizing_factor : float or array_like
