@@ -11,7 +11,8 @@ from scipy.optimize import minimize_scalar
 
 from .._docstrings import fill_docstring
 from .._validate import as_count, as_finite, as_nonnegative, as_positive, as_vectors
-from ..earth.polar_orbit import polar_fourier_coefficients
+from ..earth.polar_orbit import (polar_field_b, polar_field_direction_acceleration, polar_fourier_coefficients,
+                                 polar_gravity_factor)
 from . import kernels
 
 __all__ = ["orienting_dipole", "orienting_torque", "orienting_dipole_per_axis", "viscous_detumble_time",
@@ -432,11 +433,10 @@ def elastic_damper_response(forcing, frequency, inertia, stiffness, viscous, dam
 
 
 def _disturbance_ratio(u, inertia, inertia_difference, friction, mean_motion, equatorial_b):
-    s2 = np.sin(u) ** 2
-    sin2u = np.sin(2.0 * u)
-    kinematic = inertia * 6.0 * mean_motion**2 * sin2u / (1.0 + 3.0 * s2) ** 2
-    gravity = 1.5 * mean_motion**2 * inertia_difference * 2.0 * sin2u / (1.0 + 3.0 * s2)
-    return (kinematic + gravity - friction) / (equatorial_b * np.sqrt(1.0 + 3.0 * s2))
+    """[J|η̈| + (3/2)ω0²ΔJ sin 2λ − M_T]/B at u, from the Earth family's η̈, sin 2λ and |B|."""
+    kinematic = -inertia * polar_field_direction_acceleration(u, mean_motion)
+    gravity = 1.5 * mean_motion**2 * inertia_difference * polar_gravity_factor(u)
+    return (kinematic + gravity - friction) / polar_field_b(u, equatorial_b)
 
 
 def polar_error_factor(tolerance=1e-12):
@@ -463,7 +463,8 @@ def polar_error_factor(tolerance=1e-12):
     xatol = float(as_positive("tolerance", tolerance, unit="rad"))
 
     def minus(u):
-        return -6.0 * np.sin(2.0 * u) / (1.0 + 3.0 * np.sin(u) ** 2) ** 2.5
+        # |η̈|/(ω0² B/B0): the disturbance ratio of a unit body, orbit and field
+        return -_disturbance_ratio(u, 1.0, 0.0, 0.0, 1.0, 1.0)
 
     best = minimize_scalar(minus, bounds=(0.0, np.pi / 2), method="bounded", options={"xatol": xatol})
     return float(-best.fun), float(best.x)

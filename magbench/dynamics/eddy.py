@@ -16,7 +16,7 @@ shape, size and conductivity; the torque is m × B and the power it takes from t
 import numpy as np
 
 from .._docstrings import fill_docstring
-from .._validate import as_finite, as_nonnegative, as_positive, as_vectors
+from .._validate import as_finite, as_nonnegative, as_positive, as_vectors, shown
 from ..constants import MU_0
 from . import kernels
 
@@ -153,6 +153,17 @@ def anisotropic_eddy_torque(rate, b, coefficients):
     return kernels.anisotropic_eddy_torque(w, bb, g)
 
 
+def _thin_shell(radius, thickness, conductivity):
+    """The checked radius, thickness and conductivity of a thin spherical shell (d < a)."""
+    a = as_positive("radius", radius, unit="m")
+    d = as_positive("thickness", thickness, unit="m")
+    s = as_positive("conductivity", conductivity, unit="S/m")
+    if np.any(d >= a):
+        raise ValueError(f"thickness must be < radius for a thin shell [m], got thickness {shown(np.max(d))} "
+                         f"and radius {shown(np.min(a))}")
+    return a, d, s
+
+
 @_document_eddy
 def spherical_shell_eddy_coefficient(radius, thickness, conductivity):
     r"""Low-frequency eddy coefficient of a thin conducting spherical shell.
@@ -187,12 +198,7 @@ def spherical_shell_eddy_coefficient(radius, thickness, conductivity):
     >>> round(float(spherical_shell_eddy_coefficient(0.5, 1e-3, 3.5e7)), 1)   # aluminium, 1 mm
     4581.5
     """
-    a = as_positive("radius", radius, unit="m")
-    d = as_positive("thickness", thickness, unit="m")
-    s = as_positive("conductivity", conductivity, unit="S/m")
-    if np.any(d >= a):
-        raise ValueError(f"thickness must be < radius for a thin shell [m], got thickness {np.max(d)!r} "
-                         f"and radius {np.min(a)!r}")
+    a, d, s = _thin_shell(radius, thickness, conductivity)
     return 2.0 * np.pi / 3.0 * s * d * a ** 4
 
 
@@ -220,9 +226,7 @@ def spherical_shell_time_constant(radius, thickness, conductivity):
     9ξ²(1 + ω²τ²). Not in the sources: τ itself, from the shell's current K = −½σd Ḃ_in × **r**
     and its internal field (2/3)μ0 K.
     """
-    a = as_positive("radius", radius, unit="m")
-    d = as_positive("thickness", thickness, unit="m")
-    s = as_positive("conductivity", conductivity, unit="S/m")
+    a, d, s = _thin_shell(radius, thickness, conductivity)
     return MU_0 * s * d * a / 3.0
 
 
