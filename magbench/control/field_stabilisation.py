@@ -374,7 +374,10 @@ def polar_forced_response(inertia, moment, field_b, viscous, mean_motion, inerti
     kd = as_nonnegative("viscous", viscous, unit="N·m·s")
     n = as_positive("mean_motion", mean_motion, unit="rad/s")
     forcing = polar_forcing_coefficients(j, inertia_difference, n, count, printed)
-    k = np.arange(1, forcing.shape[0] + 1).reshape((-1,) + (1,) * (forcing.ndim - 1))
+    # every argument may carry the members' axes: the harmonics go first, the members after
+    shape = np.broadcast_shapes(np.shape(m), np.shape(b), np.shape(kd), forcing.shape[1:])
+    forcing = forcing.reshape(forcing.shape[:1] + (1,) * (len(shape) - forcing.ndim + 1) + forcing.shape[1:])
+    k = np.arange(1, forcing.shape[0] + 1).reshape((-1,) + (1,) * len(shape))
     half_damping = kd / (2.0 * j)
     real = m * b / j - 4.0 * k**2 * n**2
     imag = 4.0 * k * half_damping * n

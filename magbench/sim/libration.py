@@ -34,12 +34,13 @@ class LibrationSatellite:
     ----------
     inertia : tuple of float
         Principal moments (I_x roll, I_y pitch, I_z yaw/boom) [kg·m²].
-    damper_moment : float
-        Dipole moment of the ball's magnet [A·m²] (0: the ball only couples viscously).
+    damper_moment : float or array_like, shape (M,)
+        Dipole moment of the ball's magnet, ≥ 0 [A·m²] (0: the ball only couples viscously);
+        one per member for a sweep.
     damper_inertia : float
         Moment of inertia J_d of the ball [kg·m²].
-    damping : float
-        Viscous coupling k between ball and body [N·m·s].
+    damping : float or array_like, shape (M,)
+        Viscous coupling k between ball and body, ≥ 0 [N·m·s]; one per member for a sweep.
     body_magnet : tuple of float, optional
         A magnet fixed in the body, body axes [A·m²].
 
@@ -58,9 +59,12 @@ class LibrationSatellite:
         j = as_inertia("inertia", self.inertia)
         if j.shape != (3,):
             raise ValueError(f"inertia must be three principal moments [kg·m²], got shape {j.shape}")
-        for name in ("damper_moment", "damping"):
-            if as_nonnegative(name, getattr(self, name), unit="A·m²" if name == "damper_moment" else "N·m·s").ndim:
-                raise ValueError(f"{name} must be a scalar, got {getattr(self, name)!r}")
+        for name, unit in (("damper_moment", "A·m²"), ("damping", "N·m·s")):
+            value = as_nonnegative(name, getattr(self, name), unit=unit)
+            if value.ndim > 1:
+                raise ValueError(f"{name} must be a scalar or one value per member, shape (M,), got shape "
+                                 f"{value.shape}")
+            object.__setattr__(self, name, value if value.ndim else float(value))
         if as_positive("damper_inertia", self.damper_inertia, unit="kg·m²").ndim:
             raise ValueError(f"damper_inertia must be a scalar, got {self.damper_inertia!r}")
         if as_finite("body_magnet", self.body_magnet).shape != (3,):
@@ -78,7 +82,8 @@ def _rhs(time, state, orbit, sat, gravity):
     if gravity:
         torque = torque + kernels.gravity_gradient_torque(radial, j, orbit.mean_motion)
     e_unit = e / np.linalg.norm(e, axis=-1, keepdims=True)
-    ball_torque = kernels.rotate(q, sat.damper_moment * kernels.cross(e_unit, b_inertial), -1.0)
+    magnet = np.asarray(sat.damper_moment)[..., None]
+    ball_torque = kernels.rotate(q, magnet * kernels.cross(e_unit, b_inertial), -1.0)
     coupling = kernels.viscous_damper_torque(wd - w, sat.damping)
     rates = kernels.spherical_damper_rhs(state[:, 4:10], torque, ball_torque, j, sat.damper_inertia, coupling)
     e_rate = kernels.cross(kernels.rotate(q, wd, 1.0), e)
@@ -160,12 +165,13 @@ def simulate_libration(satellite, orbit, initial_pitch, initial_roll, duration, 
     roll0 = np.atleast_1d(as_finite("initial_roll", initial_roll))
     rate0 = as_finite("initial_rate", initial_rate)
     try:
-        pitch, roll = np.broadcast_arrays(pitch0, roll0, phase)[:2]
+        pitch, roll = np.broadcast_arrays(pitch0, roll0, phase, satellite.damper_moment, satellite.damping)[:2]
         rate = np.broadcast_to(rate0[..., None] if rate0.ndim == 0 else rate0, pitch.shape + (3,))
     except ValueError:
         raise ValueError(f"initial_pitch {pitch0.shape}, initial_roll {roll0.shape}, the orbit's phases "
-                         f"{phase.shape} and initial_rate {rate0.shape} (scalar, (3,) or (M, 3)) must agree on "
-                         "the members M") from None
+                         f"{phase.shape}, the satellite's damper_moment {np.shape(satellite.damper_moment)} and "
+                         f"damping {np.shape(satellite.damping)} and initial_rate {rate0.shape} (scalar, (3,) or "
+                         "(M, 3)) must agree on the members M") from None
     if pitch.ndim != 1:
         raise ValueError(f"initial_pitch and initial_roll must be scalars or shape (M,), got shape {pitch.shape}")
     steps = int(np.ceil(total / h - 1e-9))

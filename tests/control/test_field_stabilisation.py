@@ -281,3 +281,15 @@ def test_the_printed_values_used_here_are_the_data_files():
     for key, (value, resolution) in used.items():
         row = printed[key]
         assert (row.value_low, row.resolution) == (value, resolution), key
+
+
+def test_forced_response_of_members_equals_one_call_each():
+    """Magnets and dampers as member arrays (one per member): the same as one call each, the
+    harmonics on the first axis."""
+    moment, viscous = np.array([200.0, 500.0, 900.0]), np.array([0.1, 0.2, 0.4])
+    amp, phase = polar_forced_response(650.0, moment, 2e-5, viscous, 1e-3, 400.0, count=4)
+    assert amp.shape == phase.shape == (4, 3)
+    for i in range(3):
+        a, f = polar_forced_response(650.0, moment[i], 2e-5, viscous[i], 1e-3, 400.0, count=4)
+        assert_allclose(amp[:, i], a, rtol=1e-15)
+        assert_allclose(phase[:, i], f, rtol=1e-15)

@@ -136,3 +136,19 @@ def test_bad_run_is_refused_by_name(orbit):
         simulate_libration(sat, orbit, 0.1, 0.0, 100.0, 10.0, initial_rate=[1.0, 2.0])
     with pytest.raises(ValueError, match="satellite must be a LibrationSatellite"):
         simulate_libration(INERTIA, orbit, 0.1, 0.0, 100.0, 10.0)
+
+
+def test_a_damping_sweep_in_one_call_equals_separate_runs():
+    """One member per damper (coupling and magnet): the same numbers as one run each."""
+    orbit = CircularOrbit(7.0e6, 0.6, 8.0e22)
+    damping, moment = np.array([0.5e-4, 1e-4, 3e-4]), np.array([0.1, 0.2, 0.3])
+    together = simulate_libration(LibrationSatellite(INERTIA, moment, 0.05, damping), orbit, np.radians(20), 0.0,
+                                  2000.0, 40.0, record_interval=400.0)
+    for i in range(3):
+        alone = simulate_libration(LibrationSatellite(INERTIA, moment[i], 0.05, damping[i]), orbit, np.radians(20),
+                                   0.0, 2000.0, 40.0, record_interval=400.0)
+        assert_allclose(together.states[:, :, i], alone.states[:, :, 0], rtol=1e-12, atol=1e-15)
+    with pytest.raises(ValueError, match="damping"):
+        simulate_libration(LibrationSatellite(INERTIA, 0.2, 0.05, damping), orbit, [0.1, 0.2], 0.0, 100.0, 10.0)
+    with pytest.raises(ValueError, match="damping must be a scalar or one value per member"):
+        LibrationSatellite(INERTIA, 0.2, 0.05, np.ones((2, 2)))
