@@ -312,7 +312,7 @@ def eddy_shell_match(params=None):
         ``time_constant_fit`` (the exponential fit of Table 1) and ``time_constant_slope``
         (L at session 1 over the linear fit's slope) [s]; for the hull as an open cylinder
         (``cylinder_*``) and as a sphere of the same radius (``sphere_*``): ``*_tau_1mm``
-        (τ of a 1 mm wall) [s] and ``*_thickness_fit`` / ``*_thickness_slope`` (the wall
+        (τ of a wall of ``reference_thickness``, 1 mm) [s] and ``*_thickness_fit`` / ``*_thickness_slope`` (the wall
         that would give each target) [m]; ``radius``, ``length`` [m].
     """
     from ...dynamics import cylinder_eddy_coefficients, eddy_despin_time_constant, shell_despin_time_constant
@@ -333,6 +333,7 @@ def eddy_shell_match(params=None):
     cylinder = float(eddy_despin_time_constant(inertia, 0.5 * (transverse + axial), 2.0 / 3.0 * mean_square_field(orbit)))
     sphere = float(shell_despin_time_constant(inertia, radius, ref, sigma, orbit))
     return {"time_constant_fit": tau_fit, "time_constant_slope": tau_slope, "radius": radius, "length": length,
+            "reference_thickness": ref,
             "cylinder_tau_1mm": cylinder, "sphere_tau_1mm": sphere,
             "cylinder_thickness_fit": ref * cylinder / tau_fit, "cylinder_thickness_slope": ref * cylinder / tau_slope,
             "sphere_thickness_fit": ref * sphere / tau_fit, "sphere_thickness_slope": ref * sphere / tau_slope}
