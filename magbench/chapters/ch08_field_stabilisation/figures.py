@@ -98,7 +98,6 @@ def plot_field_rotation(data):
         ax.set_xticks([0, 45, 90, 135, 180])
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=7.5)
-    fig.tight_layout()
     return fig
 
 
@@ -152,7 +151,6 @@ def plot_fig6_7(data):
     axes[1].legend(fontsize=6.5, loc="lower right")
     for ax in axes:
         ax.grid(alpha=0.3)
-    fig.tight_layout()
     return fig
 
 
@@ -207,7 +205,6 @@ def plot_fig6_8(data):
     for ax in axes:
         ax.set_xlabel("ω_c/ω0 = √(LB0/J)/ω0")
         ax.grid(alpha=0.3, which="both")
-    fig.tight_layout()
     return fig
 
 
@@ -245,7 +242,6 @@ def plot_damper_decay(data):
     ax.set_ylabel("ω/ω_н")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=7.5)
-    fig.tight_layout()
     return fig
 
 
@@ -291,7 +287,6 @@ def plot_libration(data):
     for ax in axes:
         ax.set_xlabel("orbits")
         ax.grid(alpha=0.3)
-    fig.tight_layout()
     return fig
 
 
@@ -330,7 +325,6 @@ def plot_libration_trade(data):
         ax.set_xlabel("ball coupling k [10⁻⁴ N·m·s]")
         ax.grid(alpha=0.3)
     axes[1].legend(fontsize=7)
-    fig.tight_layout()
     return fig
 
 
@@ -366,7 +360,6 @@ def plot_eddy_shell(data):
     ax.set_ylabel("spin-decay time constant τ [h]")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=7)
-    fig.tight_layout()
     return fig
 
 
