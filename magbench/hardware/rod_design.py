@@ -15,7 +15,8 @@ from ..constants import MU_0
 from .hysteresis import limb_constants, settled_hysteresis_loop, hysteresis_loop_energy
 
 __all__ = ["rod_volume_required", "rod_count_required", "despin_torque_required", "rod_central_loop_energy",
-           "prolate_demagnetizing_factor", "parallel_rod_mutual_factor", "parallel_rod_demagnetizing_ratio"]
+           "rod_torque_per_length_cubed", "rod_optimal_elongation", "prolate_demagnetizing_factor",
+           "parallel_rod_mutual_factor", "parallel_rod_demagnetizing_ratio"]
 
 
 def rod_volume_required(torque, loop_energy, averaging_factor=1.0):
@@ -139,9 +140,10 @@ def rod_central_loop_energy(field_amplitude, demagnetizing_factor, coercivity, r
     ----------
     field_amplitude : float or array_like
         Amplitude H0 > 0 of the external field along the rod [A/m].
-    demagnetizing_factor : float
-        Central demagnetising factor N_ц ≥ 0 of the rod in SI [-] (0: the material's own loop;
-        :func:`magbench.hardware.rod_demagnetizing_factor` for a long cylinder).
+    demagnetizing_factor : float or array_like
+        Central demagnetising factor N_ц in [0, 1] of the rod in SI [-] (0: the material's own
+        loop; :func:`magbench.hardware.rod_demagnetizing_factor` for a long cylinder); broadcasts
+        with ``field_amplitude``.
     coercivity, remanence, saturation : float
         Flatley–Henretty constants of the *material* (not a rod's apparent ones) [A/m, T, T]
         (:func:`magbench.hardware.limb_constants`).
@@ -176,29 +178,104 @@ def rod_central_loop_energy(field_amplitude, demagnetizing_factor, coercivity, r
     (0.217, 30.0)
     """
     h0 = as_positive("field_amplitude", field_amplitude, unit="A/m")
-    n = float(as_nonnegative("demagnetizing_factor", demagnetizing_factor, unit="[-]"))
-    if np.ndim(demagnetizing_factor) != 0 or n > 1.0:
-        raise ValueError(f"demagnetizing_factor must be a scalar in [0, 1] [-], got {shown(demagnetizing_factor)}")
+    n = as_nonnegative("demagnetizing_factor", demagnetizing_factor, unit="[-]")
+    if np.any(n > 1.0):
+        raise ValueError(f"demagnetizing_factor must lie in [0, 1] [-], got {shown(n[n > 1.0].ravel()[0])}")
+    h0, n = np.broadcast_arrays(h0, n)
     limb_constants(coercivity, remanence, saturation)
     points = int(as_positive_scalar("grid_points", grid_points))
     if points != grid_points or points < 20:
         raise ValueError(f"grid_points must be a whole number >= 20 [-], got {shown(grid_points)}")
-    if n == 0.0:
-        # no shear: the body's loop is the material's
-        h, b = settled_hysteresis_loop(h0, coercivity, remanence, saturation)
-        return hysteresis_loop_energy(h[..., :-1], b[..., :-1]), h0.copy()
+    # The material's loops do not depend on N_ц: one grid of central amplitudes serves every rod.
     grid = np.geomspace(1e-6 * float(np.min(h0)), float(np.max(h0)), points)
     _, b = settled_hysteresis_loop(grid, coercivity, remanence, saturation)
     tip = np.max(b, axis=-1)                           # the normal curve: the loops' vertices
-    external = grid + n * tip / MU_0                   # H0 at which each central amplitude is reached
-    if np.any(np.diff(external) <= 0):
-        raise ValueError("the material's normal curve is not increasing on the grid; raise grid_points")
-    if np.min(h0) < external[0]:
-        raise ValueError(f"field_amplitude {shown(np.min(h0))} A/m is below the grid's reach "
-                         f"{shown(external[0])} A/m (N_ц μ too large for the grid)")
-    central = np.exp(np.interp(np.log(h0), np.log(external), np.log(grid)))
+    if np.any(np.diff(tip) <= 0):
+        raise ValueError("the material's normal curve is not increasing on the grid; change grid_points")
+    central = np.empty(h0.shape)
+    for index in np.ndindex(h0.shape):
+        external = grid + n[index] * tip / MU_0        # H0 at which each central amplitude is reached
+        if h0[index] < external[0]:
+            raise ValueError(f"field_amplitude {shown(h0[index])} A/m is below the grid's reach "
+                             f"{shown(external[0])} A/m (N_ц μ above 10⁶)")
+        # log–log: the normal curve is close to a power law over each grid step
+        central[index] = np.exp(np.interp(np.log(h0[index]), np.log(external), np.log(grid)))
+    central = np.minimum(central, h0)                  # N_ц = 0: exactly H0 (no rounding above it)
     h, b = settled_hysteresis_loop(central, coercivity, remanence, saturation)
     return hysteresis_loop_energy(h[..., :-1], b[..., :-1]), central
+
+
+def rod_torque_per_length_cubed(elongation, field_amplitude, coercivity, remanence, saturation,
+                                averaging_factor=1.0):
+    r"""Hysteresis damping torque of one cylindrical rod over its length cubed (Kovalenko Fig. 12.6).
+
+    Parameters
+    ----------
+    elongation : float or array_like
+        p = l/d ≥ 10 of the rod [-]; broadcasts with ``field_amplitude``.
+    field_amplitude : float or array_like
+        Amplitude H0 > 0 of the external field along the rod [A/m].
+    coercivity, remanence, saturation : float
+        Flatley–Henretty constants of the material [A/m, T, T].
+    averaging_factor : float, optional
+        k_φ > 0 [-] (:func:`rod_volume_required`).
+
+    Returns
+    -------
+    ndarray
+        M_Г/l³ = k_φ (∮H dB)_ц/(8p²) [N·m/m³]: (12.1) with V = πl³/(4p²) and the central loop of
+        :func:`rod_central_loop_energy` at N_ц = 0.93 p^−1.7 (9.25).
+
+    Notes
+    -----
+    Kovalenko (1975) §12.2, pp. 232–233, Figs. 12.5–12.6: at a fixed length a thin rod loses
+    little for want of volume, a thick one for its demagnetisation; the torque peaks at an
+    optimal elongation p0 that depends on H0 (:func:`rod_optimal_elongation`).
+    """
+    from .cores import rod_demagnetizing_factor
+
+    p = as_finite("elongation", elongation)
+    p, h0 = np.broadcast_arrays(p, as_positive("field_amplitude", field_amplitude, unit="A/m"))
+    kf = as_positive_scalar("averaging_factor", averaging_factor)
+    w, _ = rod_central_loop_energy(h0, rod_demagnetizing_factor(p), coercivity, remanence, saturation)
+    return kf * w / (8.0 * p * p)
+
+
+def rod_optimal_elongation(field_amplitude, coercivity, remanence, saturation, *, elongations=None):
+    r"""Elongation of the largest hysteresis torque of a rod of given length (Kovalenko p. 233).
+
+    Parameters
+    ----------
+    field_amplitude : float
+        Amplitude H0 > 0 of the external field along the rod [A/m].
+    coercivity, remanence, saturation : float
+        Flatley–Henretty constants of the material [A/m, T, T].
+    elongations : array_like, optional
+        Candidate p, each ≥ 10, increasing [-]; default 121 log-spaced from 10 to 2000.
+
+    Returns
+    -------
+    elongation : float
+        p0, the candidate of the largest :func:`rod_torque_per_length_cubed` [-].
+    torque_per_length_cubed : float
+        M_Г/l³ at p0 with k_φ = 1 [N·m/m³].
+
+    Notes
+    -----
+    Kovalenko (1975) §12.2, p. 233–234: find p0 for the given H0 and length from Figs. 12.5–12.6,
+    then the volume of one rod and the count n (:func:`rod_count_required`). A candidate at
+    either end of ``elongations`` means the optimum lies outside them: it raises.
+    """
+    h0 = as_positive_scalar("field_amplitude", field_amplitude, unit="A/m")
+    p = np.geomspace(10.0, 2000.0, 121) if elongations is None else as_finite("elongations", elongations)
+    if p.ndim != 1 or p.size < 3 or np.any(np.diff(p) <= 0):
+        raise ValueError(f"elongations must be an increasing 1-D array of >= 3 values [-], got shape {p.shape}")
+    torque = rod_torque_per_length_cubed(p, h0, coercivity, remanence, saturation)
+    best = int(np.argmax(torque))
+    if best in (0, p.size - 1):
+        raise ValueError(f"the optimal elongation lies outside elongations [{shown(p[0])}, {shown(p[-1])}] "
+                         f"at H0 = {shown(h0)} A/m (the largest torque is at {shown(p[best])})")
+    return float(p[best]), float(torque[best])
 
 
 def prolate_demagnetizing_factor(elongation):
