@@ -33,7 +33,8 @@ from .hysteresis import (hysteresis_damping_torque, hysteresis_loop_energy, hyst
                          rod_cycle_energy, settled_hysteresis_loop)
 from .rod_design import (despin_torque_required, parallel_rod_demagnetizing_ratio, parallel_rod_mutual_factor,
                          prolate_demagnetizing_factor, rod_central_loop_energy, rod_count_required,
-                         rod_optimal_elongation, rod_torque_per_length_cubed, rod_volume_required)
+                         rod_optimal_elongation, rod_torque_per_length_cubed, rod_volume_required,
+                         rayleigh_central_loop_energy, rayleigh_optimal_demagnetizing_factor)
 from .winding import (ampere_turns_power, coaxial_system_scale_for_power, helmholtz_pair_power, winding_mass,
                       winding_power, winding_resistance, winding_voltage)
 
@@ -42,7 +43,8 @@ __all__ = ["rod_eddy_profile_coefficient", "rod_eddy_power", "rod_eddy_torque", 
            "limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
            "rod_cycle_energy", "settled_hysteresis_loop", "limiting_loop_energy", "hysteresis_damping_torque",
            "rod_volume_required", "rod_count_required", "despin_torque_required", "rod_central_loop_energy",
-           "rod_torque_per_length_cubed", "rod_optimal_elongation", "prolate_demagnetizing_factor",
+           "rod_torque_per_length_cubed", "rod_optimal_elongation", "rayleigh_central_loop_energy",
+           "rayleigh_optimal_demagnetizing_factor", "prolate_demagnetizing_factor",
            "parallel_rod_mutual_factor", "parallel_rod_demagnetizing_ratio",
            "SHAPES", "Turn", "WireSizes", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
            "dipole_moment", "current_for_moment", "coil_current", "turn_resistance", "coil_resistance",

@@ -252,3 +252,49 @@ def test_kovalenko_volume_for_tns0_is_below_the_calibrated_one():
     transit_volume = hardware.rod_volume_required(torque, p["transit_loop_energy"], 0.72)
     assert torque > 0
     assert transit_volume < own_volume < calibrated_total
+
+
+# -- the Rayleigh region: (12.36), (12.37), (12.40) -------------------------------------------------
+
+def _rayleigh_torque_over_length_cubed(p, mu=2300.0):
+    # (12.1) with V = πl³/(4p²) and (12.40) at N = 0.93 p^−1.7 (9.25); a and H0 scale it only
+    n = hardware.rod_demagnetizing_factor(p)
+    return hardware.rayleigh_central_loop_energy(1.0, n, 1e-3, mu) / (8.0 * p * p)
+
+
+def test_the_rayleigh_optimum_is_where_n_mu_is_two_over_3n_minus_2():
+    from scipy.optimize import minimize_scalar
+
+    mu = 2300.0     # μ_нач of 50Н tape, ГОСТ 10160-62 (Kovalenko p. 231)
+    best = minimize_scalar(lambda lp: -_rayleigh_torque_over_length_cubed(np.exp(lp), mu),
+                           bounds=(np.log(10), np.log(5e3)), method="bounded", options={"xatol": 1e-10})
+    n_opt = float(hardware.rod_demagnetizing_factor(np.exp(best.x)))
+    # the optimiser's tolerance in ln p (1e-10) moves N by 1.7e-10 relative; 1e-6 leaves room for its stopping rule
+    assert_allclose(n_opt, hardware.rayleigh_optimal_demagnetizing_factor(mu), rtol=1e-6)
+
+
+def test_the_book_optimal_loss_coefficient_is_12_40_at_half_the_field():
+    # (12.37)'s 0.167 a H0³ is (12.40) at N μ_нач = 1, H_ц = H0/2: (4/3)/8 = 1/6 (μ0 for SI)
+    row = PRINTED["kov-rayleigh-optimal-loss-coefficient"]
+    mu = 2300.0
+    coefficient = hardware.rayleigh_central_loop_energy(1.0, 1.0 / mu, 1.0, mu) / MU_0
+    assert abs(coefficient - row.value) <= row.resolution
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "Kovalenko's (12.36), read as N_ц.0 = 1/μ_нач (the numerator is lost in the OCR; (12.37)'s 0.167 "
+    "fits 1), is not the optimum of (12.1) with (12.40) at a fixed length: with N = 0.93 p^-1.7 the torque "
+    "p^-2 (1 + N μ)^-3 peaks at N μ = 2/(3·1.7 − 2) = 0.645; at N μ = 1 it is 7 % lower. The book "
+    "quotes (12.36) from his refs. [31, 54, 55], whose assumptions may differ."))
+def test_the_book_rayleigh_optimum_n_mu_is_one():
+    assert_allclose(hardware.rayleigh_optimal_demagnetizing_factor(2300.0) * 2300.0, 1.0, rtol=0.05)
+
+
+def test_at_n_mu_one_the_torque_is_seven_percent_below_the_optimum():
+    mu = 2300.0
+    p_book = (0.93 * mu) ** (1 / 1.7)                                        # N μ = 1
+    p_best = (0.93 * mu / (2 / 3.1)) ** (1 / 1.7)                            # N μ = 2/3.1
+    loss = 1 - _rayleigh_torque_over_length_cubed(p_book, mu) / _rayleigh_torque_over_length_cubed(p_best, mu)
+    # closed form 1 − (1/0.645)^(2/1.7) (1.645/2)³ = 0.0686; rounding only
+    assert_allclose(loss, 1 - (3.1 / 2) ** (2 / 1.7) * ((1 + 2 / 3.1) / 2) ** 3, rtol=1e-12)
+    assert 0.06 < loss < 0.08
