@@ -1,6 +1,6 @@
 """Hardware that makes or measures a field: turns and wires, air-core magnetorquers and
 their design space, the bench's coil driver (full-scale moment, PWM duty), windings, cored
-rods and electromagnets, permanent magnets, hysteresis rods, and the sensors (datasheet
+rods and electromagnets, permanent magnets, hysteresis rods and their design, and the sensors (datasheet
 error models, cosine-law sun sensors).
 
 Pure functions of numpy arrays, SI. Re-exports the public functions of its modules.
@@ -31,6 +31,10 @@ from .eddy_losses import (rod_eddy_power, rod_eddy_profile_coefficient, rod_eddy
 from .hysteresis import (hysteresis_damping_torque, hysteresis_loop_energy, hysteresis_response,
                          hysteresis_slope, limb_constants, limb_induction, limiting_loop_energy,
                          rod_cycle_energy, settled_hysteresis_loop)
+from .rod_design import (despin_torque_required, parallel_rod_demagnetizing_ratio, parallel_rod_mutual_factor,
+                         prolate_demagnetizing_factor, rod_central_loop_energy, rod_count_required,
+                         rod_optimal_elongation, rod_torque_per_length_cubed, rod_volume_required,
+                         rayleigh_central_loop_energy, rayleigh_optimal_demagnetizing_factor)
 from .winding import (ampere_turns_power, coaxial_system_scale_for_power, helmholtz_pair_power, winding_mass,
                       winding_power, winding_resistance, winding_voltage)
 
@@ -38,6 +42,10 @@ __all__ = ["rod_eddy_profile_coefficient", "rod_eddy_power", "rod_eddy_torque", 
            "shell_eddy_torque", "rod_to_shell_eddy_ratio", "winding_parameter", "winding_damping_torque",
            "limb_constants", "limb_induction", "hysteresis_slope", "hysteresis_response", "hysteresis_loop_energy",
            "rod_cycle_energy", "settled_hysteresis_loop", "limiting_loop_energy", "hysteresis_damping_torque",
+           "rod_volume_required", "rod_count_required", "despin_torque_required", "rod_central_loop_energy",
+           "rod_torque_per_length_cubed", "rod_optimal_elongation", "rayleigh_central_loop_energy",
+           "rayleigh_optimal_demagnetizing_factor", "prolate_demagnetizing_factor",
+           "parallel_rod_mutual_factor", "parallel_rod_demagnetizing_ratio",
            "SHAPES", "Turn", "WireSizes", "turn_area", "turn_length", "wire_area", "wire_diameter", "awg_diameter",
            "dipole_moment", "current_for_moment", "coil_current", "turn_resistance", "coil_resistance",
            "moment_from_voltage", "wire_area_for_moment", "joule_power", "joule_power_for_moment",
