@@ -19,7 +19,8 @@ from .._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "polar_orbit", "e47_body", "e47_case", "e48_case", "error_sweep",
            "libration_study", "eddy_shell_match", "comparison_rows", "polar_checks", "e47_checks", "e48_checks",
-           "damper_checks", "eddy_checks", "DAMPING_FACTORS", "LIBRATION_DAMPING_FACTORS"]
+           "damper_checks", "eddy_checks", "rod_checks", "rod_pair_ratios", "tns0_rod_volumes", "DAMPING_FACTORS",
+           "LIBRATION_DAMPING_FACTORS"]
 
 #: The chapter's inputs: names in ``magbench/data/kovalenko/params.toml``.
 INPUTS = (
@@ -339,6 +340,69 @@ def eddy_shell_match(params=None):
             "sphere_thickness_fit": ref * sphere / tau_fit, "sphere_thickness_slope": ref * sphere / tau_slope}
 
 
+def rod_pair_ratios():
+    """Kovalenko's rod-pair experiment (E47b, §12.2, p. 239) beside the library's reconstruction.
+
+    Returns
+    -------
+    dict
+        ``gap`` (4,) Δ, axis to axis [m], ``measured`` (4,) N_c∞/N_c0 [-], ``model`` (4,)
+        :func:`magbench.hardware.parallel_rod_demagnetizing_ratio` for the measured rods
+        [-]; ``curve_gap`` (200,) [m], ``curve`` (the measured rods) and ``curve_book`` (the
+        spheroids of the book's theoretical curve) [-]; ``text_estimate``, the text's
+        (√2)^1.7 for coincident rods from the rod demagnetising factor's power law [-], and
+        ``merged``, the exact ratio for two coincident spheroids of the book's curve [-].
+    """
+    from ...hardware import parallel_rod_demagnetizing_ratio, prolate_demagnetizing_factor, rod_demagnetizing_factor
+
+    pr = load_printed("kovalenko")
+    length, diameter = pr["kov-rod-pair-rod-length"].value, pr["kov-rod-pair-rod-diameter"].value
+    book_diameter = pr["kov-rod-pair-theory-diameter"].value
+    gap = np.array([pr[f"kov-rod-pair-gap-{i}"].value for i in range(1, 5)])
+    measured = np.array([pr[f"kov-rod-pair-ratio-{i}"].value for i in range(1, 5)])
+    curve_gap = np.geomspace(diameter, 0.25 * length, 200)        # from touching to a quarter of the length
+    p = length / diameter
+    return {"gap": gap, "measured": measured, "model": parallel_rod_demagnetizing_ratio(gap, length, diameter),
+            "curve_gap": curve_gap, "curve": parallel_rod_demagnetizing_ratio(curve_gap, length, diameter),
+            "curve_book": parallel_rod_demagnetizing_ratio(curve_gap, length, book_diameter),
+            "text_estimate": float(rod_demagnetizing_factor(p / np.sqrt(2)) / rod_demagnetizing_factor(p)),
+            "merged": float(prolate_demagnetizing_factor(length / book_diameter / np.sqrt(2))
+                            / prolate_demagnetizing_factor(length / book_diameter)),
+            "length": length, "diameter": diameter}
+
+
+def tns0_rod_volumes():
+    """TNS-0's rods by Kovalenko's §12.2 procedure, beside the volume chapter 7 calibrated.
+
+    The required damping torque is Fig. 14's slope (chapter 7's linear fit); the rods are
+    taken to turn through the orbit-mean field amplitude, as the procedure assumes.
+
+    Returns
+    -------
+    dict
+        ``torque`` [N·m]; ``field_amplitude`` (the orbit-mean |B|/μ0) [A/m];
+        ``loop_energy`` (chapter 7's rod loop at that amplitude) [J/m³]; ``volume_own``
+        (total, with that loop, k_φ = 1) and ``volume_transit`` (total, with the Transit rods'
+        loop and k_φ = 0.72, Kovalenko p. 221) [m³]; ``volume_calibrated`` (the two rods'
+        total chapter 7 calibrated on Fig. 14 with the full dynamics' energy balance) [m³].
+    """
+    from ...constants import MU_0
+    from ...hardware import rod_central_loop_energy, rod_volume_required
+    from ..ch07_tns0 import decay_balance, decay_fits, tns0_orbit
+
+    p = chapter_parameters("ch07", overrides="")
+    torque = -decay_fits()[2].parameters["slope"] / 3600.0
+    orbit = tns0_orbit(p)
+    t = np.linspace(0.0, orbit.period, 720, endpoint=False)
+    field = float(np.mean(np.linalg.norm(orbit.field(t), axis=-1)) / MU_0)
+    loop, _ = rod_central_loop_energy(field, 0.0, p["rod_coercivity"], p["rod_remanence"], p["rod_saturation"])
+    kphi = load_printed("kovalenko")["kov-kphi-long-rods"].value_low      # 0.72–0.73 for long rods (p. 221)
+    return {"torque": float(torque), "field_amplitude": field, "loop_energy": float(loop),
+            "volume_own": float(rod_volume_required(torque, loop)),
+            "volume_transit": float(rod_volume_required(torque, p["transit_loop_energy"], kphi)),
+            "volume_calibrated": float(2.0 * decay_balance(p)["calibrated_volume"]), "averaging_factor": kphi}
+
+
 def comparison_rows(params=None):
     """Chapter 8: the planar model beside Kovalenko's own simulations (his ЭЦВМ runs of E47, Fig. 6.7).
 
@@ -351,7 +415,17 @@ def comparison_rows(params=None):
     note = ("his figure survives only as a caption; the value is read off the printed curve, so the tolerance is "
             "one unit of the printed digit. Ours: the planar equation (6.39) with the exact η(u) and |B|(u), "
             "ten orbits from γ = 0 at the node, the largest |γ| over the last two")
-    return [
+    rods = rod_pair_ratios()
+    rod_rows = [
+        make_row(f"kov-rod-pair-ratio-{i + 1}",
+                 f"Mean demagnetising factor of a rod pair over one rod's, Δ = {g * 1e3:g} mm (E47b)",
+                 "Kovalenko (1975) §12.2, p. 239 (measured, mumetal rods 3 mm × 600 mm)", m, model,
+                 printed[f"kov-rod-pair-ratio-{i + 1}"].resolution_si, unit="1",
+                 note=("reconstruction (ours): each rod a prolate spheroid of the measured rods' elongation whose "
+                       "outside field is that of a line charge along its axis, Δ read axis to axis; the book's "
+                       "formula is lost in the transcription. The tolerance is the measurement's last digit"))
+        for i, (g, m, model) in enumerate(zip(rods["gap"], rods["measured"], rods["model"]))]
+    return rod_rows + [
         make_row("kov-e47-fig6-7-error", "E47: largest steady-state angle from B (magnet + viscous damper)",
                  "Kovalenko (1975) §6.5, Fig. 6.7 (his computer simulation)", peak.value, case["simulated"],
                  2 * peak.resolution_si, unit="deg", scale=DEG, note=note),
@@ -506,6 +580,31 @@ def damper_checks():
         computation="magbench.control.viscous_detumble_time / dry_detumble_time")]
 
 
+def rod_checks():
+    """§12.2 (E47b, (12.37)): the rod-pair estimate and the Rayleigh loss coefficient."""
+    from ...constants import MU_0
+    from ...hardware import rayleigh_central_loop_energy
+
+    printed = load_printed("kovalenko")
+    rods = rod_pair_ratios()
+    mu = 2300.0          # any initial permeability: the coefficient does not depend on it
+    coefficient = float(rayleigh_central_loop_energy(1.0, 1.0 / mu, 1.0, mu) / MU_0)
+    return [
+        printed_check(printed["kov-rod-pair-coincident-estimate"], id="kov-rod-pair-coincident-estimate",
+                      chapter="ch08", location="§12.2, p. 239", computed=rods["text_estimate"],
+                      explanation=(f"Two coincident rods act as one of √2 times the diameter, and with N ∝ p^-1.7 "
+                                   f"that is (√2)^1.7 = {rods['text_estimate']:.4f}: the text's 1.8. For the "
+                                   f"spheroids of its own theoretical curve the exact ratio is {rods['merged']:.3f}; "
+                                   "the 1.7 power law is a fit for cylinders."),
+                      computation="magbench.hardware.rod_demagnetizing_factor"),
+        printed_check(printed["kov-rayleigh-optimal-loss-coefficient"], id="kov-rayleigh-optimal-loss-coefficient",
+                      chapter="ch08", location="§12.2, eq. (12.37), p. 234", computed=coefficient,
+                      explanation=(f"The Rayleigh loss per cycle (4/3) a H³ at the rod's centre, where N μ_нач = 1 "
+                                   f"halves the field: (4/3)/8 = {coefficient:.4f} a H0³."),
+                      computation="magbench.hardware.rayleigh_central_loop_energy"),
+    ]
+
+
 def eddy_checks():
     """§12.1 (E44): the rod-eddy factors the book evaluates."""
     from ...hardware import rod_eddy_profile_coefficient, rod_to_shell_eddy_ratio
@@ -528,7 +627,7 @@ CHAPTER = Chapter(
     inputs=INPUTS,
     figure_modules=("magbench.chapters.ch08_field_stabilisation.figures",),
     comparisons=comparison_rows,
-    row_kinds=(("kov-e47-fig6-7-", "simulation"),),
+    row_kinds=(("kov-e47-fig6-7-", "simulation"), ("kov-rod-pair-ratio-", "measurement")),
     check_classes=(
         # the wrong η₂ and the truncated series feed the forcing amplitudes (6.62) the book solves with
         ("kov-polar-eta2", "printed", "downstream"),
@@ -551,13 +650,16 @@ CHAPTER = Chapter(
         ("kov-e48-", "printed", "contained"),
         ("kov-dry-viscous-time-ratio", "evaluated", None),
         ("kovalenko-eddy-alpha", "printed", None),
+        ("kov-rod-pair-", "printed", None),
+        ("kov-rayleigh-", "printed", None),
     ),
-    source_checks=(polar_checks, e47_checks, e48_checks, damper_checks, eddy_checks),
+    source_checks=(polar_checks, e47_checks, e48_checks, damper_checks, eddy_checks, rod_checks),
     cites="Kovalenko (1975) §§4.2, 5.4, 6.2–6.5 (eqs. (6.8)–(6.79), Figs. 6.7–6.10), §12.1–12.2",
     finds=("which of Kovalenko's printed series and worked estimates for a magnet held along the field reproduce, "
            "how far his steady-error estimates are from a simulation, what a magnetic ball damper does for a "
            "gravity-gradient boom, and whether eddy currents could explain TNS-0's spin decay"),
     source_names=(("kovalenko", "Kovalenko (1975)"),),
     discussed_in=(("kov-polar-", "ch08-polar"), ("kov-e47-", "ch08-e47"), ("kov-e48-", "ch08-e48"),
-                  ("kov-dry-viscous-time-ratio", "ch08-dampers"), ("kovalenko-eddy-alpha", "ch08-eddy")),
+                  ("kov-dry-viscous-time-ratio", "ch08-dampers"), ("kovalenko-eddy-alpha", "ch08-eddy"),
+                  ("kov-rod-pair-", "ch08-rods"), ("kov-rayleigh-", "ch08-rods")),
 )

@@ -9,7 +9,8 @@ numbers are marked where the text gives them.
 import numpy as np
 
 from ...io import load_printed
-from . import (CHAPTER, DAMPING_FACTORS, SETTLED_ANGLE, e47_case, eddy_shell_match, error_sweep, libration_study)
+from . import (CHAPTER, DAMPING_FACTORS, SETTLED_ANGLE, e47_case, eddy_shell_match, error_sweep, libration_study,
+               rod_pair_ratios)
 from .._base import chapter_parameters
 from ..registry import FigureData, FigureParameter, Series, FigureSpec, register
 
@@ -367,6 +368,38 @@ def _eddy_parameters():
     return _input_parameters(("shell_conductivity",))
 
 
+# --- §12.2: two parallel rods -----------------------------------------------------------------
+
+def compute_rod_interaction():
+    """N_c∞/N_c0 of two parallel rods against their distance: measured (E47b) and reconstructed."""
+    r = rod_pair_ratios()
+    a = 2.0 * r["curve_gap"] / r["length"]
+    return FigureData("", "", "", {}, [
+        Series("measured (Kovalenko p. 239)", {"a": ("1", 2.0 * r["gap"] / r["length"]), "ratio": ("1", r["measured"])}),
+        Series("reconstruction, the measured rods", {"a": ("1", a), "ratio": ("1", r["curve"])}),
+        Series("reconstruction, the book's spheroids (p = 300)", {"a": ("1", a), "ratio": ("1", r["curve_book"])}),
+        Series("coincident rods", {"text": ("1", [r["text_estimate"]]), "merged": ("1", [r["merged"]])}),
+    ])
+
+
+def plot_rod_interaction(data):
+    """Ratio against a = 2Δ/l, log abscissa."""
+    import matplotlib.pyplot as plt
+
+    measured, ours, book, coincident = data.series
+    fig, ax = plt.subplots(figsize=(5.6, 3.2))
+    ax.plot(ours.columns["a"][1], ours.columns["ratio"][1], "C0-", label=ours.label)
+    ax.plot(book.columns["a"][1], book.columns["ratio"][1], "C2--", label=book.label)
+    ax.plot(measured.columns["a"][1], measured.columns["ratio"][1], "ko", label=measured.label)
+    ax.axhline(coincident.columns["text"][1][0], color="C3", linestyle=":", label="the text's (√2)^1.7 for coincident rods")
+    ax.set_xscale("log")
+    ax.set_xlabel("a = 2Δ/l")
+    ax.set_ylabel("N_c∞ / N_c0")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7)
+    return fig
+
+
 register(FigureSpec("kov-field-rotation", "The field's rotation on a circular magnetopolar orbit: exact against "
                     "the printed series", f"{SOURCE} §6.4, eqs. (6.32)–(6.34); §6.5, eq. (6.61)",
                     compute_field_rotation, plot_field_rotation, {}))
@@ -387,3 +420,6 @@ register(FigureSpec("kov-libration-trade", "The ball damper's coupling against s
 register(FigureSpec("kov-eddy-shell", "Eddy-current spin decay of TNS-0 in a conducting shell, against Fig. 14",
                     f"{SOURCE} §4.2, eqs. (4.23)–(4.26); TNS-0 preprint Table 1, Fig. 14", compute_eddy_shell,
                     plot_eddy_shell, _eddy_parameters))
+register(FigureSpec("kov-rod-interaction", "Two parallel hysteresis rods: the mean demagnetising factor against "
+                    "their distance (Kovalenko Fig. 12.9, regenerated)", f"{SOURCE} §12.2, p. 239, Fig. 12.9 (caption only)",
+                    compute_rod_interaction, plot_rod_interaction, {}))
