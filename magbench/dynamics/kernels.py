@@ -287,7 +287,11 @@ def planar_rates(state, field_angle, field_angle_acceleration, field_b, mean_mot
     magnet = damper_moment * field_b * np.sin(gamma1)
     damper_torque = np.where(elastic, -magnet, held)
     safe = np.where(elastic, viscous, 1.0)
-    rate1 = np.where(elastic, rate + (stiffness * (gamma - gamma1) - magnet) / safe, 0.0)
+    # The magnet's drive g = L_y B sin γ1 − c(γ − γ1) is held by the friction up to M_T; only
+    # the excess turns it against k_д (with M_T = 0, g − 0 = g exactly: the viscous case unchanged).
+    drive = magnet - stiffness * (gamma - gamma1)
+    excess = drive - np.clip(drive, -friction, friction)
+    rate1 = np.where(elastic, rate - excess / safe, 0.0)
     torque = (-moment * field_b * np.sin(gamma)
               + 1.5 * mean_motion**2 * inertia_difference * np.sin(2.0 * (field_angle + gamma)) + damper_torque)
     acceleration = torque / inertia - field_angle_acceleration

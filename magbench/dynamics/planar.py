@@ -72,10 +72,13 @@ class PlanarDamper:
         magnet held along B) or, with ``damper_moment`` > 0, between the body and the damper's
         magnet (then > 0).
     friction : float or array_like, shape (M,), optional
-        M_T, the dry-friction torque, ≥ 0 [N·m]; only with the magnet held along B.
+        M_T, the dry-friction torque, ≥ 0 [N·m]: between the body and B (the damper's magnet
+        held along B) or, with ``damper_moment`` > 0, between the body (the damper's case) and
+        the damper's magnet (then with ``viscous`` > 0 beside it; see Notes).
     friction_rate : float, optional
         ε > 0, the rate below which the dry friction is smoothed, M_T tanh(γ̇/ε) in place of
-        M_T sign γ̇ [rad/s].
+        M_T sign γ̇, with the magnet held along B; the elastic damper's friction is not
+        smoothed (see Notes) [rad/s].
     stiffness : float or array_like, shape (M,), optional
         c, the elastic coupling of the damper's magnet to the body, ≥ 0 [N·m/rad].
     damper_moment : float or array_like, shape (M,), optional
@@ -85,12 +88,29 @@ class PlanarDamper:
     Notes
     -----
     Kovalenko (1975) eqs. (6.39) (viscous, k_д γ̇), p. 137 (dry friction, M_T sign γ̇ in place
-    of k_д γ̇) and (6.43)–(6.44) (the elastically coupled magnet, seed lines 137–138).
+    of k_д γ̇) and (6.43)–(6.44) (the elastically coupled magnet, seed lines 137–138). The
+    elastic damper with dry friction is the book's example on p. 150 (seed line 150, fig. 6.10:
+    "a dry-friction damper with an elastic coupling to the body"): the friction acts between the
+    magnet (the inner sphere of fig. 6.4) and the body's case, on the relative rate γ̇ − γ̇1, and
+    (6.44) becomes c(γ − γ1) + k_д(γ̇ − γ̇1) + M_T sign(γ̇ − γ̇1) = L_y B sin γ1.
 
     Deviation from source: the dry friction is M_T tanh(γ̇/ε) (a smooth sign, so that the
     fixed-step integrator meets no discontinuity); it equals M_T sign γ̇ to 1 − tanh(5) =
     1.8e-4 relative where |γ̇| > 5ε, and it does not stick exactly: at rest under a torque
     below M_T the body creeps at γ̇ ≈ ε × torque/M_T.
+
+    Deviation from source (elastic damper with dry friction): the book's magnet is massless
+    (inertia term dropped, seed line 138) and its friction pure (no k_д). Massless and purely
+    dry, the magnet's rate is not a function of the state: it sticks to the case while
+    |L_y B sin γ1 − c(γ − γ1)| < M_T and jumps along the set where that drive equals ±M_T
+    otherwise (a sweeping process, not an ODE); with the smoothed sign, ε artanh(g/M_T) is the
+    rate and the equation is stiff beyond any fixed step (rate constant ∝ cosh²(slip/ε)).
+    Here a viscous k_д > 0 is kept beside the dry friction, which makes the massless magnet's
+    rate an explicit, Lipschitz function of the state with the exact (unsmoothed) sign:
+    γ̇1 = γ̇ − [g − clip(g, −M_T, M_T)]/k_д, g = L_y B sin γ1 − c(γ − γ1) (stuck while
+    |g| ≤ M_T). The book's pure dry friction is the limit k_д → 0; a small k_д (the damper's
+    slip torque k_д × slip ≪ M_T) reproduces it, at a step below ~k_д/(c + L_y B) (the
+    magnet's relaxation time during slip; RK4 is stable to 2.8 times it).
     """
 
     viscous: object = 0.0
@@ -108,9 +128,6 @@ class PlanarDamper:
         if np.any(elastic & (np.asarray(self.viscous) <= 0)):
             raise ValueError("viscous must be > 0 N·m·s where damper_moment > 0 (the massless damper magnet "
                              "of eq. (6.44) moves at a rate set by k_д)")
-        if np.any(elastic & (np.asarray(self.friction) > 0)):
-            raise ValueError("friction must be 0 where damper_moment > 0: dry friction in the elastic damper "
-                             "is not modelled")
         if np.any(~elastic & (np.asarray(self.stiffness) > 0)):
             raise ValueError("stiffness needs damper_moment > 0 (a spring to a magnet held along B is not modelled)")
 
@@ -157,7 +174,8 @@ def planar_rhs(state, field_angle, field_angle_acceleration, field_b, mean_motio
            J\ddot\gamma = -J\ddot\eta - LB\sin\gamma + \tfrac32\omega_0^2\Delta J\sin 2(\eta+\gamma) + M_д,
 
         M_д = −k_д γ̇ − M_T tanh(γ̇/ε) with the damper's magnet held along B, or, with an
-        elastic damper, M_д = −L_y B sin γ1 and γ̇1 = γ̇ + [c(γ − γ1) − L_y B sin γ1]/k_д.
+        elastic damper, M_д = −L_y B sin γ1 and γ̇1 = γ̇ − [g − clip(g, −M_T, M_T)]/k_д,
+        g = L_y B sin γ1 − c(γ − γ1) (= γ̇ + [c(γ − γ1) − L_y B sin γ1]/k_д without friction).
 
     Notes
     -----
@@ -172,6 +190,13 @@ def planar_rhs(state, field_angle, field_angle_acceleration, field_b, mean_motio
     spacecraft's", seed line 138), which leaves (6.44) c(γ − γ1) + k_д(γ̇ − γ̇1) = L_y B sin γ1,
     solved here for γ̇1 (Not in the sources: that first-order form). The torque of the
     coupling on the body, −c(γ − γ1) − k_д(γ̇ − γ̇1), then equals −L_y B sin γ1.
+
+    With dry friction M_T between the magnet and the case (p. 150, fig. 6.10) the massless
+    magnet's equation is c(γ − γ1) + k_д s + M_T sign s = L_y B sin γ1 = g + c(γ − γ1), s = γ̇ − γ̇1:
+    the friction holds the drive g while |g| ≤ M_T (s = 0, the magnet turns with the body) and
+    s = [g − M_T sign g]/k_д beyond; the body still feels −L_y B sin γ1. The power of the
+    damper on the whole (body, magnet, spring) is −s g = −(k_д s² + M_T |s|) ≤ 0 in a fixed
+    field. Deviation from source: k_д > 0 is needed beside M_T (see :class:`PlanarDamper`).
 
     Examples
     --------

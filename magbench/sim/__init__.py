@@ -23,7 +23,7 @@ from .passive import PassiveRun, PassiveSatellite, initial_passive_state, simula
 from .passive_regime import orbit_mean_field, passive_final_regime, passive_transition_times
 from .passive_balance import flat_spin_decay_rate
 from .libration import LibrationSatellite, simulate_libration
-from .planar import simulate_planar
+from .planar import planar_error_orbit_maxima, simulate_planar
 from .result import SimulationResult
 from .spinning import (RotorRun, RotorSatellite, rotor_body_rhs, rotor_dimensionless, rotor_finite_difference_monodromy,
                        rotor_floquet_multipliers, rotor_gain_scales, rotor_linearised_matrices, rotor_normalised_rhs,
@@ -48,4 +48,4 @@ __all__ = ["rk4_step", "SimulationResult", "simulate_free_swing", "integrated_sw
            "rotor_satellite_with_products", "reference_momentum_rate_offset", "normalised_pointing_error",
            "maxima_per_orbit", "pointing_error_orbit_maxima", "tilted_dipole_pointing_error",
            "symmetric_rotor_orbit_maxima", "relay_spin_correction", "relay_spin_torque_over_turn",
-           "simulate_planar", "LibrationSatellite", "simulate_libration"]
+           "simulate_planar", "planar_error_orbit_maxima", "LibrationSatellite", "simulate_libration"]

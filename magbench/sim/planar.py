@@ -6,14 +6,15 @@ composed from :func:`magbench.earth.polar_field_direction_angle` and its derivat
 
 import numpy as np
 
-from .._validate import as_choice, as_finite, as_positive_scalar, check_member_steps
+from .._validate import as_choice, as_count, as_finite, as_positive_scalar, check_member_steps
 from ..dynamics.kernels import planar_rates
 from ..dynamics.planar import PlanarBody, PlanarDamper
 from ..earth.polar_orbit import polar_field_b, polar_field_direction_acceleration, polar_field_direction_angle
 from ..integrate import rk4_step
 from .result import SimulationResult
+from .rotor_variants import maxima_per_orbit
 
-__all__ = ["simulate_planar"]
+__all__ = ["simulate_planar", "planar_error_orbit_maxima"]
 
 _FIELDS = ("polar", "direction", "constant")
 
@@ -114,3 +115,57 @@ def simulate_planar(body, damper, mean_motion, equatorial_b, initial_angle, init
                             ("gamma", "rate", "damper_angle"), (), ("field_angle", "field_b"),
                             params={"body": body, "damper": damper, "mean_motion": n, "equatorial_b": b0,
                                     "field": field, "argument_of_latitude0": phase, "step": h})
+
+
+def planar_error_orbit_maxima(run, mean_motion, last=None):
+    r"""Largest |γ| of a planar run in each whole orbit (orbit k: k T ≤ t < (k + 1) T), per member.
+
+    Parameters
+    ----------
+    run : SimulationResult
+        A run of :func:`simulate_planar` (states ``gamma`` of shape (K, M)) [rad].
+    mean_motion : float
+        ω0 > 0, the orbit's mean motion; T = 2π/ω0 [rad/s].
+    last : int, optional
+        Keep only the last ``last`` whole orbits (≥ 1, at most the run's whole orbits); by
+        default every whole orbit of the run [-].
+
+    Returns
+    -------
+    ndarray, shape (orbits, M)
+        max |γ| over each orbit, oldest first [rad]. A run of a whole number of orbits ends
+        with a sample at t = N T, which opens orbit N and is left out.
+
+    Notes
+    -----
+    Kovalenko (1975) §6.5 reads the steady stabilisation error γ_max of a run over an orbit
+    (E47 fig. 6.7, seed line 147; E48 fig. 6.10, seed line 150: "the process settles by the
+    end of the orbit, where γ_max ≈ 5.5–7.5°"). Orbits are cut by
+    :func:`magbench.sim.maxima_per_orbit`'s rule.
+
+    Examples
+    --------
+    >>> from magbench.dynamics import PlanarBody, PlanarDamper
+    >>> run = simulate_planar(PlanarBody(650.0, 500.0), PlanarDamper(viscous=0.2), 1e-3, 2e-5,
+    ...                       [0.0, 0.1], 0.0, 4 * np.pi / 1e-3, 10.0)
+    >>> planar_error_orbit_maxima(run, 1e-3).shape
+    (2, 2)
+    """
+    if not isinstance(run, SimulationResult) or "gamma" not in run.state_labels:
+        raise ValueError(f"run must be a SimulationResult of simulate_planar (with state 'gamma'), "
+                         f"got {type(run).__name__}")
+    n = as_positive_scalar("mean_motion", mean_motion, unit="rad/s")
+    gamma = np.abs(np.asarray(run.gamma))
+    orbits_in_run = int(np.floor(run.time[-1] * n / (2.0 * np.pi) * (1.0 + 1e-12)))
+    if orbits_in_run < 1:
+        raise ValueError(f"run must span at least one whole orbit of 2π/mean_motion = {2 * np.pi / n:.6g} s, "
+                         f"got {run.time[-1]:.6g} s")
+    time_orbits = run.time * n / (2.0 * np.pi)
+    maxima = np.stack([maxima_per_orbit(time_orbits, gamma[:, i], orbits_in_run) for i in range(gamma.shape[1])],
+                      axis=-1)
+    if last is None:
+        return maxima
+    keep = as_count("last", last)
+    if keep > orbits_in_run:
+        raise ValueError(f"last must be between 1 and the run's {orbits_in_run} whole orbits, got {keep}")
+    return maxima[-keep:]

@@ -85,6 +85,57 @@ def test_elastic_damper_obeys_6_44():
     assert_allclose(out[:, 1] * 150.0, -4e-3 * (g - g1) - 0.05 * (w - w1), atol=1e-17)
 
 
+def _friction_states():
+    """States of the elastic dry-friction damper on both sides of the stick limit |g| = M_T:
+    g = L_y B sin γ1 − c(γ − γ1) within ±1.1e-3 N·m against M_T = 3e-4 N·m."""
+    rng = np.random.default_rng(48)
+    return _state(rng.uniform(-0.1, 0.1, 200), rng.uniform(-2e-3, 2e-3, 200), rng.uniform(-0.1, 0.1, 200))
+
+
+def test_elastic_damper_without_friction_is_unchanged():
+    """M_T = 0 gives the viscous elastic damper's γ̇1 = γ̇ + [c(γ − γ1) − L_y B sin γ1]/k_д bit for bit."""
+    state, b = _friction_states(), 2.2e-5
+    out = planar_rhs(state, 0.3, 1e-6, b, 1e-3, PlanarBody(150.0, 0.0),
+                     PlanarDamper(viscous=0.05, stiffness=4e-3, damper_moment=120.0))
+    g, w, g1 = state[:, 0], state[:, 1], state[:, 2]
+    # The formula before dry friction was added, evaluated in its order: equal to the last bit.
+    np.testing.assert_array_equal(out[:, 2], w + (4e-3 * (g - g1) - 120.0 * b * np.sin(g1)) / 0.05)
+
+
+def test_elastic_dry_friction_sticks_below_m_t_and_slips_beyond():
+    """c(γ − γ1) + k_д s + M_T sign s = L_y B sin γ1 with s = γ̇ − γ̇1 (sign s ∈ [−1, 1] at s = 0)."""
+    state, b, mt, kd = _friction_states(), 2.2e-5, 3e-4, 1e-2
+    damper = PlanarDamper(viscous=kd, friction=mt, stiffness=4e-3, damper_moment=120.0)
+    out = planar_rhs(state, 0.0, 0.0, b, 1e-3, PlanarBody(150.0, 0.0), damper)
+    g, w, g1 = state[:, 0], state[:, 1], state[:, 2]
+    drive = 120.0 * b * np.sin(g1) - 4e-3 * (g - g1)
+    slip = w - out[:, 2]
+    stuck = np.abs(drive) <= mt
+    assert 20 < stuck.sum() < 180                 # both regimes are exercised
+    # Stuck: the magnet turns with the body exactly (γ̇1 = γ̇, s = 0).
+    np.testing.assert_array_equal(slip[stuck], 0.0)
+    # Slipping: (6.44) with M_T sign s; rounding of terms ≈ 3e-3 N·m.
+    assert_allclose((4e-3 * (g - g1) + kd * slip + mt * np.sign(slip))[~stuck], (120.0 * b * np.sin(g1))[~stuck],
+                    atol=1e-17)
+    # The body still feels the magnet's torque −L_y B sin γ1 (rounding only).
+    assert_allclose(out[:, 1] * 150.0, -120.0 * b * np.sin(g1), atol=1e-18)
+
+
+def test_elastic_dry_friction_never_adds_energy():
+    """In a fixed field (η̈ = 0, ΔJ = 0) the power of the damper on body + magnet + spring,
+    d/dt[Jγ̇²/2 + LB(1 − cos γ) + L_yB(1 − cos γ1) + c(γ − γ1)²/2], is −(k_д s² + M_T|s|) ≤ 0."""
+    state, b, mt, kd, c, ly, j, m = _friction_states(), 2.2e-5, 3e-4, 1e-2, 4e-3, 120.0, 150.0, 30.0
+    out = planar_rhs(state, 0.0, 0.0, b, 1e-3, PlanarBody(j, m),
+                     PlanarDamper(viscous=kd, friction=mt, stiffness=c, damper_moment=ly))
+    g, w, g1 = state[:, 0], state[:, 1], state[:, 2]
+    w1, acc = out[:, 2], out[:, 1]
+    power = j * w * acc + m * b * np.sin(g) * w + ly * b * np.sin(g1) * w1 + c * (g - g1) * (w - w1)
+    slip = w - w1
+    # Terms ≈ 1e-5 W cancel: rounding ≈ 1e-21 W.
+    assert_allclose(power, -(kd * slip**2 + mt * np.abs(slip)), atol=1e-20)
+    assert np.all(power <= 1e-20) and np.any(power < -1e-8)
+
+
 def test_energy_integral():
     # E = Jγ̇²/2 + LB(1 − cos γ): zero at rest along B, LB(1 − cos γ0) at rest at γ0.
     assert planar_energy(0.0, 0.0, 650.0, 500.0, 2e-5) == 0.0
@@ -103,7 +154,7 @@ def test_members_broadcast():
     (lambda: PlanarBody(1.0, -1.0), "moment"),
     (lambda: PlanarDamper(viscous=-0.1), "viscous"),
     (lambda: PlanarDamper(damper_moment=10.0), "viscous must be > 0"),
-    (lambda: PlanarDamper(viscous=0.1, friction=1e-4, damper_moment=10.0), "friction must be 0"),
+    (lambda: PlanarDamper(friction=1e-4, stiffness=1e-3, damper_moment=10.0), "viscous must be > 0"),
     (lambda: PlanarDamper(stiffness=1e-3), "stiffness"),
     (lambda: PlanarDamper(friction_rate=0.0), "friction_rate"),
     (lambda: planar_rhs([0.0, 0.0], 0.0, 0.0, 2e-5, 1e-3, PlanarBody(1.0, 1.0), PlanarDamper()), "state"),

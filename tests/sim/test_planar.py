@@ -1,6 +1,6 @@
 """magbench.sim.simulate_planar: the integrated planar model against its first integral, the
-linearised forced response (6.62)–(6.64), the elastic damper's transfer function (6.66)–(6.67)
-and the Coulomb oscillator's amplitude loss."""
+linearised forced response (6.62)–(6.64), the elastic damper's transfer function (6.66)–(6.67),
+the Coulomb oscillator's amplitude loss and the elastic damper with dry friction (E48)."""
 
 import numpy as np
 import pytest
@@ -8,7 +8,7 @@ from numpy.testing import assert_allclose
 
 from magbench.control import elastic_damper_response, polar_forced_response, polar_forcing_coefficients
 from magbench.dynamics import PlanarBody, PlanarDamper, planar_energy
-from magbench.sim import simulate_planar
+from magbench.sim import planar_error_orbit_maxima, simulate_planar
 
 N0 = 1e-3            # mean motion [rad/s]
 B0 = 2e-5            # equatorial field [T]
@@ -134,3 +134,95 @@ def test_e47_fig_6_7_computed():
                                        "0.03° outside the half unit of the printed 'about 17°' (read off Fig. 6.7)")
 def test_e47_fig_6_7_printed_17_degrees():
     assert_allclose(_e47_run()[0], 17, atol=0.5)
+
+
+def _elastic_energy(run, j, ly, c, b):
+    """Jγ̇²/2 + L_yB(1 − cos γ1) + c(γ − γ1)²/2 [J]: the body without a magnet, the damper's
+    magnet in a fixed field and the spring between them."""
+    g, g1 = run.gamma, run.damper_angle
+    return 0.5 * j * run.rate**2 + ly * b * (1 - np.cos(g1)) + 0.5 * c * (g - g1) ** 2
+
+
+def test_elastic_dry_friction_never_adds_energy_along_a_run():
+    """In a constant field the energy only falls (power −(k_д s² + M_T|s|)); three starts."""
+    j, ly, c, kd, mt = 150.0, 120.0, 4e-3, 1e-2, 3e-4
+    damper = PlanarDamper(viscous=kd, friction=mt, stiffness=c, damper_moment=ly)
+    run = simulate_planar(PlanarBody(j, 0.0), damper, N0, B0, [0.3, 1.0, -2.0], [0.0, 1e-3, 0.0], 6000.0, 0.5,
+                          field="constant")
+    energy = _elastic_energy(run, j, ly, c, B0)
+    rise = np.diff(energy, axis=0).max()
+    # RK4's local error at h = 0.5 s against the slip's relaxation (c + L_yB)/k_д = 0.64 /s:
+    # any rise is below 1e-9 of the starting energy (≈ 1e-4 J).
+    assert rise < 1e-9 * energy[0].min()
+    assert np.all(energy[-1] < 0.2 * energy[0])
+
+
+def test_elastic_dry_friction_limits():
+    """M_T → 0 gives the viscous elastic damper; M_T above any drive locks the magnet to the body
+    (γ − γ1 = γ(0), γ1(0) = 0), which then swings as a pendulum of moment L_y without loss."""
+    j, ly, c, kd = 150.0, 120.0, 4e-3, 1e-2
+    args = (N0, B0, [0.3, 1.0], 0.0, 3000.0, 0.5)
+    viscous = simulate_planar(PlanarBody(j, 0.0), PlanarDamper(viscous=kd, stiffness=c, damper_moment=ly), *args,
+                              field="constant")
+    tiny = simulate_planar(PlanarBody(j, 0.0), PlanarDamper(viscous=kd, friction=1e-12, stiffness=c,
+                                                            damper_moment=ly), *args, field="constant")
+    # A friction 1e-12 N·m against drives ≈ 1e-3 N·m moves the magnet by ≈ 1e-12/k_д × t ≈ 3e-7 rad at most.
+    assert_allclose(tiny.gamma, viscous.gamma, atol=3e-7)
+    locked = simulate_planar(PlanarBody(j, 0.0), PlanarDamper(viscous=kd, friction=1.0, stiffness=c,
+                                                              damper_moment=ly), *args, field="constant")
+    # Stuck: γ̇1 = γ̇ exactly, so γ − γ1 keeps its start to rounding of RK4's sums (≈ 1e-16 rad).
+    assert_allclose(locked.gamma - locked.damper_angle, np.broadcast_to([0.3, 1.0], locked.gamma.shape), atol=1e-14)
+    energy = 0.5 * j * locked.rate**2 + ly * B0 * (1 - np.cos(locked.damper_angle))
+    # The conservative pendulum's RK4 drift at ω h = 1.3e-3: below 1e-10 relative.
+    assert_allclose(energy, np.broadcast_to(energy[:1], energy.shape), rtol=1e-10)
+
+
+def _e48_orbit():
+    """E48 (seed line 150): h ≈ 800 km, L_y = 120 A·m², M_T = 3e-4 N·m, c = 4e-3 N·m/rad,
+    J = 150 kg·m²; the body has no magnet of its own (its fixed magnets only make the coupling,
+    seed line 131) and no ΔJ is printed (0). Kovalenko's dipole 8.1e22 A·m²."""
+    from magbench.constants import EARTH_GM, EARTH_RADIUS, MU_0
+
+    r = EARTH_RADIUS + 800e3
+    return np.sqrt(EARTH_GM / r**3), MU_0 * 8.1e22 / (4 * np.pi * r**3)
+
+
+def _e48_maxima(viscous=1e-2, step=1.0):
+    n, b0 = _e48_orbit()
+    damper = PlanarDamper(viscous=viscous, friction=3e-4, stiffness=4e-3, damper_moment=120.0)
+    run = simulate_planar(PlanarBody(150.0, 0.0), damper, n, b0, 0.0, 0.0, 4 * np.pi / n, step)
+    return np.degrees(planar_error_orbit_maxima(run, n)[:, 0])
+
+
+def test_e48_fig_6_10_computed():
+    """The book's pure dry friction is the limit k_д → 0: k_д = 1e-2 N·m·s (slip torque
+    k_д × slip ≈ 2e-6 N·m ≪ M_T) at h = 1 s (h (c + L_yB)/k_д ≤ 0.93 with B ≤ 2B0; RK4 is stable to 2.8)."""
+    first, second = _e48_maxima()
+    # Our run from rest along B: 21.87° over the first orbit, 28.87° over the second;
+    # k_д = 1e-3 at h = 0.1 s gives 21.97° and 29.15° (the limit is within 0.3°).
+    assert_allclose([first, second], [21.87, 28.87], atol=0.01)
+
+
+@pytest.mark.xfail(strict=True, reason="E48: the integrated model gives γ_max ≈ 28–32° over the second and third "
+                                       "orbits from six starts (k_д → 0 moves it by 0.3°), not the printed "
+                                       "5.5–7.5° read off fig. 6.10; even the magnet locked to the body "
+                                       "(M_T = 1e-3 N·m) leaves 11°, as a rigid 120 A·m² magnet at ω_c ≈ 4ω0 would")
+def test_e48_fig_6_10_printed_range():
+    assert 5.5 - 0.5 <= _e48_maxima()[1] <= 7.5 + 0.5
+
+
+def test_orbit_maxima_are_the_largest_angle_of_each_orbit():
+    run = simulate_planar(PlanarBody(650.0, 500.0), PlanarDamper(viscous=0.2), N0, B0, [0.0, 0.3], 0.0,
+                          3 * 2 * np.pi / N0, 10.0)
+    maxima = planar_error_orbit_maxima(run, N0)
+    k = np.floor(run.time * N0 / (2 * np.pi) * (1 + 1e-12))
+    expected = np.array([np.abs(run.gamma[k == i]).max(axis=0) for i in range(3)])
+    # The same samples selected the same way: equal.
+    np.testing.assert_array_equal(maxima, expected)
+    np.testing.assert_array_equal(planar_error_orbit_maxima(run, N0, last=2), expected[1:])
+    with pytest.raises(ValueError, match="last"):
+        planar_error_orbit_maxima(run, N0, last=4)
+    with pytest.raises(ValueError, match="whole orbit"):
+        planar_error_orbit_maxima(run, N0 / 10)
+    with pytest.raises(ValueError, match="run"):
+        planar_error_orbit_maxima(run.gamma, N0)
