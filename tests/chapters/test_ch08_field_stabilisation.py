@@ -119,3 +119,25 @@ def test_bad_inputs_are_refused_by_name(name, value, message):
     study = CH.libration_study if name.startswith("libration") else CH.error_sweep
     with pytest.raises(ValueError, match=message):
         study(p)
+
+
+def test_e48_locked_damper_is_a_rigid_magnet_and_the_run_disagrees():
+    """With the friction a hundredfold the damper's magnet sticks to the body, so the body
+    moves as one carrying a rigid magnet of the damper's moment (no damping at all): the same
+    largest angles per orbit. Kovalenko's 5.5–7.5° is then out of reach of this model, and the
+    row says so."""
+    from magbench.dynamics import PlanarBody, PlanarDamper
+    from magbench.params import chapter_parameters
+    from magbench.sim import planar_error_orbit_maxima, simulate_planar
+
+    p = chapter_parameters(CHAPTER_KEY, overrides="")
+    case = CH.e48_case(p)
+    orbit = CH.polar_orbit(p, "e48_altitude")
+    rigid = simulate_planar(PlanarBody(p["e48_inertia"], p["e48_damper_moment"]), PlanarDamper(),
+                            case["mean_motion"], case["equatorial_b"], 0.0, 0.0, CH.E48_ORBITS * orbit.period,
+                            case["step"])
+    # 1e-9 rad: the stuck magnet's rate is the body's to rounding (the stick rule is exact)
+    assert_allclose(case["locked_maxima"], planar_error_orbit_maxima(rigid, case["mean_motion"])[:, 0], atol=1e-9)
+    rows = {r.id: r for r in comparisons(CHAPTER_KEY)}
+    assert rows["kov-e48-fig6-10-error"].verdict == "disagrees"
+    assert np.all(case["orbit_maxima"][1:] > np.radians(20.0))

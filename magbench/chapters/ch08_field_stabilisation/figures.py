@@ -9,8 +9,8 @@ numbers are marked where the text gives them.
 import numpy as np
 
 from ...io import load_printed
-from . import (CHAPTER, DAMPING_FACTORS, SETTLED_ANGLE, e47_case, eddy_shell_match, error_sweep, libration_study,
-               rod_pair_ratios)
+from . import (CHAPTER, DAMPING_FACTORS, E48_STARTS, SETTLED_ANGLE, e47_case, e48_case, eddy_shell_match, error_sweep,
+               libration_study, rod_pair_ratios)
 from .._base import chapter_parameters
 from ..registry import FigureData, FigureParameter, Series, FigureSpec, register
 
@@ -23,7 +23,11 @@ _INPUTS = {
     "e47_transverse_inertia": ("E47: J about the transverse axes (printed)", {}),
     "e47_axial_inertia": ("E47: J about the orientation axis (printed)", {}),
     "e47_magnet_moment": ("E47: the magnet L (printed)", {}),
-    "e47_damping": ("E47: the viscous damper k_д (printed)", {}),
+    "e47_damping": ("E47: the viscous damper k_d (printed)", {}),
+    "e48_damper_moment": ("E48: the damper's magnet (printed L_y)", {}),
+    "e48_friction": ("E48: the damper's dry friction (printed M_T)", {}),
+    "e48_stiffness": ("E48: the elastic coupling c (printed)", {}),
+    "e48_viscous": ("E48: a small viscous term beside the friction (ours)", {}),
     "sweep_frequency_min": ("lowest ω_c/ω0 of the sweep (ours)", {"low": 0.5}),
     "sweep_frequency_max": ("highest ω_c/ω0 of the sweep (ours)", {"high": 40.0}),
     "sweep_orbits": ("orbits per run of the sweep (ours)", {"low": 3.0, "high": 60.0}),
@@ -135,14 +139,14 @@ def plot_fig6_7(data):
     fig, axes = plt.subplots(1, 2, figsize=(7.2, 3.0), gridspec_kw={"width_ratios": [1.0, 1.3]})
     axes[0].plot(whole.columns["orbits"][1], whole.columns["gamma"][1], "C0-", linewidth=0.8)
     axes[0].set_xlabel("orbits")
-    axes[0].set_ylabel("γ, angle from B [°]")
-    axes[0].set_title("From γ = 0 at the node", fontsize=9)
+    axes[0].set_ylabel("ϑ, angle from B [°]")
+    axes[0].set_title("From ϑ = 0 at the node", fontsize=9)
     order = np.argsort(last.columns["u"][1], kind="stable")
     u = last.columns["u"][1]
     axes[1].plot(u, last.columns["gamma"][1], "C0.", markersize=1.5, label="simulation (planar (6.39))")
     axes[1].plot(u[order], linear.columns["gamma"][1][order], "C2-", linewidth=0.9, label="linear solution (6.62)–(6.64), off scale")
     g = estimate.columns["gamma_max"][1][0]
-    axes[1].axhspan(-g, g, color="C1", alpha=0.15, label=f"±γ_max by (6.75): {g:.1f}°")
+    axes[1].axhspan(-g, g, color="C1", alpha=0.15, label=f"±ϑ_max by (6.75): {g:.1f}°")
     axes[1].plot([printed["kov-e47-simulated-angle"].value_as_printed], [printed["kov-e47-simulated-error"].value_as_printed],
                  "kx", markersize=7, label="Kovalenko's 'about 17° at ω0t ≈ 40°'")
     axes[1].set_xlabel("u = ω0t [°]")
@@ -167,7 +171,7 @@ _SWEEP_NAMES = ("e47_damping", "sweep_frequency_min", "sweep_frequency_max", "sw
 def compute_fig6_8(**params):
     """γ_max against ω_c/ω0: the simulated (one curve per k_д), (6.75), and the linear solution's."""
     s = error_sweep(_with(params))
-    series = [Series(f"simulated, k_д = {k:g} N·m·s", {"frequency": ("1", s["frequency"]),
+    series = [Series(f"simulated, k_d = {k:g} N·m·s", {"frequency": ("1", s["frequency"]),
                                                        "gamma_max": ("deg", np.degrees(row)),
                                                        "linear": ("deg", np.degrees(lin))})
               for k, row, lin in zip(s["damping"], s["simulated"], s["linear"])]
@@ -194,7 +198,7 @@ def plot_fig6_8(data):
     axes[0].plot([data.extra["e47_frequency"]], [printed["kov-e47-simulated-error"].value_as_printed], "kx", markersize=7,
                  label="Kovalenko's E47 (Fig. 6.7)")
     axes[0].set_yscale("log")
-    axes[0].set_ylabel("γ_max [°]")
+    axes[0].set_ylabel("ϑ_max [°]")
     axes[0].legend(fontsize=6)
     axes[1].axhline(1.0, color="k", linewidth=0.8)
     axes[1].axvline(4.0, color="0.5", linestyle=":", linewidth=1.0)
@@ -211,6 +215,53 @@ def plot_fig6_8(data):
 
 def _sweep_parameters():
     return _input_parameters(_SWEEP_NAMES)
+
+
+# --- Fig. 6.10: E48 ---------------------------------------------------------------------------
+
+_E48_NAMES = ("e48_damper_moment", "e48_friction", "e48_stiffness", "e48_viscous")
+
+
+def compute_fig6_10(**params):
+    """E48: γ over three orbits from six starts, the largest per orbit, the two estimates."""
+    case = e48_case(_with(params))
+    orbits = case["time"] / case["period"]
+    series = [Series(f"start {np.degrees(a):g}°, {r:+g} ω0", {"orbits": ("1", orbits),
+                                                             "gamma": ("deg", np.degrees(case["gamma"][:, k]))})
+              for k, (a, r) in enumerate(E48_STARTS)]
+    series.append(Series("largest |ϑ| per orbit", {"orbit": ("1", np.arange(1.0, case["orbit_maxima"].shape[0] + 1)),
+                                                   "mean": ("deg", np.degrees(case["orbit_maxima"].mean(axis=1))),
+                                                   "locked": ("deg", np.degrees(case["locked_maxima"]))}))
+    series.append(Series("estimates", {"674": ("deg", [np.degrees(case["estimate_674"])]),
+                                       "678": ("deg", [np.degrees(case["estimate_678"])])}))
+    return FigureData("", "", "", {}, series)
+
+
+def plot_fig6_10(data):
+    """γ over three orbits; the estimates and Kovalenko's range as bands."""
+    import matplotlib.pyplot as plt
+
+    printed = load_printed("kovalenko")["kov-e48-simulated-error"]
+    runs, est = data.series[:-2], data.series[-1]
+    fig, ax = plt.subplots(figsize=(6.4, 3.2))
+    for k, s in enumerate(runs):
+        ax.plot(s.columns["orbits"][1], s.columns["gamma"][1], color=f"C{k}", linewidth=0.7, label=s.label)
+    lo, hi = printed.value_low, printed.value_high
+    for sign in (1, -1):
+        ax.axhspan(sign * lo, sign * hi, color="k", alpha=0.15, label="Kovalenko's run: 5.5–7.5°" if sign > 0 else None)
+        ax.axhline(sign * est.columns["674"][1][0], color="C3", linestyle="--", linewidth=0.9,
+                   label="estimate (6.74)" if sign > 0 else None)
+        ax.axhline(sign * est.columns["678"][1][0], color="C4", linestyle=":", linewidth=0.9,
+                   label="estimate (6.78)" if sign > 0 else None)
+    ax.set_xlabel("orbits")
+    ax.set_ylabel("ϑ, angle from B [°]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=6, ncol=2, loc="lower right")
+    return fig
+
+
+def _e48_parameters():
+    return _input_parameters(_E48_NAMES)
 
 
 # --- §6.5: dry against viscous damping ----------------------------------------------------
@@ -236,11 +287,11 @@ def plot_damper_decay(data):
         keep = rate > 0
         ax.plot(s.columns["time"][1][keep], rate[keep], style, label=s.label)
     ax.axhline(1e-3, color="0.5", linestyle=":")
-    ax.text(0.1, 1.3e-3, "0.001 ω_н (the book's case)", fontsize=7)
+    ax.text(0.1, 1.3e-3, "0.001 ω_i (the book's case)", fontsize=7)
     ax.set_yscale("log")
     ax.set_ylim(5e-4, 1.5)
-    ax.set_xlabel("t k_д/J (= t M_T/(J ω_н))")
-    ax.set_ylabel("ω/ω_н")
+    ax.set_xlabel("t k_d/J (= t L_f/(J ω_i))")
+    ax.set_ylabel("ω/ω_i")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=7.5)
     return fig
@@ -409,6 +460,9 @@ register(FigureSpec("kov-fig6-7", "E47: the steady state of a magnet with a visc
 register(FigureSpec("kov-fig6-8", "Largest steady-state error against the natural frequency: simulation and "
                     "estimate (Kovalenko Fig. 6.8, regenerated)", f"{SOURCE} §6.5, eq. (6.75), Fig. 6.8 (caption only)",
                     compute_fig6_8, plot_fig6_8, _sweep_parameters))
+register(FigureSpec("kov-fig6-10", "E48: a dry-friction damper whose magnet is coupled elastically to the body "
+                    "(Kovalenko Fig. 6.10, regenerated)", f"{SOURCE} §6.5, p. 150, Fig. 6.10 (caption only)",
+                    compute_fig6_10, plot_fig6_10, _e48_parameters))
 register(FigureSpec("kov-damper-decay", "Detumbling with a viscous and a dry-friction damper", f"{SOURCE} §6.5, "
                     "eqs. (6.45), (6.50)", compute_damper_decay, plot_damper_decay, {}))
 register(FigureSpec("kov-libration", "A gravity-gradient boom with a magnetic ball damper: libration decay",
