@@ -265,7 +265,8 @@ def e48_case(params=None):
 
 @cached_result(maxsize=2, reads=LIBRATION_INPUTS)
 def _libration(key):
-    from ...sim import LibrationSatellite, simulate_libration
+    from ...earth import CircularOrbit
+    from ...sim import LibrationSatellite, maxima_per_orbit, simulate_libration
 
     p = dict(key)
     orbits = p["libration_orbits"]
@@ -278,8 +279,6 @@ def _libration(key):
     magnet = np.concatenate([[0.0], np.full(factors.size, p["ball_moment"])])
     k, m = np.repeat(damping, phases.size), np.repeat(magnet, phases.size)
     u0 = np.tile(phases, damping.size)
-    from ...earth import CircularOrbit
-
     orbit = CircularOrbit(EARTH_RADIUS + p["libration_altitude"], p["libration_inclination"],
                           p["earth_dipole_moment"], argument_of_latitude0=u0)
     t = p["boom_transverse_inertia"]
@@ -290,10 +289,9 @@ def _libration(key):
     step = LIBRATION_RECORD / max(np.ceil(LIBRATION_RECORD / LIBRATION_STEP), np.ceil(LIBRATION_RECORD * stiff))
     run = simulate_libration(sat, orbit, p["libration_initial_angle"], 0.0, orbits * orbit.period, step,
                              record_interval=LIBRATION_RECORD)
-    per = int(orbit.period // LIBRATION_RECORD)
-    whole = (run.time.size - 1) // per
-    envelope = run.libration[1:1 + whole * per].reshape(whole, per, -1).max(axis=1)
-    envelope = envelope.reshape(whole, damping.size, phases.size)
+    orbits_elapsed = run.time / orbit.period
+    envelope = np.stack([maxima_per_orbit(orbits_elapsed, run.libration[:, i]) for i in range(k.size)], axis=-1)
+    envelope = envelope.reshape(-1, damping.size, phases.size)
     return {"time": run.time, "pitch": run.pitch.reshape(-1, damping.size, phases.size),
             "libration": run.libration.reshape(-1, damping.size, phases.size), "envelope": envelope,
             "damping": damping, "period": orbit.period, "mean_motion": float(orbit.mean_motion)}
