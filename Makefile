@@ -104,8 +104,8 @@ book-check-unlocked:
 	  echo "browser check SKIPPED: Chromium is not installed; install it with: apt-get install -y chromium"; \
 	elif [ $$status -ne 0 ]; then exit $$status; fi
 
-# Every chapter (1-7) re-run with each of its inputs halved and doubled, on both cores
-# (chapters 1-3 are also in `make pytest`; 4-7 carry the `sweep` marker it deselects).
+# Every chapter (1-8) re-run with each of its inputs halved and doubled, on both cores
+# (chapters 1-3 are also in `make pytest`; 4-8 carry the `sweep` marker it deselects).
 # A case computes only what reads the scaled input: the studies no scaled input touches
 # come from the result cache `make test` filled (or are computed once into it).
 sweep: export MAGBENCH_RESULT_CACHE = $(TEST_RESULTS)

@@ -17,7 +17,7 @@ from .bdot import (avanzini_giulietti_gain, bdot_dipole, bdot_dipole_projected, 
                    kovalenko_detumble_time, samsat_gain)
 from .field_stabilisation import (capture_momentum, dry_detumble_time, dry_friction_torque, dry_transient_time,
                                    elastic_damper_response, orienting_dipole, orienting_dipole_per_axis,
-                                   orienting_torque, polar_disturbance_peak, polar_error_factor,
+                                   orienting_torque, pointing_dipole, pointing_torque, polar_disturbance_peak, polar_error_factor,
                                    polar_forced_response, polar_forcing_coefficients, steady_state_error_closed_form,
                                    steady_state_error_estimate, viscous_detumble_time)
 from .floquet import degree_of_stability, finite_difference_monodromy, floquet_multipliers
@@ -43,7 +43,7 @@ __all__ = ["pid_step", "pid_gains_for_triple_pole", "ALLOCATIONS", "body_field_e
            "rotor_reference_torque", "rotor_spin_reference", "projected_damping_dipole", "slides_printed_damping_torque",
            "rotor_reference_momentum", "momentum_damping_dipole", "relay_spin_dipole", "floquet_multipliers",
            "finite_difference_monodromy", "degree_of_stability", "rotor_model_numbers", "rotor_linearised_matrices",
-           "rotor_floquet_multipliers", "rotor_stability_map", "orienting_dipole", "orienting_torque",
+           "rotor_floquet_multipliers", "rotor_stability_map", "orienting_dipole", "orienting_torque", "pointing_dipole", "pointing_torque",
            "orienting_dipole_per_axis", "viscous_detumble_time", "dry_detumble_time", "dry_friction_torque",
            "capture_momentum", "dry_transient_time", "polar_forcing_coefficients", "polar_forced_response",
            "elastic_damper_response", "polar_error_factor", "polar_disturbance_peak", "steady_state_error_estimate",

@@ -15,7 +15,7 @@ from ..earth.polar_orbit import (polar_field_b, polar_field_direction_accelerati
                                  polar_gravity_factor)
 from . import kernels
 
-__all__ = ["orienting_dipole", "orienting_torque", "orienting_dipole_per_axis", "viscous_detumble_time",
+__all__ = ["orienting_dipole", "orienting_torque", "orienting_dipole_per_axis", "pointing_dipole", "pointing_torque", "viscous_detumble_time",
            "dry_detumble_time", "dry_friction_torque", "capture_momentum", "dry_transient_time",
            "polar_forcing_coefficients", "polar_forced_response", "elastic_damper_response", "polar_error_factor",
            "polar_disturbance_peak", "steady_state_error_estimate", "steady_state_error_closed_form"]
@@ -42,11 +42,15 @@ PRINTED_FORCING = ((1.36, 1.32), (1.2, 0.4), (0.0, 0.13))
 
 
 def _unit_axis(axis):
-    i0 = as_vectors("axis", axis)
-    norm = np.linalg.norm(i0, axis=-1, keepdims=True)
+    return _unit_vector("axis", axis)
+
+
+def _unit_vector(name, value):
+    v = as_vectors(name, value)
+    norm = np.linalg.norm(v, axis=-1, keepdims=True)
     if np.any(norm == 0):
-        raise ValueError("axis must not contain a zero vector")
-    return i0 / norm
+        raise ValueError(f"{name} must not contain a zero vector")
+    return v / norm
 
 
 def _nonzero_field(field):
@@ -113,6 +117,71 @@ def orienting_torque(field, axis, gain):
     b = _nonzero_field(field)
     k = as_positive("gain", gain, unit="N·m/rad")
     return np.cross(kernels.orienting_dipole(b, _unit_axis(axis), k), b)
+
+
+@_document_stabilisation
+def pointing_dipole(field, axis, direction, gain):
+    r"""Kovalenko's orienting dipole toward an arbitrary direction p measured by another sensor.
+
+    Parameters
+    ----------
+    {field}
+    axis : array_like, shape (..., 3)
+        i0, the body's orientation axis; normalised here [-].
+    direction : array_like, shape (..., 3)
+        p, the direction the axis should point along (a Sun sensor's, a star tracker's, the
+        local vertical's), body axes; normalised here [-].
+    gain : array_like
+        k_p > 0 [N·m/rad].
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+        L_p = k̃_p [i0 (B·p) − p (B·i0)]/B² [A·m²], k̃_p = k_p ψ/|p × i0|, ψ the angle
+        between i0 and p: the dipole (Δ_p × B)/B² of the wanted torque
+        Δ_p = k_p ψ (p × i0)/|p × i0|, whose part across B is all a magnetic torque can make.
+
+    Notes
+    -----
+    Kovalenko (1975) eqs. (6.15)–(6.17) (seed lines 129–130), "p here replaces B in (6.8)":
+    with p = B/B it is :func:`orienting_dipole`. Deviation from source: (6.16)'s bracket is
+    garbled in the OCR; it is reconstructed from the error (6.15) put into (4.30) as the text
+    says, and it has the property the book states: the torque never increases the error
+    (M_p · (i0 × p) ≥ 0, tested). At ψ = π the direction is undefined and L_p is zero.
+
+    Examples
+    --------
+    >>> np.round(pointing_dipole([0.0, 0.0, 2e-5], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], 1e-3), 6).tolist()
+    [0.0, 0.0, 0.0]
+    """
+    k = as_positive("gain", gain, unit="N·m/rad")
+    return kernels.pointing_dipole(_nonzero_field(field), _unit_axis(axis), _unit_vector("direction", direction), k)
+
+
+@_document_stabilisation
+def pointing_torque(field, axis, direction, gain):
+    r"""Torque of :func:`pointing_dipole`.
+
+    Parameters
+    ----------
+    {field}
+    axis, direction : array_like, shape (..., 3)
+        i0 and p; normalised here [-].
+    gain : array_like
+        k_p > 0 [N·m/rad].
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+        M_p = L_p × B = k̃_p [(i0 × B)(B·p) − (p × B)(B·i0)]/B² [N·m].
+
+    Notes
+    -----
+    Kovalenko (1975) eq. (6.17) (seed line 130), reconstructed as :func:`pointing_dipole`.
+    """
+    b = _nonzero_field(field)
+    k = as_positive("gain", gain, unit="N·m/rad")
+    return np.cross(kernels.pointing_dipole(b, _unit_axis(axis), _unit_vector("direction", direction), k), b)
 
 
 def orienting_dipole_per_axis(field, gains):

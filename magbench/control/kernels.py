@@ -115,7 +115,7 @@ def relay_dipole(field, moment, direction):
 
 
 # Kovalenko's orienting laws for stabilisation along B (§6.2).
-__all__ += ["orienting_dipole", "orienting_dipole_per_axis"]
+__all__ += ["orienting_dipole", "orienting_dipole_per_axis", "pointing_dipole"]
 
 
 def orienting_dipole(field, axis, gain):
@@ -131,6 +131,20 @@ def orienting_dipole(field, axis, gain):
     ratio = np.where(sine > 0.0, theta / np.where(sine > 0.0, sine, 1.0), 1.0 / np.sqrt(b2))
     scale = np.asarray(gain) * ratio
     return scale[..., None] * (axis * b2[..., None] - field * along[..., None]) / b2[..., None]
+
+
+def pointing_dipole(field, axis, direction, gain):
+    """L_p = k̃_p [i0 (B·p) − p (B·i0)]/B², k̃_p = k_p ψ/|p × i0| (k_p where p ∥ i0), ψ the
+    angle between the unit vectors i0 = axis and p = direction (..., 3), B = field (..., 3),
+    k_p = gain [N·m/rad]; no checks. The checked form is :func:`magbench.control.pointing_dipole`."""
+    b2 = np.sum(field * field, axis=-1)
+    c = np.cross(direction, axis)
+    sine = np.sqrt(np.sum(c * c, axis=-1))
+    psi = np.arctan2(sine, np.sum(direction * axis, axis=-1))
+    scale = np.asarray(gain) * np.where(sine > 0.0, psi / np.where(sine > 0.0, sine, 1.0), 1.0)
+    bracket = (axis * np.sum(field * direction, axis=-1)[..., None]
+               - direction * np.sum(field * axis, axis=-1)[..., None])
+    return scale[..., None] * bracket / b2[..., None]
 
 
 def orienting_dipole_per_axis(field, gains):

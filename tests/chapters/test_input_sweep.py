@@ -8,7 +8,7 @@ latitude of 120°, the year 4032, a filter coefficient above 1) must be refused 
 ``ValueError`` that says which range it left: those cases are listed in
 :data:`OUT_OF_DOMAIN` with the reason, and nothing else may raise.
 
-Chapters 1–3 run in the default suite (about half a minute). Chapters 4–7 re-run long
+Chapters 1–3 run in the default suite (about half a minute). Chapters 4–8 re-run long
 simulations (bench Monte Carlo, detumbling studies, rotor and TNS-0 runs), so they carry
 the ``sweep`` marker, which the default suite deselects; ``make sweep`` runs every
 chapter on both cores, and CI runs it after ``make test``. A case computes only what

@@ -6,7 +6,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 from magbench.constants import EARTH_GM, EARTH_RADIUS, MU_0
-from magbench.control import (capture_momentum, dry_detumble_time, dry_friction_torque, dry_transient_time,
+from magbench.control import (capture_momentum, pointing_dipole, pointing_torque, dry_detumble_time, dry_friction_torque, dry_transient_time,
                               elastic_damper_response, kovalenko_detumble_time, orienting_dipole,
                               orienting_dipole_per_axis, orienting_torque, polar_disturbance_peak,
                               polar_error_factor, polar_forced_response, polar_forcing_coefficients,
@@ -293,3 +293,29 @@ def test_forced_response_of_members_equals_one_call_each():
         a, f = polar_forced_response(650.0, moment[i], 2e-5, viscous[i], 1e-3, 400.0, count=4)
         assert_allclose(amp[:, i], a, rtol=1e-15)
         assert_allclose(phase[:, i], f, rtol=1e-15)
+
+
+def test_pointing_at_b_is_the_orienting_law():
+    """(6.16) with p = B/B is (6.8) ("p replaces B"), for random fields and axes."""
+    rng = np.random.default_rng(7)
+    b, i0 = rng.normal(size=(200, 3)) * 2e-5, rng.normal(size=(200, 3))
+    p = b / np.linalg.norm(b, axis=-1, keepdims=True)
+    # 1e-12 relative: two groupings of the same products
+    assert_allclose(pointing_dipole(b, i0, p, 1e-3), orienting_dipole(b, i0, 1e-3), rtol=1e-12, atol=1e-18)
+
+
+def test_pointing_torque_never_increases_the_error():
+    """The book (p. 130): the torque (6.17) "always tends to reduce the orientation error": its
+    component along i0 × p (the turn of i0 toward p) is ≥ 0; it is (B·p)² − 2 cos ψ (B·p)(B·i0)
+    + (B·i0)² ≥ (1 − |cos ψ|)((B·p)² + (B·i0)²) times a positive factor, so it vanishes only
+    where B·p = B·i0 = 0. And the torque is across B, as every magnetic torque."""
+    rng = np.random.default_rng(8)
+    b, i0, p = rng.normal(size=(3, 1000, 3))
+    torque = pointing_torque(b, i0, p, 1e-3)
+    i0 /= np.linalg.norm(i0, axis=-1, keepdims=True)
+    p /= np.linalg.norm(p, axis=-1, keepdims=True)
+    assert np.all(np.sum(torque * np.cross(i0, p), axis=-1) >= 0)
+    # 1e-15 N·m: rounding of torques of order 1e-3 N·m
+    assert_allclose(np.sum(torque * b, axis=-1), 0.0, atol=1e-15)
+    with pytest.raises(ValueError, match="direction must not contain a zero vector"):
+        pointing_dipole(b[0], i0[0], [0.0, 0.0, 0.0], 1e-3)
