@@ -46,6 +46,8 @@ E48_INPUTS = ("earth_dipole_moment", "e48_altitude", "e48_inertia", "e48_damper_
 E48_STARTS = ((0.0, 0.0), (np.radians(10.0), 0.0), (np.radians(-20.0), 0.0), (np.radians(40.0), 0.0),
               (0.0, 2.0), (0.0, -2.0))
 E48_ORBITS = 3
+#: The friction sweep of E48 (the regenerated Fig. 6.9's question): M_T as multiples of E48's, from rest.
+E48_FRICTION_FACTORS = (0.5, 1.0, 1.5, 2.0, 3.0, 5.0, 10.0)
 LIBRATION_INPUTS = ("earth_dipole_moment", "boom_transverse_inertia", "boom_axial_inertia", "ball_moment",
                     "ball_inertia", "ball_damping", "libration_altitude", "libration_inclination",
                     "libration_initial_angle", "libration_orbits")
@@ -229,16 +231,29 @@ def _e48(key):
     # stability limit 2.8 with |B| ≤ 2B0; h (c + 2 L_y B0)/k_д = 1 keeps a margin.
     step = orbit.period / np.ceil(orbit.period * (c + 2.0 * ly * b0) / kd)
     angle, rate = (np.array(a) for a in zip(*E48_STARTS))
-    # the six starts, and a seventh member from rest with the friction a hundredfold: the magnet locked to the body
-    friction = np.append(np.full(angle.size, mt), 100.0 * mt)
-    angle, rate = np.append(angle, 0.0), np.append(rate, 0.0)
+    starts = angle.size
+    # members: the six starts; from rest, the friction sweep; and the friction a hundredfold (the magnet locked)
+    factors = np.asarray(E48_FRICTION_FACTORS)
+    friction = np.concatenate([np.full(starts, mt), factors * mt, [100.0 * mt]])
+    angle = np.concatenate([angle, np.zeros(factors.size + 1)])
+    rate = np.concatenate([rate, np.zeros(factors.size + 1)])
     run = simulate_planar(PlanarBody(j, 0.0), PlanarDamper(viscous=kd, friction=friction, stiffness=c, damper_moment=ly),
                           n, b0, angle, rate * n, E48_ORBITS * orbit.period, step)
     maxima = planar_error_orbit_maxima(run, n)
     keep = max(1, int(round(orbit.period / 60.0 / step)))          # the figure keeps a sample a minute
+    # (6.78) subtracts the friction from the disturbance; where the friction exceeds it the estimate is 0
+    sweep_estimate = []
+    for f in factors * mt:
+        try:
+            sweep_estimate.append(max(0.0, float(steady_state_error_estimate(j, ly, n, b0, friction=f))))
+        except ValueError:          # the damper's magnet cannot hold the body: no steady state
+            sweep_estimate.append(np.nan)
     return {"mean_motion": n, "equatorial_b": b0, "period": orbit.period, "step": step,
-            "time": run.time[::keep], "gamma": run.gamma[::keep, :-1], "damper_angle": run.damper_angle[::keep, :-1],
-            "orbit_maxima": maxima[:, :-1], "locked_maxima": maxima[:, -1],
+            "time": run.time[::keep], "gamma": run.gamma[::keep, :starts],
+            "damper_angle": run.damper_angle[::keep, :starts],
+            "orbit_maxima": maxima[:, :starts], "locked_maxima": maxima[:, -1],
+            "friction": factors * mt, "friction_maxima": maxima[:, starts:-1],
+            "friction_estimate": np.array(sweep_estimate),
             "estimate_674": steady_state_error_estimate(j, ly, n, b0),
             "estimate_678": steady_state_error_estimate(j, ly, n, b0, friction=mt)}
 
@@ -258,7 +273,9 @@ def e48_case(params=None):
         ``time`` (K,) [s], ``gamma`` and ``damper_angle`` (K, 6) [rad], a sample a minute;
         ``orbit_maxima`` (orbits, 6), the largest |γ| of each orbit [rad]; ``locked_maxima``
         (orbits,), the same from rest with the friction a hundredfold (the magnet locked to
-        the body) [rad]; ``estimate_674`` and ``estimate_678`` [rad].
+        the body) [rad]; ``friction`` (F,) [N·m], ``friction_maxima`` (orbits, F) [rad] and
+        ``friction_estimate`` (F,) [rad]: the friction sweep (:data:`E48_FRICTION_FACTORS`, from
+        rest) and (6.78) for each; ``estimate_674`` and ``estimate_678`` [rad].
     """
     return dict(_e48(_params(params)))
 

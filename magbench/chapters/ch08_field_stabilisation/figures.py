@@ -9,7 +9,7 @@ numbers are marked where the text gives them.
 import numpy as np
 
 from ...io import load_printed
-from . import (CHAPTER, DAMPING_FACTORS, E48_STARTS, SETTLED_ANGLE, e47_case, e48_case, eddy_shell_match, error_sweep,
+from . import (CHAPTER, DAMPING_FACTORS, E48_FRICTION_FACTORS, E48_STARTS, SETTLED_ANGLE, e47_case, e48_case, eddy_shell_match, error_sweep,
                libration_study, rod_pair_ratios)
 from .._base import chapter_parameters
 from ..registry import FigureData, FigureParameter, Series, FigureSpec, register
@@ -223,7 +223,7 @@ _E48_NAMES = ("e48_damper_moment", "e48_friction", "e48_stiffness", "e48_viscous
 
 
 def compute_fig6_10(**params):
-    """E48: γ over three orbits from six starts, the largest per orbit, the two estimates."""
+    """E48: ϑ over three orbits from six starts, the friction sweep, the two estimates."""
     case = e48_case(_with(params))
     orbits = case["time"] / case["period"]
     series = [Series(f"start {np.degrees(a):g}°, {r:+g} ω0", {"orbits": ("1", orbits),
@@ -232,8 +232,13 @@ def compute_fig6_10(**params):
     series.append(Series("largest |ϑ| per orbit", {"orbit": ("1", np.arange(1.0, case["orbit_maxima"].shape[0] + 1)),
                                                    "mean": ("deg", np.degrees(case["orbit_maxima"].mean(axis=1))),
                                                    "locked": ("deg", np.degrees(case["locked_maxima"]))}))
+    series.append(Series("friction sweep", {"friction": ("N m", case["friction"]),
+                                            "simulated": ("deg", np.degrees(case["friction_maxima"][1:].max(axis=0))),
+                                            "estimate_678": ("deg", np.degrees(case["friction_estimate"]))}))
     series.append(Series("estimates", {"674": ("deg", [np.degrees(case["estimate_674"])]),
-                                       "678": ("deg", [np.degrees(case["estimate_678"])])}))
+                                       "678": ("deg", [np.degrees(case["estimate_678"])]),
+                                       "locked": ("deg", [np.degrees(case["locked_maxima"][1:].max())]),
+                                       "friction": ("N m", [case["friction"][E48_FRICTION_FACTORS.index(1.0)]])}))
     return FigureData("", "", "", {}, series)
 
 
@@ -242,8 +247,8 @@ def plot_fig6_10(data):
     import matplotlib.pyplot as plt
 
     printed = load_printed("kovalenko")["kov-e48-simulated-error"]
-    runs, est = data.series[:-2], data.series[-1]
-    fig, ax = plt.subplots(figsize=(6.4, 3.2))
+    runs, sweep, est = data.series[:-3], data.series[-2], data.series[-1]
+    fig, (ax, right) = plt.subplots(1, 2, figsize=(7.4, 3.3), gridspec_kw={"width_ratios": [1.5, 1.0]})
     for k, s in enumerate(runs):
         ax.plot(s.columns["orbits"][1], s.columns["gamma"][1], color=f"C{k}", linewidth=0.7, label=s.label)
     lo, hi = printed.value_low, printed.value_high
@@ -256,7 +261,21 @@ def plot_fig6_10(data):
     ax.set_xlabel("orbits")
     ax.set_ylabel("ϑ, angle from B [°]")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=6, ncol=2, loc="lower right")
+    ax.legend(fontsize=5.5, ncol=2, loc="lower right")
+    friction = sweep.columns["friction"][1] * 1e4
+    right.plot(friction, sweep.columns["simulated"][1], "ko-", markersize=3, label="simulated, orbits 2–3")
+    right.plot(friction, sweep.columns["estimate_678"][1], "C4s:", markersize=3, label="estimate (6.78)")
+    right.axhline(est.columns["674"][1][0], color="C3", linestyle="--", linewidth=0.9, label="estimate (6.74)")
+    right.axhline(est.columns["locked"][1][0], color="0.5", linewidth=0.9, label="magnet locked to the body")
+    m = est.columns["friction"][1][0] * 1e4
+    right.plot([m, m], [lo, hi], color="k", linewidth=4, alpha=0.3, label="Kovalenko's run")
+    right.set_xscale("log")
+    right.set_xticks(friction, [f"{v:g}" for v in friction])
+    right.minorticks_off()
+    right.set_xlabel("dry friction L_f [10⁻⁴ N·m]")
+    right.set_ylabel("ϑ_max [°]")
+    right.grid(alpha=0.3, which="both")
+    right.legend(fontsize=5.5)
     return fig
 
 
