@@ -91,7 +91,7 @@ def plot_field_rotation(data):
     import matplotlib.pyplot as plt
 
     exact, book = data.series
-    fig, axes = plt.subplots(1, 3, figsize=(7.2, 2.8))
+    fig, axes = plt.subplots(1, 3, figsize=(7.0, 2.8))
     titles = {"eta": ("η − u [°]", np.degrees), "acceleration": ("−η̈/ω0² [-]", lambda x: x),
               "gravity": ("sin 2λ [-]", lambda x: x)}
     u = np.degrees(exact.columns["u"][1])
@@ -136,7 +136,7 @@ def plot_fig6_7(data):
 
     whole, last, linear, estimate = data.series
     printed = load_printed("kovalenko")
-    fig, axes = plt.subplots(1, 2, figsize=(7.2, 3.0), gridspec_kw={"width_ratios": [1.0, 1.3]})
+    fig, axes = plt.subplots(1, 2, figsize=(7.0, 3.0), gridspec_kw={"width_ratios": [1.0, 1.3]})
     axes[0].plot(whole.columns["orbits"][1], whole.columns["gamma"][1], "C0-", linewidth=0.8)
     axes[0].set_xlabel("orbits")
     axes[0].set_ylabel("ϑ, angle from B [°]")
@@ -153,7 +153,7 @@ def plot_fig6_7(data):
     axes[1].set_xticks([0, 90, 180, 270, 360])
     axes[1].set_ylim(-30, 30)       # the linear solution runs off the scale: ω_c is near 4ω0, its second resonance
     axes[1].set_title("Steady state, last two orbits", fontsize=9)
-    axes[1].legend(fontsize=6.5, loc="lower right")
+    axes[1].legend(fontsize=7, loc="lower right")
     for ax in axes:
         ax.grid(alpha=0.3)
     return fig
@@ -188,7 +188,7 @@ def plot_fig6_8(data):
 
     sims, est = data.series[:-1], data.series[-1]
     printed = load_printed("kovalenko")
-    fig, axes = plt.subplots(1, 2, figsize=(7.2, 3.1))
+    fig, axes = plt.subplots(1, 2, figsize=(7.0, 3.1))
     f = est.columns["frequency"][1]
     for i, s in enumerate(sims):
         axes[0].plot(f, s.columns["gamma_max"][1], "o-", color=f"C{i}", markersize=2.5, linewidth=0.8, label=s.label)
@@ -199,7 +199,7 @@ def plot_fig6_8(data):
                  label="Kovalenko's E47 (Fig. 6.7)")
     axes[0].set_yscale("log")
     axes[0].set_ylabel("ϑ_max [°]")
-    axes[0].legend(fontsize=6)
+    axes[0].legend(fontsize=7)
     axes[1].axhline(1.0, color="k", linewidth=0.8)
     axes[1].axvline(4.0, color="0.5", linestyle=":", linewidth=1.0)
     axes[1].text(4.1, 0.55, "book: good\nabove 4ω0", fontsize=7, color="0.3")
@@ -208,7 +208,7 @@ def plot_fig6_8(data):
     axes[1].minorticks_off()
     axes[1].set_ylabel("simulated / (6.75)")
     for ax in axes:
-        ax.set_xlabel("ω_c/ω0 = √(LB0/J)/ω0")
+        ax.set_xlabel("ω_c/ω0 = √(mB0/J)/ω0")
         ax.grid(alpha=0.3, which="both")
     return fig
 
@@ -248,9 +248,10 @@ def plot_fig6_10(data):
 
     printed = load_printed("kovalenko")["kov-e48-simulated-error"]
     runs, sweep, est = data.series[:-3], data.series[-2], data.series[-1]
-    fig, (ax, right) = plt.subplots(1, 2, figsize=(7.4, 3.3), gridspec_kw={"width_ratios": [1.5, 1.0]})
+    fig, (ax, right) = plt.subplots(1, 2, figsize=(7.0, 3.3), gridspec_kw={"width_ratios": [1.5, 1.0]})
     for k, s in enumerate(runs):
-        ax.plot(s.columns["orbits"][1], s.columns["gamma"][1], color=f"C{k}", linewidth=0.7, label=s.label)
+        ax.plot(s.columns["orbits"][1], s.columns["gamma"][1], color=f"C{k}", linewidth=0.7,
+                label=f"{len(runs)} starts (ours)" if k == 0 else None)
     lo, hi = printed.value_low, printed.value_high
     for sign in (1, -1):
         ax.axhspan(sign * lo, sign * hi, color="k", alpha=0.15, label="Kovalenko's run: 5.5–7.5°" if sign > 0 else None)
@@ -261,7 +262,8 @@ def plot_fig6_10(data):
     ax.set_xlabel("orbits")
     ax.set_ylabel("ϑ, angle from B [°]")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=5.5, ncol=2, loc="lower right")
+    ax.legend(fontsize=7, loc="upper right")
+    ax.set_ylim(None, 1.45 * ax.get_ylim()[1])
     friction = sweep.columns["friction"][1] * 1e4
     right.plot(friction, sweep.columns["simulated"][1], "ko-", markersize=3, label="simulated, orbits 2–3")
     right.plot(friction, sweep.columns["estimate_678"][1], "C4s:", markersize=3, label="estimate (6.78)")
@@ -275,7 +277,7 @@ def plot_fig6_10(data):
     right.set_xlabel("dry friction L_f [10⁻⁴ N·m]")
     right.set_ylabel("ϑ_max [°]")
     right.grid(alpha=0.3, which="both")
-    right.legend(fontsize=5.5)
+    right.legend(fontsize=7, loc="center right")
     return fig
 
 
@@ -341,7 +343,7 @@ def plot_libration(data):
     """Left: pitch over the run. Right: the per-orbit envelope, undamped and damped."""
     import matplotlib.pyplot as plt
 
-    fig, axes = plt.subplots(1, 2, figsize=(7.2, 3.0))
+    fig, axes = plt.subplots(1, 2, figsize=(7.0, 3.0))
     pitch = data.series[-1]
     axes[0].plot(pitch.columns["orbit"][1], pitch.columns["pitch"][1], "C0-", linewidth=0.6)
     axes[0].set_ylabel("pitch from the local vertical [°]")
@@ -369,22 +371,27 @@ def compute_libration_trade():
     """Settling time and residual libration against the ball's coupling (three phases each)."""
     s = libration_study(_defaults())
     k = s["damping"][1:]
-    return FigureData("", "", "", {}, [
-        Series(f"phase {j + 1}", {"damping": ("N m s/rad", k), "settling": ("1", s["settling_orbits"][1:, j]),
-                                  "residual": ("deg", np.degrees(s["residual"][1:, j]))})
-        for j in range(s["residual"].shape[1])], extra={"threshold": float(np.degrees(SETTLED_ANGLE)),
-                                                        "orbits": s["envelope"].shape[0]})
+    series = []
+    for j in range(s["residual"].shape[1]):
+        settled = np.isfinite(s["settling_orbits"][1:, j])       # the couplings that settled within the run
+        series.append(Series(f"phase {j + 1}", {"damping": ("N m s/rad", k),
+                                                "residual": ("deg", np.degrees(s["residual"][1:, j]))}))
+        series.append(Series(f"phase {j + 1}, settled", {"damping": ("N m s/rad", k[settled]),
+                                                         "settling": ("1", s["settling_orbits"][1:, j][settled])}))
+    return FigureData("", "", "", {}, series, extra={"threshold": float(np.degrees(SETTLED_ANGLE)),
+                                                     "orbits": s["envelope"].shape[0]})
 
 
 def plot_libration_trade(data):
     """Orbits to settle below the threshold (left) and the last orbit's libration (right)."""
     import matplotlib.pyplot as plt
 
-    fig, axes = plt.subplots(1, 2, figsize=(7.2, 2.9))
-    for j, s in enumerate(data.series):
-        k = s.columns["damping"][1] * 1e4
-        axes[0].plot(k, s.columns["settling"][1], "o-", color=f"C{j}", markersize=3, label=s.label)
-        axes[1].plot(k, s.columns["residual"][1], "o-", color=f"C{j}", markersize=3, label=s.label)
+    fig, axes = plt.subplots(1, 2, figsize=(7.0, 2.9))
+    for j, (whole, settled) in enumerate(zip(data.series[::2], data.series[1::2])):
+        axes[0].plot(settled.columns["damping"][1] * 1e4, settled.columns["settling"][1], "o-", color=f"C{j}",
+                     markersize=3, label=whole.label)
+        axes[1].plot(whole.columns["damping"][1] * 1e4, whole.columns["residual"][1], "o-", color=f"C{j}",
+                     markersize=3, label=whole.label)
     axes[0].set_ylabel(f"orbits to stay below {data.extra['threshold']:g}°")
     axes[0].set_title(f"missing: not settled in {data.extra['orbits']} orbits", fontsize=8)
     axes[1].set_ylabel("largest libration, last orbit [°]")
