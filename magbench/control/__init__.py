@@ -28,7 +28,8 @@ from .linear import (closed_loop_poles, closed_loop_polynomial, closed_loop_stat
 from .pid import pid_gains_for_triple_pole, pid_step, ziegler_nichols_pid
 from .rotor_stability import (rotor_floquet_multipliers, rotor_linearised_matrices, rotor_model_numbers,
                               rotor_stability_map)
-from .unloading import pulsed_unloading_dipole, relay_unloading_dipole, unloading_dipole, unloading_torque
+from .unloading import (pulsed_unloading_dipole, relay_coil_unloading_dipole, relay_unloading_dipole, unloading_dipole,
+                        unloading_torque)
 from .spin import (momentum_damping_dipole, projected_damping_dipole, relay_spin_dipole,
                    rotor_equilibrium_axial_momentum, rotor_equilibrium_dipole, rotor_program_field,
                    rotor_reference_momentum, rotor_reference_torque, rotor_spin_reference,
@@ -50,4 +51,4 @@ __all__ = ["pid_step", "pid_gains_for_triple_pole", "ALLOCATIONS", "body_field_e
            "capture_momentum", "dry_transient_time", "polar_forcing_coefficients", "polar_forced_response",
            "elastic_damper_response", "polar_error_factor", "polar_disturbance_peak", "steady_state_error_estimate",
            "steady_state_error_closed_form", "unloading_dipole", "unloading_torque", "relay_unloading_dipole",
-           "pulsed_unloading_dipole"]
+           "relay_coil_unloading_dipole", "pulsed_unloading_dipole"]

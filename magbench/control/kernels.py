@@ -185,3 +185,15 @@ def pulsed_unloading_dipole(field, momentum, gain, axis, field_threshold):
     on = np.abs(field[..., axis:axis + 1]) <= field_threshold
     dipole = np.asarray(gain)[..., None] * momentum[..., axis:axis + 1] * np.cross(e, field) / b2
     return np.where(on, dipole, 0.0)
+
+
+__all__ += ["relay_coil_unloading_dipole"]
+
+
+def relay_coil_unloading_dipole(field, momentum, moment, dead_zone, signal_dead_zone):
+    """L_i = L0 F_L(δ_i), δ = F_K(K) × B, both relays with dead zones (K° = dead_zone [N·m·s],
+    δ0 = signal_dead_zone [T]), L0 = moment [A·m²]; no checks. The checked form is
+    :func:`magbench.control.relay_coil_unloading_dipole` (Kovalenko eq. (5.7), Figs. 5.1–5.2)."""
+    relay = np.where(np.abs(momentum) > dead_zone, np.sign(momentum), 0.0)
+    signal = np.cross(relay, field)
+    return np.asarray(moment)[..., None] * np.where(np.abs(signal) > signal_dead_zone, np.sign(signal), 0.0)

@@ -15,10 +15,12 @@ import numpy as np
 
 from .._validate import as_count, as_finite, as_nonnegative, as_vectors, shown
 from .kernels import pulsed_unloading_dipole as _pulsed
+from .kernels import relay_coil_unloading_dipole as _relay_coil
 from .kernels import relay_unloading_dipole as _relay
 from .kernels import unloading_dipole as _linear
 
-__all__ = ["unloading_dipole", "unloading_torque", "relay_unloading_dipole", "pulsed_unloading_dipole"]
+__all__ = ["unloading_dipole", "unloading_torque", "relay_unloading_dipole", "relay_coil_unloading_dipole",
+           "pulsed_unloading_dipole"]
 
 
 def _field(field):
@@ -178,3 +180,50 @@ def pulsed_unloading_dipole(field, momentum, gain, axis, field_threshold):
     if delta.ndim:
         raise ValueError(f"field_threshold must be a scalar [T], got shape {delta.shape}")
     return _pulsed(b, as_vectors("momentum", momentum), k, a, float(delta))
+
+
+def relay_coil_unloading_dipole(field, momentum, moment, dead_zone, signal_dead_zone):
+    r"""Kovalenko's relay law with relay coils: L_i = L0 F_L(δ_i), δ = F_K(K) × B.
+
+    Parameters
+    ----------
+    field : array_like, shape (..., 3)
+        B in body axes [T].
+    momentum : array_like, shape (..., 3)
+        K, body axes [N·m·s].
+    moment : float or array_like
+        L0 ≥ 0, the dipole of a switched-on coil [A·m²].
+    dead_zone : float or array_like, shape (3,) or (..., 3)
+        K°_i ≥ 0, the momentum relay's threshold per axis [N·m·s].
+    signal_dead_zone : float
+        δ0 ≥ 0, the coil relay's threshold on the signal δ_i [T].
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+        L [A·m²], each component −L0, 0 or +L0: δ_x = F(K_y)B_z − F(K_z)B_y (and cyclic), F
+        and F_L sign functions with dead zones.
+
+    Notes
+    -----
+    Kovalenko (1975) §5.2 eq. (5.7) with the relay output F_L of Fig. 5.2 (seed lines
+    100, 106: "the signal ... is passed through a logic circuit with the characteristic of
+    Fig. 5.1, after which the dipole takes the characteristic of Fig. 5.2"); the §5.5
+    runs (seed lines 122–124) use δ0 = 5·10⁻⁶ and 1.25·10⁻⁶ T. Reconstructed: the figures
+    are not in the seed; the relays are taken without hysteresis and without the coil's
+    residual dipole k_B L0 of Fig. 5.2 (the simulation adds a residual dipole separately).
+
+    Examples
+    --------
+    >>> relay_coil_unloading_dipole([0.0, 0.0, 2e-5], [0.5, 0.05, 0.0], 50.0, 0.1, 5e-6).tolist()
+    [0.0, -50.0, 0.0]
+    """
+    b = as_vectors("field", field)
+    moment = as_nonnegative("moment", moment, unit="A·m²")
+    zone = as_nonnegative("dead_zone", dead_zone, unit="N·m·s")
+    if zone.ndim and zone.shape[-1] not in (1, 3):
+        raise ValueError(f"dead_zone must be a scalar or have 3 components on its last axis, got shape {zone.shape}")
+    delta = as_nonnegative("signal_dead_zone", signal_dead_zone, unit="T")
+    if delta.ndim:
+        raise ValueError(f"signal_dead_zone must be a scalar [T], got shape {delta.shape}")
+    return _relay_coil(b, as_vectors("momentum", momentum), moment, zone, float(delta))

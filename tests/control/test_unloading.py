@@ -5,7 +5,8 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from magbench.control import pulsed_unloading_dipole, relay_unloading_dipole, unloading_dipole, unloading_torque
+from magbench.control import (pulsed_unloading_dipole, relay_coil_unloading_dipole, relay_unloading_dipole,
+                              unloading_dipole, unloading_torque)
 
 RNG = np.random.default_rng(25)
 B = RNG.normal(size=(200, 3)) * 3e-5
@@ -82,3 +83,12 @@ def test_pulsed_law_unloads_one_axis_only_where_b_has_no_component_along_it():
 def test_bad_input_names_parameter_value_and_range(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def test_relay_coil_law_switches_full_dipole_outside_both_dead_zones_only():
+    b = np.array([1e-5, -4e-6, 3e-5])
+    # F = (1, 0, -1): δ = F × B = (0·3e-5 − (−1)(−4e-6), (−1)(1e-5) − 1·3e-5, 1·(−4e-6) − 0) = (−4e-6, −4e-5, −4e-6)
+    law = relay_coil_unloading_dipole(b, [0.5, 0.05, -0.7], 50.0, 0.1, 5e-6)
+    assert law.tolist() == [0.0, -50.0, 0.0]
+    assert relay_coil_unloading_dipole(b, [0.5, 0.05, -0.7], 50.0, 0.1, 1e-6).tolist() == [-50.0, -50.0, -50.0]
+    assert np.all(relay_coil_unloading_dipole(B, 0.05 * K / np.abs(K).max(), 50.0, 0.06, 0.0) == 0.0)
