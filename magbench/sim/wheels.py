@@ -116,6 +116,9 @@ class UnloadingLaw:
         K°_i ≥ 0 of F_K [N·m·s] (relay laws).
     signal_dead_zone : float, optional
         δ0 ≥ 0 of F_L [T] ("relay_coil").
+    release_zone : float or tuple of float, optional
+        K1°_i, 0 ≤ K1° ≤ K°: a relay switched on at |h_i| > K° stays on until |h_i| ≤ K1°
+        (the hysteresis of Fig. 5.1b) [N·m·s]; default K° (no hysteresis).
 
     Notes
     -----
@@ -130,6 +133,7 @@ class UnloadingLaw:
     gain: float = 0.0
     dead_zone: float = 0.0
     signal_dead_zone: float = 0.0
+    release_zone: float = None
 
     def __post_init__(self):
         as_choice("kind", self.kind, LAWS)
@@ -142,6 +146,11 @@ class UnloadingLaw:
         if delta.ndim:
             raise ValueError(f"signal_dead_zone must be a scalar [T], got shape {delta.shape}")
         object.__setattr__(self, "signal_dead_zone", float(delta))
+        release = self.dead_zone if self.release_zone is None else self.release_zone
+        release = _vector("release_zone", release, "N·m·s", nonnegative=True)
+        if any(r > k for r, k in zip(release, self.dead_zone)):
+            raise ValueError(f"release_zone must be <= dead_zone {self.dead_zone} N·m·s, got {release}")
+        object.__setattr__(self, "release_zone", release)
 
 
 @dataclass(frozen=True)
@@ -187,17 +196,20 @@ def _orbital_in_body(q, orbit, time):
     return np.stack([kernels.rotate(q, axes[..., i, :], -1.0) for i in range(3)], axis=-2)
 
 
-def _dipole(law, b, h):
+def _dipole(law, b, h, active):
+    """The law's dipole and the relays' updated on/off state (M, 3): on above K°, off at or below K1°."""
+    active = (np.abs(h) > np.asarray(law.dead_zone)) | (active & (np.abs(h) > np.asarray(law.release_zone)))
+    relay = np.where(active, np.sign(h), 0.0)  # F_K(h) with hysteresis; the kernels' own relay passes it (zone ½)
     if law.kind == "linear":
-        return laws.unloading_dipole(b, h, law.gain)
+        return laws.unloading_dipole(b, h, law.gain), active
     if law.kind == "relay":
-        return laws.relay_unloading_dipole(b, h, law.gain, np.asarray(law.dead_zone))
+        return laws.relay_unloading_dipole(b, relay, law.gain, 0.5), active
     if law.kind == "relay_coil":
-        return laws.relay_coil_unloading_dipole(b, h, law.gain, np.asarray(law.dead_zone), law.signal_dead_zone)
-    return np.zeros_like(b)
+        return laws.relay_coil_unloading_dipole(b, relay, law.gain, 0.5, law.signal_dead_zone), active
+    return np.zeros_like(b), active
 
 
-def _commands(time, state, orbit, sat, law):
+def _commands(time, state, orbit, sat, law, active):
     """(dipole, wheel torque, attitude error angle, flags (M, 3): torque, momentum, dipole limited)."""
     q, w, h = state[:, :4], state[:, 4:7], state[:, 7:]
     o = _orbital_in_body(q, orbit, time)
@@ -212,11 +224,11 @@ def _commands(time, state, orbit, sat, law):
     full = (np.abs(h) >= h_max) & (u * h > 0.0)
     u = np.where(full, 0.0, u)
     b = kernels.rotate(q, orbit.field(time), -1.0)
-    raw = _dipole(law, b, h)
+    raw, active = _dipole(law, b, h, active)
     m_max = np.asarray(sat.dipole_limit)
     m = np.clip(raw, -m_max, m_max)
     flags = np.stack([torque_limited, np.any(full, axis=-1), np.any(m != raw, axis=-1)], axis=-1)
-    return m, u, angle, flags, b
+    return m, u, angle, flags, b, active
 
 
 def _rhs(time, state, dipole, wheel_torque, orbit, sat, disturbance):
@@ -332,9 +344,10 @@ def simulate_unloading(satellite, orbit, law, disturbance, duration, step, recor
     pending = np.zeros((members, 3), dtype=bool)
     counts = np.zeros((members, 3))
     first = np.full(members, np.nan)
+    active = np.zeros((members, 3), dtype=bool)
     for i in range(steps + 1):
         t = i * h
-        m, u, angle, flag, b = _commands(t, state, orbit, satellite, law)
+        m, u, angle, flag, b, active = _commands(t, state, orbit, satellite, law, active)
         pending |= flag
         if i < steps:
             counts += flag
@@ -364,3 +377,107 @@ def simulate_unloading(satellite, orbit, law, disturbance, duration, step, recor
          "torque_limited", "momentum_limited", "dipole_limited"),
         params={"satellite": satellite, "orbit": orbit, "law": law, "disturbance": disturbance, "step": h},
         summary={"first_momentum_limit_time": first, "limited_fraction": (counts / max(steps, 1)).T})
+
+
+__all__ += ["simulate_ideal_unloading"]
+
+
+def _ideal_rhs(time, momentum, dipole, orbit, torque):
+    """K̇ = L × B + M_B for a body fixed in inertial axes; momentum (M, 3)."""
+    return kernels.cross(dipole, np.broadcast_to(orbit.field(time), momentum.shape)) + torque
+
+
+def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_interval=None,
+                             initial_wheel_momentum=0.0, dipole_limit=np.inf):
+    r"""Unload the wheels of an ideally stabilised, inertially fixed body: K̇ = L × B + M_B.
+
+    Parameters
+    ----------
+    orbit : magbench.earth.CircularOrbit
+        The orbit and its field; the body axes are the inertial axes; an array
+        ``argument_of_latitude0`` (M,) gives each member its own phase [rad].
+    law : UnloadingLaw
+        The unloading law: kind, gain [1/s or A·m²/T or A·m²], dead zones [N·m·s, T].
+    disturbance : float or array_like, shape (3,) or (M, 3)
+        M_B, a constant torque, body (= inertial) axes [N·m].
+    duration : float
+        Length of the run [s].
+    step : float
+        RK4 step, also the dipole's hold [s].
+    record_interval : float, optional
+        Sampling interval, a whole number of steps [s] (default: every step).
+    initial_wheel_momentum : float or array_like, shape (3,) or (M, 3), optional
+        K at time 0 [N·m·s].
+    dipole_limit : float, optional
+        |L_i| the coils can give [A·m²] (default ∞); the clipped steps are counted.
+
+    Returns
+    -------
+    SimulationResult
+        States ``wheel_momentum_x..z`` [N·m·s]; inputs ``dipole_x..z`` [A·m²]; outputs
+        ``wheel_momentum`` |K| and ``wheel_momentum_along_field`` K·B/|B| [N·m·s]; each (K, M).
+        Summary ``dipole_limited_fraction`` (M,) [-].
+
+    Notes
+    -----
+    Kovalenko (1975) §5.5 (seed lines 121–122): "the problem was solved assuming ideal
+    stabilisation ... the rotation of the base (Sun–ecliptic) frame not counted, nor the
+    Earth's daily rotation; the dynamic equations took the form K̇_i = M_ctrl,i + M_B,i".
+    Reconstructed: the body axes are taken as the inertial axes (the source's angles ρ_c and
+    λ_Ω fix the Sun direction relative to the orbit; ρ_c = λ_Ω = 0 is not legible further),
+    and the field is the library's dipole along the orbit.
+
+    Examples
+    --------
+    >>> run = simulate_ideal_unloading(CircularOrbit(6.83e6, 0.96, 8e22), UnloadingLaw("linear", 0.002), 1e-4,
+    ...                                600.0, 10.0, 60.0)
+    >>> run.wheel_momentum.shape
+    (11, 1)
+    """
+    if not isinstance(orbit, CircularOrbit):
+        raise ValueError(f"orbit must be a magbench.earth.CircularOrbit, got {type(orbit).__name__}")
+    if not isinstance(law, UnloadingLaw):
+        raise ValueError(f"law must be a UnloadingLaw, got {type(law).__name__}")
+    total = as_positive_scalar("duration", duration, unit="s")
+    h = as_positive_scalar("step", step, unit="s")
+    every = 1 if record_interval is None else as_positive_scalar("record_interval", record_interval, unit="s") / h
+    if abs(every - round(every)) > 1e-9 or round(every) < 1:
+        raise ValueError(f"record_interval must be a whole number of steps ({h} s), got {record_interval!r}")
+    every = int(round(every))
+    limit = np.asarray(dipole_limit, dtype=float)
+    if limit.ndim or np.isnan(limit) or limit <= 0:
+        raise ValueError(f"dipole_limit must be a scalar > 0 A·m² (inf allowed), got {shown(dipole_limit)}")
+    phase = np.atleast_1d(np.asarray(orbit.argument_of_latitude0, dtype=float))
+    sizes = {phase.size} | {np.asarray(v).shape[0] for v in (disturbance, initial_wheel_momentum) if np.ndim(v) == 2}
+    members = max(sizes)
+    if sizes - {1, members}:
+        raise ValueError(f"the orbit's phases ({phase.size}), disturbance and initial_wheel_momentum must agree on "
+                         f"the members M, got {sorted(sizes)}")
+    torque = _members("disturbance", disturbance, members, (3,))
+    state = _members("initial_wheel_momentum", initial_wheel_momentum, members, (3,))
+    steps = int(np.ceil(total / h - 1e-9))
+    check_member_steps(members, steps)
+    active = np.zeros((members, 3), dtype=bool)
+    states, inputs, fields = [], [], []
+    clipped = np.zeros(members)
+    for i in range(steps + 1):
+        t = i * h
+        b = np.broadcast_to(orbit.field(t), state.shape)
+        raw, active = _dipole(law, b, state, active)
+        m = np.clip(raw, -limit, limit)
+        if i % every == 0:
+            states.append(state)
+            inputs.append(m)
+            fields.append(b)
+        if i < steps:
+            clipped += np.any(m != raw, axis=-1)
+            state = rk4_step(_ideal_rhs, t, state, h, (m, orbit, torque))
+    record, field = np.stack(states), np.stack(fields)
+    time = np.arange(record.shape[0]) * every * h
+    along = np.sum(record * field, axis=-1) / np.linalg.norm(field, axis=-1)
+    return SimulationResult(time, np.moveaxis(record, -1, 0), np.moveaxis(np.stack(inputs), -1, 0),
+                            np.stack([np.linalg.norm(record, axis=-1), along]),
+                            ("wheel_momentum_x", "wheel_momentum_y", "wheel_momentum_z"),
+                            ("dipole_x", "dipole_y", "dipole_z"), ("wheel_momentum", "wheel_momentum_along_field"),
+                            params={"orbit": orbit, "law": law, "disturbance": torque, "step": h},
+                            summary={"dipole_limited_fraction": clipped / max(steps, 1)})

@@ -7,7 +7,8 @@ import pytest
 from numpy.testing import assert_allclose
 
 from magbench.earth import CircularOrbit
-from magbench.sim.wheels import DisturbanceTorque, UnloadingLaw, WheelSatellite, simulate_unloading
+from magbench.sim.wheels import (DisturbanceTorque, UnloadingLaw, WheelSatellite, simulate_ideal_unloading,
+                                  simulate_unloading)
 
 SAT = WheelSatellite((10.0, 12.0, 8.0), 0.025, 0.7)  # ω_n ≈ 0.05 rad/s, ζ ≈ 0.7
 ORBIT = CircularOrbit(6.83e6, np.radians(55.0), 8e22)
@@ -99,3 +100,29 @@ def test_members_equal_separate_runs():
 def test_bad_input(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+E20_ORBIT = CircularOrbit(6371e3 + 450e3, np.radians(55.0), 8.1e22)
+
+
+def test_ideal_unloading_without_coils_integrates_the_disturbance_exactly():
+    # K̇ = M_B constant: RK4 is exact on a linear function of time (rounding only)
+    run = simulate_ideal_unloading(E20_ORBIT, UnloadingLaw("none"), [1e-4, -2e-4, 3e-4], 3000.0, 10.0, 100.0)
+    assert_allclose(run.wheel_momentum_y[:, 0], -2e-4 * run.time, atol=1e-13)
+
+
+def test_relay_hysteresis_keeps_the_coils_on_down_to_the_release_threshold():
+    # one axis above K° = 1: without hysteresis the relay stops at the first |K_x| ≤ K°, the others
+    # still inside their dead zone, so K freezes; the last held step moves K_x by at most
+    # L0 (|B_y| + |B_z|) h ≤ 50·2·4.5e-5·10 = 0.045. With K1° = 0.2 (Fig. 5.1b) it goes on past K°,
+    # and the y and z relays, fed by the cross terms, switch on in turn (the source's coupling of
+    # the channels, seed line 121)
+    start = [1.5, 0.0, 0.0]
+    plain = simulate_ideal_unloading(E20_ORBIT, UnloadingLaw("relay_coil", 50.0, 1.0, 1e-6), 0.0, 3000.0, 10.0,
+                                     initial_wheel_momentum=start)
+    assert 1.0 - 0.045 <= plain.wheel_momentum_x[-1, 0] <= 1.0
+    assert np.all(np.abs(plain.states[1:, -1, 0]) < 1.0)
+    assert_allclose(plain.states[:, -1], plain.states[:, -50], rtol=0, atol=0)
+    held = simulate_ideal_unloading(E20_ORBIT, UnloadingLaw("relay_coil", 50.0, 1.0, 1e-6, 0.2), 0.0, 3000.0, 10.0,
+                                    initial_wheel_momentum=start)
+    assert held.wheel_momentum_x[:, 0].min() < 0.5
