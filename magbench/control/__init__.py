@@ -6,7 +6,8 @@ readings of the thesis's unit-less gains (:mod:`.gain_readings`), and B-dot detu
 (:mod:`.bdot`, SamSat-218D and Kovalenko ch. 6), the rotor spacecraft's spin laws (:mod:`.spin`,
 rotor slides, and Kovalenko's relay spin law), Floquet analysis of periodic systems
 (:mod:`.floquet`), stabilisation along B with Kovalenko's §6.5 estimates
-(:mod:`.field_stabilisation`) and the rotor's stability map (:mod:`.rotor_stability`); their unchecked
+(:mod:`.field_stabilisation`), Kovalenko's laws for unloading reaction wheels
+(:mod:`.unloading`) and the rotor's stability map (:mod:`.rotor_stability`); their unchecked
 array kernels are in :mod:`.kernels`. Re-exports the public names of its modules. The
 simulated loop moved to :mod:`magbench.sim.pid_loop`; its names are still served from here,
 imported on use.
@@ -27,6 +28,8 @@ from .linear import (closed_loop_poles, closed_loop_polynomial, closed_loop_stat
 from .pid import pid_gains_for_triple_pole, pid_step, ziegler_nichols_pid
 from .rotor_stability import (rotor_floquet_multipliers, rotor_linearised_matrices, rotor_model_numbers,
                               rotor_stability_map)
+from .unloading import (pulsed_unloading_dipole, relay_coil_unloading_dipole, relay_unloading_dipole, unloading_dipole,
+                        unloading_torque)
 from .spin import (momentum_damping_dipole, projected_damping_dipole, relay_spin_dipole,
                    rotor_equilibrium_axial_momentum, rotor_equilibrium_dipole, rotor_program_field,
                    rotor_reference_momentum, rotor_reference_torque, rotor_spin_reference,
@@ -47,4 +50,5 @@ __all__ = ["pid_step", "pid_gains_for_triple_pole", "ALLOCATIONS", "body_field_e
            "orienting_dipole_per_axis", "viscous_detumble_time", "dry_detumble_time", "dry_friction_torque",
            "capture_momentum", "dry_transient_time", "polar_forcing_coefficients", "polar_forced_response",
            "elastic_damper_response", "polar_error_factor", "polar_disturbance_peak", "steady_state_error_estimate",
-           "steady_state_error_closed_form"]
+           "steady_state_error_closed_form", "unloading_dipole", "unloading_torque", "relay_unloading_dipole",
+           "relay_coil_unloading_dipole", "pulsed_unloading_dipole"]

@@ -153,3 +153,47 @@ def orienting_dipole_per_axis(field, gains):
     :func:`magbench.control.orienting_dipole_per_axis`."""
     bx, by, bz = field[..., 0], field[..., 1], field[..., 2]
     return gains * np.stack([by * by + bz * bz, -bx * by, -bx * bz], axis=-1)
+
+
+# Kovalenko's laws for magnetic unloading of reaction wheels (§5.2).
+__all__ += ["unloading_dipole", "relay_unloading_dipole", "pulsed_unloading_dipole"]
+
+
+def unloading_dipole(field, momentum, gain):
+    """L = k (K × B)/B², K = momentum (..., 3) [N·m·s], B = field (..., 3), k = gain [1/s]
+    broadcasting over the leading axes; no checks (B must not vanish). The checked form, which
+    documents the law (Kovalenko (1975) eq. (5.1)), is :func:`magbench.control.unloading_dipole`."""
+    b2 = np.sum(field * field, axis=-1, keepdims=True)
+    return np.asarray(gain)[..., None] * np.cross(momentum, field) / b2
+
+
+def relay_unloading_dipole(field, momentum, gain, dead_zone):
+    """L = k F_K(K) × B with F_K(K_i) = sign(K_i) where |K_i| > K°_i, else 0; K = momentum
+    (..., 3), K° = dead_zone (3,) or (..., 3) [N·m·s], k = gain [A·m²/T]; no checks. The
+    checked form is :func:`magbench.control.relay_unloading_dipole` (Kovalenko eq. (5.7))."""
+    relay = np.where(np.abs(momentum) > dead_zone, np.sign(momentum), 0.0)
+    return np.asarray(gain)[..., None] * np.cross(relay, field)
+
+
+def pulsed_unloading_dipole(field, momentum, gain, axis, field_threshold):
+    """L = k K_a (e_a × B)/B² while |B_a| ≤ δ (else 0), a = axis (0, 1, 2), δ = field_threshold
+    [T], k = gain [1/s]; no checks. The checked form is
+    :func:`magbench.control.pulsed_unloading_dipole` (Kovalenko eqs. (5.8)–(5.9), reconstructed)."""
+    e = np.zeros(3)
+    e[axis] = 1.0
+    b2 = np.sum(field * field, axis=-1, keepdims=True)
+    on = np.abs(field[..., axis:axis + 1]) <= field_threshold
+    dipole = np.asarray(gain)[..., None] * momentum[..., axis:axis + 1] * np.cross(e, field) / b2
+    return np.where(on, dipole, 0.0)
+
+
+__all__ += ["relay_coil_unloading_dipole"]
+
+
+def relay_coil_unloading_dipole(field, momentum, moment, dead_zone, signal_dead_zone):
+    """L_i = L0 F_L(δ_i), δ = F_K(K) × B, both relays with dead zones (K° = dead_zone [N·m·s],
+    δ0 = signal_dead_zone [T]), L0 = moment [A·m²]; no checks. The checked form is
+    :func:`magbench.control.relay_coil_unloading_dipole` (Kovalenko eq. (5.7), Figs. 5.1–5.2)."""
+    relay = np.where(np.abs(momentum) > dead_zone, np.sign(momentum), 0.0)
+    signal = np.cross(relay, field)
+    return np.asarray(moment)[..., None] * np.where(np.abs(signal) > signal_dead_zone, np.sign(signal), 0.0)

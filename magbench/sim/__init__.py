@@ -8,7 +8,8 @@ whose step follows the rate: :mod:`.detumble_segments`), the spinning spacecraft
 correction (:mod:`.spin_correction`) and the passive magnetic satellite (:mod:`.passive`, its flat
 spin's energy balance :mod:`.passive_balance`, its final regime :mod:`.passive_regime`), and the planar pitch motion of a magnet-held body on a
 magnetopolar orbit (:mod:`.planar`), and the gravity-gradient boom with a magnetic libration
-damper (:mod:`.libration`).
+damper (:mod:`.libration`), and the wheel-stabilised spacecraft whose wheels magnetorquers
+unload (:mod:`.wheels`).
 
 Re-exports the integrator, the result type, the mock-up's PID loop, detumbling, the spinning
 spacecraft and the passive satellite; the bench loop is imported from its package.
@@ -34,6 +35,7 @@ from .rotor_variants import (maxima_per_orbit, normalised_pointing_error, pointi
                              symmetric_rotor_orbit_maxima, tilted_dipole_pointing_error, transverse_asymmetry,
                              transverse_inertia_with_asymmetry)
 from .spin_correction import relay_spin_correction, relay_spin_torque_over_turn
+from .wheels import DisturbanceTorque, UnloadingLaw, WheelSatellite, simulate_ideal_unloading, simulate_unloading
 from .turning_field import turning_field_kinetic_energy
 
 __all__ = ["rk4_step", "SimulationResult", "simulate_free_swing", "integrated_swing_period", "PidLoop", "loop_torque", "pid_continuous_rhs", "simulate_pid", "DetumbleRun", "simulate_detumble", "detumble_time",
@@ -48,4 +50,6 @@ __all__ = ["rk4_step", "SimulationResult", "simulate_free_swing", "integrated_sw
            "rotor_satellite_with_products", "reference_momentum_rate_offset", "normalised_pointing_error",
            "maxima_per_orbit", "pointing_error_orbit_maxima", "tilted_dipole_pointing_error",
            "symmetric_rotor_orbit_maxima", "relay_spin_correction", "relay_spin_torque_over_turn",
-           "simulate_planar", "planar_error_orbit_maxima", "LibrationSatellite", "simulate_libration"]
+           "simulate_planar", "planar_error_orbit_maxima", "LibrationSatellite", "simulate_libration",
+           "WheelSatellite", "UnloadingLaw", "DisturbanceTorque", "simulate_unloading",
+           "simulate_ideal_unloading"]
