@@ -126,6 +126,16 @@ def as_count(name, value, *, minimum=1):
     return int(round(number))
 
 
+def as_whole_steps(name, value, step):
+    """Number of integration steps of ``step`` [s] in ``value`` [s]; a ValueError naming
+    ``name`` unless it is a whole number (≥ 1) of them."""
+    ratio = value / step
+    n = int(round(ratio))
+    if n < 1 or abs(ratio - n) > 1e-9 * max(1.0, ratio):
+        raise ValueError(f"{name} must be a whole number of steps ({shown(step)} s), got {shown(value)} s")
+    return n
+
+
 def check_member_steps(members, steps):
     """Raise if ``members`` × ``steps`` exceeds :data:`MAX_MEMBER_STEPS`."""
     work = float(members) * float(steps)

@@ -22,22 +22,13 @@ import numpy as np
 from scipy.spatial.transform import Rotation
 
 from .._validate import (as_choice, as_finite, as_inertia, as_nonnegative, as_positive, as_positive_or_infinite,
-                         as_positive_scalar, as_quaternions, as_vectors, check_member_steps, shown)
+                         as_positive_scalar, as_quaternions, as_vectors, as_whole_steps, check_member_steps, shown)
 from ..earth.circular_orbit import CircularOrbit
 from ._detumble_loops import ESTIMATORS, LAWS, MODES, _Loop, _compiled_loop, _numpy_loop
 from .result import DetumbleRun
 
 __all__ = ["DetumbleRun", "simulate_detumble", "detumble_time", "detumble_monte_carlo"]
 
-
-
-def _multiple(name, value, step):
-    """Number of steps in ``value``, raising unless it is a whole number of steps."""
-    ratio = value / step
-    n = int(round(ratio))
-    if n < 1 or abs(ratio - n) > 1e-9 * max(1.0, ratio):
-        raise ValueError(f"{name} must be a whole number of integration steps ({shown(step)} s), got {shown(value)} s")
-    return n
 
 
 def _default_step(mode, control_interval, off_time, record_interval, speed):
@@ -110,10 +101,10 @@ def _step_counts(mode, step, w0, delta, t_on, t_off, every, span):
     speed = float(np.max(np.linalg.norm(w0, axis=-1)))
     h = (_default_step(mode, delta, t_off, every, speed) if step is None
          else as_positive_scalar("step", step, unit="s"))
-    per_sample = _multiple("control_interval", delta, h) if mode == "sampled" else 0
-    n_off = _multiple("off_time", t_off, h) if mode == "duty" else 0
-    n_on = _multiple("on_time", t_on, h) if mode == "duty" else 0
-    stride = _multiple("record_interval", every, h)
+    per_sample = as_whole_steps("control_interval", delta, h) if mode == "sampled" else 0
+    n_off = as_whole_steps("off_time", t_off, h) if mode == "duty" else 0
+    n_on = as_whole_steps("on_time", t_on, h) if mode == "duty" else 0
+    stride = as_whole_steps("record_interval", every, h)
     n_records = int(np.ceil(span / every - 1e-9)) + 1
     n_steps = (n_records - 1) * stride
     return h, (per_sample, n_off, n_on), stride, n_records, n_steps

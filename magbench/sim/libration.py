@@ -17,7 +17,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from .._validate import as_finite, as_inertia, as_nonnegative, as_positive, as_positive_scalar, check_member_steps
+from .._validate import (as_finite, as_inertia, as_nonnegative, as_positive, as_positive_scalar, as_whole_steps,
+                         check_member_steps)
 from ..dynamics import kernels
 from ..earth import CircularOrbit
 from ..integrate import rk4_step
@@ -156,10 +157,8 @@ def simulate_libration(satellite, orbit, initial_pitch, initial_roll, duration, 
         raise ValueError(f"orbit must be a magbench.earth.CircularOrbit, got {type(orbit).__name__}")
     total = as_positive_scalar("duration", duration, unit="s")
     h = as_positive_scalar("step", step, unit="s")
-    every = 1 if record_interval is None else as_positive_scalar("record_interval", record_interval, unit="s") / h
-    if abs(every - round(every)) > 1e-9 or round(every) < 1:
-        raise ValueError(f"record_interval must be a whole number of steps ({h} s), got {record_interval!r}")
-    every = int(round(every))
+    every = 1 if record_interval is None else as_whole_steps(
+        "record_interval", as_positive_scalar("record_interval", record_interval, unit="s"), h)
     phase = np.atleast_1d(np.asarray(orbit.argument_of_latitude0, dtype=float))
     pitch0 = np.atleast_1d(as_finite("initial_pitch", initial_pitch))
     roll0 = np.atleast_1d(as_finite("initial_roll", initial_roll))

@@ -21,7 +21,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from .._validate import as_choice, as_finite, as_nonnegative, as_positive_scalar, check_member_steps, shown
+from .._validate import (as_choice, as_finite, as_nonnegative, as_positive_scalar, as_whole_steps, check_member_steps,
+                         shown)
 from ..control import kernels as laws
 from ..dynamics import kernels
 from ..earth import CircularOrbit
@@ -319,10 +320,8 @@ def simulate_unloading(satellite, orbit, law, disturbance, duration, step, recor
             raise ValueError(f"{name} must be a {kind.__name__}, got {type(value).__name__}")
     total = as_positive_scalar("duration", duration, unit="s")
     h = as_positive_scalar("step", step, unit="s")
-    every = 1 if record_interval is None else as_positive_scalar("record_interval", record_interval, unit="s") / h
-    if abs(every - round(every)) > 1e-9 or round(every) < 1:
-        raise ValueError(f"record_interval must be a whole number of steps ({h} s), got {record_interval!r}")
-    every = int(round(every))
+    every = 1 if record_interval is None else as_whole_steps(
+        "record_interval", as_positive_scalar("record_interval", record_interval, unit="s"), h)
     phase = np.atleast_1d(np.asarray(orbit.argument_of_latitude0, dtype=float))
     sizes = {phase.size} | {np.asarray(v).shape[0] for v in (initial_rotation, initial_rate, initial_wheel_momentum)
                             if np.ndim(v) == 2}
@@ -440,10 +439,8 @@ def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_int
         raise ValueError(f"law must be a UnloadingLaw, got {type(law).__name__}")
     total = as_positive_scalar("duration", duration, unit="s")
     h = as_positive_scalar("step", step, unit="s")
-    every = 1 if record_interval is None else as_positive_scalar("record_interval", record_interval, unit="s") / h
-    if abs(every - round(every)) > 1e-9 or round(every) < 1:
-        raise ValueError(f"record_interval must be a whole number of steps ({h} s), got {record_interval!r}")
-    every = int(round(every))
+    every = 1 if record_interval is None else as_whole_steps(
+        "record_interval", as_positive_scalar("record_interval", record_interval, unit="s"), h)
     limit = np.asarray(dipole_limit, dtype=float)
     if limit.ndim or np.isnan(limit) or limit <= 0:
         raise ValueError(f"dipole_limit must be a scalar > 0 A·m² (inf allowed), got {shown(dipole_limit)}")
