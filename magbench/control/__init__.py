@@ -18,7 +18,8 @@ from .bdot import (avanzini_giulietti_gain, bdot_dipole, bdot_dipole_projected, 
                    kovalenko_detumble_time, samsat_gain)
 from .field_stabilisation import (capture_momentum, dry_detumble_time, dry_friction_torque, dry_transient_time,
                                    elastic_damper_response, orienting_dipole, orienting_dipole_per_axis,
-                                   orienting_torque, pointing_dipole, pointing_torque, polar_disturbance_peak, polar_error_factor,
+                                   orienting_torque, pointing_dipole, pointing_torque, polar_disturbance_peak,
+                                   polar_disturbance_ratio, polar_error_factor,
                                    polar_forced_response, polar_forcing_coefficients, steady_state_error_closed_form,
                                    steady_state_error_estimate, viscous_detumble_time)
 from .floquet import degree_of_stability, finite_difference_monodromy, floquet_multipliers
@@ -47,6 +48,7 @@ __all__ = ["pid_step", "pid_gains_for_triple_pole", "ALLOCATIONS", "body_field_e
            "rotor_reference_momentum", "momentum_damping_dipole", "relay_spin_dipole", "floquet_multipliers",
            "finite_difference_monodromy", "degree_of_stability", "rotor_model_numbers", "rotor_linearised_matrices",
            "rotor_floquet_multipliers", "rotor_stability_map", "orienting_dipole", "orienting_torque", "pointing_dipole", "pointing_torque",
+           "polar_disturbance_ratio",
            "orienting_dipole_per_axis", "viscous_detumble_time", "dry_detumble_time", "dry_friction_torque",
            "capture_momentum", "dry_transient_time", "polar_forcing_coefficients", "polar_forced_response",
            "elastic_damper_response", "polar_error_factor", "polar_disturbance_peak", "steady_state_error_estimate",

@@ -15,10 +15,10 @@ from ..earth.polar_orbit import (polar_field_b, polar_field_direction_accelerati
                                  polar_gravity_factor)
 from . import kernels
 
-__all__ = ["orienting_dipole", "orienting_torque", "orienting_dipole_per_axis", "pointing_dipole", "pointing_torque", "viscous_detumble_time",
-           "dry_detumble_time", "dry_friction_torque", "capture_momentum", "dry_transient_time",
-           "polar_forcing_coefficients", "polar_forced_response", "elastic_damper_response", "polar_error_factor",
-           "polar_disturbance_peak", "steady_state_error_estimate", "steady_state_error_closed_form"]
+__all__ = ["orienting_dipole", "orienting_torque", "orienting_dipole_per_axis", "pointing_dipole", "pointing_torque",
+           "viscous_detumble_time", "dry_detumble_time", "dry_friction_torque", "capture_momentum", "dry_transient_time",
+           "polar_forcing_coefficients", "polar_forced_response", "polar_disturbance_ratio", "elastic_damper_response",
+           "polar_error_factor", "polar_disturbance_peak", "steady_state_error_estimate", "steady_state_error_closed_form"]
 
 #: Parameters described once for the functions that share them (:func:`magbench._docstrings.fill_docstring`).
 _STABILISATION_PARAMETERS = {
@@ -509,6 +509,43 @@ def _disturbance_ratio(u, inertia, inertia_difference, friction, mean_motion, eq
     kinematic = -inertia * polar_field_direction_acceleration(u, mean_motion)
     gravity = 1.5 * mean_motion**2 * inertia_difference * polar_gravity_factor(u)
     return (kinematic + gravity - friction) / polar_field_b(u, equatorial_b)
+
+
+def polar_disturbance_ratio(argument_of_latitude, inertia, mean_motion, equatorial_b, inertia_difference=0.0,
+                            friction=0.0):
+    r"""The disturbance a magnet must hold on a magnetopolar orbit, per unit field, along the orbit.
+
+    Parameters
+    ----------
+    argument_of_latitude : array_like
+        u from the magnetic equator [rad].
+    inertia : float
+        J > 0 [kg·m²].
+    mean_motion : float
+        ω0 > 0 [rad/s].
+    equatorial_b : float
+        B0 > 0, the field over the magnetic equator [T].
+    inertia_difference : float, optional
+        ΔJ [kg·m²]; 0 leaves out the gravity torque.
+    friction : float, optional
+        M_T ≥ 0, the dry friction of a damper whose magnet rests against the field [N·m].
+
+    Returns
+    -------
+    ndarray
+        [J|η̈| + (3/2)ω0²ΔJ sin 2λ − M_T]/B(u) [A·m²] (= N·m/T); its largest value over the
+        orbit is :func:`polar_disturbance_peak`.
+
+    Notes
+    -----
+    Kovalenko (1975) eqs. (6.72)–(6.79) (seed lines 146–149).
+    """
+    u = as_finite("argument_of_latitude", argument_of_latitude)
+    return _disturbance_ratio(u, as_positive("inertia", inertia, unit="kg·m²"),
+                              as_finite("inertia_difference", inertia_difference),
+                              as_nonnegative("friction", friction, unit="N·m"),
+                              as_positive("mean_motion", mean_motion, unit="rad/s"),
+                              as_positive("equatorial_b", equatorial_b, unit="T"))
 
 
 def polar_error_factor(tolerance=1e-12):

@@ -319,3 +319,16 @@ def test_pointing_torque_never_increases_the_error():
     assert_allclose(np.sum(torque * b, axis=-1), 0.0, atol=1e-15)
     with pytest.raises(ValueError, match="direction must not contain a zero vector"):
         pointing_dipole(b[0], i0[0], [0.0, 0.0, 0.0], 1e-3)
+
+
+def test_disturbance_ratio_peaks_where_the_peak_says():
+    """The ratio along the orbit and its maximum (polar_disturbance_peak) are one function:
+    on a fine grid the ratio's largest value is the peak to the grid's resolution."""
+    from magbench.control import polar_disturbance_ratio
+
+    u = np.linspace(0.0, np.pi / 2, 200001)
+    ratio = polar_disturbance_ratio(u, 650.0, 1e-3, 2e-5, 400.0)
+    peak, where = polar_disturbance_peak(650.0, 1e-3, 2e-5, 400.0)
+    # 1e-9 relative: the grid step 8e-6 rad off a smooth maximum changes the value by ~1e-11
+    assert_allclose(ratio.max(), peak, rtol=1e-9)
+    assert_allclose(u[np.argmax(ratio)], where, atol=1e-5)

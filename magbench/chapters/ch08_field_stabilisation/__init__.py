@@ -575,14 +575,12 @@ def polar_checks():
 
 def _flat_span(p, case, fraction):
     """The span of u [deg] over which E47's disturbance stays above ``fraction`` of its peak."""
-    from ...control import polar_disturbance_peak
-    from ...earth import polar_field_b, polar_field_direction_acceleration, polar_gravity_factor
+    from ...control import polar_disturbance_ratio
 
-    body, n, b0 = e47_body(p), case["mean_motion"], case["equatorial_b"]
+    body = e47_body(p)
     u = np.linspace(0.0, np.pi / 2, 9001)
-    ratio = (-body.inertia * polar_field_direction_acceleration(u, n)
-             + 1.5 * n**2 * body.inertia_difference * polar_gravity_factor(u)) / polar_field_b(u, b0)
-    high = u[ratio >= fraction * polar_disturbance_peak(body.inertia, n, b0, body.inertia_difference)[0]]
+    ratio = polar_disturbance_ratio(u, body.inertia, case["mean_motion"], case["equatorial_b"], body.inertia_difference)
+    high = u[ratio >= fraction * case["peak"]]
     return np.degrees(high.min()), np.degrees(high.max())
 
 
