@@ -13,7 +13,9 @@ checked function here:
 
 import numpy as np
 
+from .._docstrings import fill_docstring
 from .._validate import as_count, as_finite, as_nonnegative, as_vectors, shown
+from .field_stabilisation import _nonzero_field as _field
 from .kernels import pulsed_unloading_dipole as _pulsed
 from .kernels import relay_coil_unloading_dipole as _relay_coil
 from .kernels import relay_unloading_dipole as _relay
@@ -23,20 +25,22 @@ __all__ = ["unloading_dipole", "unloading_torque", "relay_unloading_dipole", "re
            "pulsed_unloading_dipole"]
 
 
-def _field(field):
-    b = as_vectors("field", field)
-    if np.any(np.sum(b * b, axis=-1) == 0):
-        raise ValueError("field must not contain a zero vector [T] (the law divides by B²)")
-    return b
+#: Parameters described once for the laws that share them (:func:`magbench._docstrings.fill_docstring`).
+_document_unloading = fill_docstring({
+    "field": """field : array_like, shape (..., 3)
+    B in body axes [T]; must not vanish.""",
+    "momentum": """momentum : array_like, shape (..., 3)
+    K, body axes [N·m·s].""",
+})
 
 
+@_document_unloading
 def unloading_dipole(field, momentum, gain):
     r"""Kovalenko's linear unloading law: L = k (K × B)/B².
 
     Parameters
     ----------
-    field : array_like, shape (..., 3)
-        B in body axes [T]; must not vanish.
+    {field}
     momentum : array_like, shape (..., 3)
         K, the momentum to remove (the wheels' excess momentum), body axes [N·m·s].
     gain : float or array_like
@@ -65,15 +69,14 @@ def unloading_dipole(field, momentum, gain):
     return _linear(b, as_vectors("momentum", momentum), k)
 
 
+@_document_unloading
 def unloading_torque(field, momentum, gain):
     r"""The torque L × B of the linear unloading law (5.1): −k K⊥.
 
     Parameters
     ----------
-    field : array_like, shape (..., 3)
-        B in body axes [T]; must not vanish.
-    momentum : array_like, shape (..., 3)
-        K, body axes [N·m·s].
+    {field}
+    {momentum}
     gain : float or array_like
         k ≥ 0 [1/s].
 
@@ -96,6 +99,7 @@ def unloading_torque(field, momentum, gain):
     return np.cross(unloading_dipole(b, momentum, gain), b)
 
 
+@_document_unloading
 def relay_unloading_dipole(field, momentum, gain, dead_zone):
     r"""Kovalenko's relay unloading law with a dead zone: L = k F_K(K) × B.
 
@@ -103,8 +107,7 @@ def relay_unloading_dipole(field, momentum, gain, dead_zone):
     ----------
     field : array_like, shape (..., 3)
         B in body axes [T].
-    momentum : array_like, shape (..., 3)
-        K, body axes [N·m·s].
+    {momentum}
     gain : float or array_like
         k ≥ 0 [A·m²/T]; the dipole per unit field of the relay's output.
     dead_zone : float or array_like, shape (3,) or (..., 3)
@@ -137,15 +140,14 @@ def relay_unloading_dipole(field, momentum, gain, dead_zone):
     return _relay(b, as_vectors("momentum", momentum), k, zone)
 
 
+@_document_unloading
 def pulsed_unloading_dipole(field, momentum, gain, axis, field_threshold):
     r"""Kovalenko's pulsed unloading of one axis while B has no component along it.
 
     Parameters
     ----------
-    field : array_like, shape (..., 3)
-        B in body axes [T]; must not vanish.
-    momentum : array_like, shape (..., 3)
-        K, body axes [N·m·s].
+    {field}
+    {momentum}
     gain : float or array_like
         k ≥ 0 [1/s].
     axis : int
@@ -182,6 +184,7 @@ def pulsed_unloading_dipole(field, momentum, gain, axis, field_threshold):
     return _pulsed(b, as_vectors("momentum", momentum), k, a, float(delta))
 
 
+@_document_unloading
 def relay_coil_unloading_dipole(field, momentum, moment, dead_zone, signal_dead_zone):
     r"""Kovalenko's relay law with relay coils: L_i = L0 F_L(δ_i), δ = F_K(K) × B.
 
@@ -189,8 +192,7 @@ def relay_coil_unloading_dipole(field, momentum, moment, dead_zone, signal_dead_
     ----------
     field : array_like, shape (..., 3)
         B in body axes [T].
-    momentum : array_like, shape (..., 3)
-        K, body axes [N·m·s].
+    {momentum}
     moment : float or array_like
         L0 ≥ 0, the dipole of a switched-on coil [A·m²].
     dead_zone : float or array_like, shape (3,) or (..., 3)
