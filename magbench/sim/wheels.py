@@ -31,7 +31,7 @@ from .result import SimulationResult
 
 __all__ = ["WheelSatellite", "UnloadingLaw", "DisturbanceTorque", "simulate_unloading"]
 
-LAWS = ("none", "linear", "relay", "relay_coil")
+LAWS = ("none", "linear", "product", "relay", "relay_coil")
 
 
 def _vector(name, value, unit, nonnegative=False):
@@ -108,13 +108,18 @@ class UnloadingLaw:
 
     Parameters
     ----------
-    kind : {"none", "linear", "relay", "relay_coil"}
-        "linear": L = k (h × B)/B², eq. (5.1); "relay": L = k F_K(h) × B, eq. (5.7);
-        "relay_coil": L_i = L0 F_L(δ_i), δ = F_K(h) × B (Fig. 5.2); "none": coils off.
+    kind : {"none", "linear", "product", "relay", "relay_coil"}
+        "linear": L = k (h × B)/B², eq. (5.1); "product": L = k (h × B), the per-axis
+        products of eqs. (5.6), (5.11) without the division by B²; "relay": L = k F_K(h) × B,
+        eq. (5.7); "relay_coil": L_i = L0 F_L(δ_i), δ = F_K(h) × B (Fig. 5.2); "none": coils
+        off.
     gain : float, optional
-        k ≥ 0 [1/s] ("linear"), k [A·m²/T] ("relay"), L0 [A·m²] ("relay_coil").
+        k ≥ 0 [1/s] ("linear"), k [A·m²/(N·m·s·T)] ("product"), k [A·m²/T] ("relay"), L0
+        [A·m²] ("relay_coil").
     dead_zone : float or tuple of float, optional
-        K°_i ≥ 0 of F_K [N·m·s] (relay laws).
+        K°_i ≥ 0 of F_K [N·m·s]. For the relay laws the relay on each channel; for "linear"
+        and "product" the switch of §5.3's system 3: the law acts while some channel's relay
+        is on (default 0: always).
     signal_dead_zone : float, optional
         δ0 ≥ 0 of F_L [T] ("relay_coil").
     release_zone : float or tuple of float, optional
@@ -191,9 +196,27 @@ class DisturbanceTorque:
         object.__setattr__(self, "gravity_gradient", bool(self.gravity_gradient))
 
 
-def _orbital_in_body(q, orbit, time):
+class _Path:
+    """The orbit tabulated at every half step of a run: the inertial field (N, M, 3), the orbital
+    axes (N, M, 3, 3) and the argument of latitude (N, M). None of it depends on the state, so
+    it is evaluated once instead of four times a step."""
+
+    def __init__(self, orbit, steps, step, members, axes=True):
+        t = (np.arange(2 * steps + 1) * 0.5 * step)[:, None]
+        n = t.shape[0]
+        self.step, self.mean_motion = step, orbit.mean_motion
+        self.field = np.broadcast_to(orbit.field(t), (n, members, 3))
+        if axes:
+            self.axes = np.broadcast_to(orbit.orbital_axes(t), (n, members, 3, 3))
+            self.latitude = np.broadcast_to(np.asarray(orbit.argument_of_latitude(t), dtype=float), (n, members))
+
+    def index(self, time):
+        return int(round(2.0 * time / self.step))
+
+
+def _orbital_in_body(q, path, time):
     """Rows: the orbital axes X, Y, Z in body components, (M, 3, 3)."""
-    axes = np.broadcast_to(orbit.orbital_axes(time), q.shape[:-1] + (3, 3))
+    axes = path.axes[path.index(time)]
     return np.stack([kernels.rotate(q, axes[..., i, :], -1.0) for i in range(3)], axis=-2)
 
 
@@ -201,8 +224,13 @@ def _dipole(law, b, h, active):
     """The law's dipole and the relays' updated on/off state (M, 3): on above K°, off at or below K1°."""
     active = (np.abs(h) > np.asarray(law.dead_zone)) | (active & (np.abs(h) > np.asarray(law.release_zone)))
     relay = np.where(active, np.sign(h), 0.0)  # F_K(h) with hysteresis; the kernels' own relay passes it (zone ½)
+    # the linear laws run while any channel's relay is on (§5.3, system 3: switched on when a |h_i|
+    # passes its threshold); with zero dead zones that is whenever h ≠ 0
+    gate = np.any(active, axis=-1, keepdims=True)
     if law.kind == "linear":
-        return laws.unloading_dipole(b, h, law.gain), active
+        return np.where(gate, laws.unloading_dipole(b, h, law.gain), 0.0), active
+    if law.kind == "product":
+        return np.where(gate, law.gain * kernels.cross(h, b), 0.0), active
     if law.kind == "relay":
         return laws.relay_unloading_dipole(b, relay, law.gain, 0.5), active
     if law.kind == "relay_coil":
@@ -210,40 +238,66 @@ def _dipole(law, b, h, active):
     return np.zeros_like(b), active
 
 
-def _commands(time, state, orbit, sat, law, active):
+def _law_groups(law, members):
+    """The members each distinct law drives: [(law, index array)], from one law or a sequence of M."""
+    if isinstance(law, UnloadingLaw):
+        return [(law, np.arange(members))]
+    laws_ = tuple(law) if isinstance(law, (list, tuple)) else None
+    if laws_ is None or not laws_ or not all(isinstance(x, UnloadingLaw) for x in laws_):
+        raise ValueError(f"law must be an UnloadingLaw or a sequence of them, one per member, got {type(law).__name__}")
+    if len(laws_) != members:
+        raise ValueError(f"law: a sequence needs one UnloadingLaw per member ({members}), got {len(laws_)}")
+    groups = {}
+    for i, x in enumerate(laws_):
+        groups.setdefault(x, []).append(i)
+    return [(x, np.asarray(i)) for x, i in groups.items()]
+
+
+def _group_dipole(groups, b, h, active):
+    """Every member's dipole and relay state, each group by its own law."""
+    if len(groups) == 1:
+        return _dipole(groups[0][0], b, h, active)
+    m, on = np.zeros_like(b), np.zeros_like(active)
+    for law, i in groups:
+        m[i], on[i] = _dipole(law, b[i], h[i], active[i])
+    return m, on
+
+
+def _commands(time, state, path, sat, law, active):
     """(dipole, wheel torque, attitude error angle, flags (M, 3): torque, momentum, dipole limited)."""
     q, w, h = state[:, :4], state[:, 4:7], state[:, 7:]
-    o = _orbital_in_body(q, orbit, time)
+    o = _orbital_in_body(q, path, time)
     theta = 0.5 * (np.cross(o[..., 0, :], [1.0, 0.0, 0.0]) + np.cross(o[..., 1, :], [0.0, 1.0, 0.0])
                    + np.cross(o[..., 2, :], [0.0, 0.0, 1.0]))
     angle = np.arccos(np.clip((o[..., 0, 0] + o[..., 1, 1] + o[..., 2, 2] - 1.0) / 2.0, -1.0, 1.0))
-    rate_error = w - orbit.mean_motion * o[..., 1, :]
+    rate_error = w - path.mean_motion * o[..., 1, :]
     wanted = sat.attitude_gain * theta + sat.rate_gain * rate_error  # u = −(body torque −k_p θ − k_d δω)
     u_max, h_max = np.asarray(sat.wheel_torque_limit), np.asarray(sat.wheel_momentum_limit)
     u = np.clip(wanted, -u_max, u_max)
     torque_limited = np.any(u != wanted, axis=-1)
     full = (np.abs(h) >= h_max) & (u * h > 0.0)
     u = np.where(full, 0.0, u)
-    b = kernels.rotate(q, orbit.field(time), -1.0)
-    raw, active = _dipole(law, b, h, active)
+    b = kernels.rotate(q, path.field[path.index(time)], -1.0)
+    raw, active = _group_dipole(law, b, h, active)
     m_max = np.asarray(sat.dipole_limit)
     m = np.clip(raw, -m_max, m_max)
     flags = np.stack([torque_limited, np.any(full, axis=-1), np.any(m != raw, axis=-1)], axis=-1)
     return m, u, angle, flags, b, active
 
 
-def _rhs(time, state, dipole, wheel_torque, orbit, sat, disturbance):
+def _rhs(time, state, dipole, wheel_torque, path, sat, disturbance):
     """(q̇, ω̇, ḣ_w) of every member; state (M, 10)."""
     q, w, h = state[:, :4], state[:, 4:7], state[:, 7:]
     j = np.asarray(sat.inertia)
-    b = kernels.rotate(q, orbit.field(time), -1.0)
+    k = path.index(time)
+    b = kernels.rotate(q, path.field[k], -1.0)
     torque = kernels.cross(dipole + np.asarray(sat.residual_dipole), b) + np.asarray(disturbance.constant)
     if any(disturbance.periodic):
-        u = np.asarray(orbit.argument_of_latitude(time), dtype=float)[..., None]
+        u = path.latitude[k][..., None]
         torque = torque + np.asarray(disturbance.periodic) * np.cos(u + disturbance.phase)
     if disturbance.gravity_gradient:
-        radial = kernels.rotate(q, np.broadcast_to(orbit.orbital_axes(time)[..., 2, :], w.shape), -1.0)
-        torque = torque + kernels.gravity_gradient_torque(radial, j, orbit.mean_motion)
+        radial = kernels.rotate(q, path.axes[k][..., 2, :], -1.0)
+        torque = torque + kernels.gravity_gradient_torque(radial, j, path.mean_motion)
     w_rate = kernels.euler_rates(w, torque - wheel_torque - kernels.cross(w, h), j)
     return np.concatenate([kernels.quaternion_rate(q, w), w_rate, wheel_torque], axis=-1)
 
@@ -268,8 +322,9 @@ def simulate_unloading(satellite, orbit, law, disturbance, duration, step, recor
     orbit : magbench.earth.CircularOrbit
         The orbit and its field (inertial axes); an array ``argument_of_latitude0`` (M,) gives
         each member its own phase [rad].
-    law : UnloadingLaw
-        The unloading law: kind, gain [1/s or A·m²/T or A·m²], dead zones [N·m·s, T].
+    law : UnloadingLaw or sequence of UnloadingLaw
+        The unloading law: kind, gain [1/s, A·m²/(N·m·s·T), A·m²/T or A·m²], dead zones
+        [N·m·s, T]; or one law per member (M), e.g. a ladder of dead zones in one run.
     disturbance : DisturbanceTorque
         Gravity gradient on or off, constant and orbit-periodic torques [N·m].
     duration : float
@@ -315,7 +370,7 @@ def simulate_unloading(satellite, orbit, law, disturbance, duration, step, recor
     (11, 1)
     """
     for name, value, kind in (("satellite", satellite, WheelSatellite), ("orbit", orbit, CircularOrbit),
-                              ("law", law, UnloadingLaw), ("disturbance", disturbance, DisturbanceTorque)):
+                              ("disturbance", disturbance, DisturbanceTorque)):
         if not isinstance(value, kind):
             raise ValueError(f"{name} must be a {kind.__name__}, got {type(value).__name__}")
     total = as_positive_scalar("duration", duration, unit="s")
@@ -324,11 +379,12 @@ def simulate_unloading(satellite, orbit, law, disturbance, duration, step, recor
         "record_interval", as_positive_scalar("record_interval", record_interval, unit="s"), h)
     phase = np.atleast_1d(np.asarray(orbit.argument_of_latitude0, dtype=float))
     sizes = {phase.size} | {np.asarray(v).shape[0] for v in (initial_rotation, initial_rate, initial_wheel_momentum)
-                            if np.ndim(v) == 2}
+                            if np.ndim(v) == 2} | ({len(law)} if isinstance(law, (list, tuple)) else set())
     members = max(sizes)
     if sizes - {1, members}:
-        raise ValueError(f"the orbit's phases ({phase.size}), initial_rotation, initial_rate and "
-                         f"initial_wheel_momentum must agree on the members M, got {sorted(sizes)}")
+        raise ValueError(f"the orbit's phases ({phase.size}), initial_rotation, initial_rate, "
+                         f"initial_wheel_momentum and the laws must agree on the members M, got {sorted(sizes)}")
+    groups = _law_groups(law, members)
     rotation = _members("initial_rotation", initial_rotation, members, (3,))
     rate = _members("initial_rate", initial_rate, members, (3,))
     wheels = _members("initial_wheel_momentum", initial_wheel_momentum, members, (3,))
@@ -344,9 +400,10 @@ def simulate_unloading(satellite, orbit, law, disturbance, duration, step, recor
     counts = np.zeros((members, 3))
     first = np.full(members, np.nan)
     active = np.zeros((members, 3), dtype=bool)
+    path = _Path(orbit, steps, h, members)
     for i in range(steps + 1):
         t = i * h
-        m, u, angle, flag, b, active = _commands(t, state, orbit, satellite, law, active)
+        m, u, angle, flag, b, active = _commands(t, state, path, satellite, groups, active)
         pending |= flag
         if i < steps:
             counts += flag
@@ -359,7 +416,7 @@ def simulate_unloading(satellite, orbit, law, disturbance, duration, step, recor
             flags.append(pending)
             pending = np.zeros((members, 3), dtype=bool)
         if i < steps:
-            state = rk4_step(_rhs, t, state, h, (m, u, orbit, satellite, disturbance))
+            state = rk4_step(_rhs, t, state, h, (m, u, path, satellite, disturbance))
     record, field = np.stack(states), np.stack(fields)
     time = np.arange(record.shape[0]) * every * h
     hw = record[..., 7:]
@@ -381,13 +438,13 @@ def simulate_unloading(satellite, orbit, law, disturbance, duration, step, recor
 __all__ += ["simulate_ideal_unloading"]
 
 
-def _ideal_rhs(time, momentum, dipole, orbit, torque):
+def _ideal_rhs(time, momentum, dipole, path, torque):
     """K̇ = L × B + M_B for a body fixed in inertial axes; momentum (M, 3)."""
-    return kernels.cross(dipole, np.broadcast_to(orbit.field(time), momentum.shape)) + torque
+    return kernels.cross(dipole, path.field[path.index(time)]) + torque
 
 
 def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_interval=None,
-                             initial_wheel_momentum=0.0, dipole_limit=np.inf):
+                             initial_wheel_momentum=0.0, dipole_limit=np.inf, control_interval=None, off_time=0.0):
     r"""Unload the wheels of an ideally stabilised, inertially fixed body: K̇ = L × B + M_B.
 
     Parameters
@@ -395,8 +452,9 @@ def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_int
     orbit : magbench.earth.CircularOrbit
         The orbit and its field; the body axes are the inertial axes; an array
         ``argument_of_latitude0`` (M,) gives each member its own phase [rad].
-    law : UnloadingLaw
-        The unloading law: kind, gain [1/s or A·m²/T or A·m²], dead zones [N·m·s, T].
+    law : UnloadingLaw or sequence of UnloadingLaw
+        The unloading law: kind, gain [1/s, A·m²/(N·m·s·T), A·m²/T or A·m²], dead zones
+        [N·m·s, T]; or one law per member (M), e.g. a ladder of dead zones in one run.
     disturbance : float or array_like, shape (3,) or (M, 3)
         M_B, a constant torque, body (= inertial) axes [N·m].
     duration : float
@@ -409,13 +467,24 @@ def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_int
         K at time 0 [N·m·s].
     dipole_limit : float, optional
         |L_i| the coils can give [A·m²] (default ∞); the clipped steps are counted.
+    control_interval : float, optional
+        Duty cycling (not in Kovalenko: SamSat-218D's scheme, chapter 5, and his §3.7 on a
+        magnetometer beside the coils): every ``control_interval`` [s] the coils are off for
+        ``off_time``, the field and momentum are read at the start of that gap, and the
+        dipole the law gives for them is held for the rest of the interval. Both must be
+        whole numbers of steps; default: the law acts on every step's reading, coils always
+        available.
+    off_time : float, optional
+        The coils' off time at the start of each interval, 0 ≤ off_time < control_interval
+        [s].
 
     Returns
     -------
     SimulationResult
         States ``wheel_momentum_x..z`` [N·m·s]; inputs ``dipole_x..z`` [A·m²]; outputs
         ``wheel_momentum`` |K| and ``wheel_momentum_along_field`` K·B/|B| [N·m·s]; each (K, M).
-        Summary ``dipole_limited_fraction`` (M,) [-].
+        Summary ``dipole_limited_fraction`` (M,) [-] and ``on_fraction``, the share of the
+        run's steps at which the coils may act [-].
 
     Notes
     -----
@@ -435,8 +504,6 @@ def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_int
     """
     if not isinstance(orbit, CircularOrbit):
         raise ValueError(f"orbit must be a magbench.earth.CircularOrbit, got {type(orbit).__name__}")
-    if not isinstance(law, UnloadingLaw):
-        raise ValueError(f"law must be a UnloadingLaw, got {type(law).__name__}")
     total = as_positive_scalar("duration", duration, unit="s")
     h = as_positive_scalar("step", step, unit="s")
     every = 1 if record_interval is None else as_whole_steps(
@@ -444,31 +511,44 @@ def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_int
     limit = np.asarray(dipole_limit, dtype=float)
     if limit.ndim or np.isnan(limit) or limit <= 0:
         raise ValueError(f"dipole_limit must be a scalar > 0 A·m² (inf allowed), got {shown(dipole_limit)}")
+    cycle, gap = _duty(control_interval, off_time, h)
     phase = np.atleast_1d(np.asarray(orbit.argument_of_latitude0, dtype=float))
-    sizes = {phase.size} | {np.asarray(v).shape[0] for v in (disturbance, initial_wheel_momentum) if np.ndim(v) == 2}
+    sizes = ({phase.size} | {np.asarray(v).shape[0] for v in (disturbance, initial_wheel_momentum) if np.ndim(v) == 2}
+             | ({len(law)} if isinstance(law, (list, tuple)) else set()))
     members = max(sizes)
     if sizes - {1, members}:
-        raise ValueError(f"the orbit's phases ({phase.size}), disturbance and initial_wheel_momentum must agree on "
-                         f"the members M, got {sorted(sizes)}")
+        raise ValueError(f"the orbit's phases ({phase.size}), disturbance, initial_wheel_momentum and the laws must "
+                         f"agree on the members M, got {sorted(sizes)}")
+    groups = _law_groups(law, members)
     torque = _members("disturbance", disturbance, members, (3,))
     state = _members("initial_wheel_momentum", initial_wheel_momentum, members, (3,))
     steps = int(np.ceil(total / h - 1e-9))
     check_member_steps(members, steps)
     active = np.zeros((members, 3), dtype=bool)
     states, inputs, fields = [], [], []
-    clipped = np.zeros(members)
+    clipped, on_steps = np.zeros(members), 0
+    held = np.zeros((members, 3))
+    path = _Path(orbit, steps, h, members, axes=False)
     for i in range(steps + 1):
         t = i * h
-        b = np.broadcast_to(orbit.field(t), state.shape)
-        raw, active = _dipole(law, b, state, active)
-        m = np.clip(raw, -limit, limit)
+        b = path.field[2 * i]
+        if cycle is None:
+            raw, active = _group_dipole(groups, b, state, active)
+            m = np.clip(raw, -limit, limit)
+        else:
+            if i % cycle == 0:          # the reading, coils off: the law's dipole for the rest of the interval
+                raw, active = _group_dipole(groups, b, state, active)
+                held = np.clip(raw, -limit, limit)
+            m = held if i % cycle >= gap else np.zeros_like(held)
         if i % every == 0:
             states.append(state)
             inputs.append(m)
             fields.append(b)
         if i < steps:
-            clipped += np.any(m != raw, axis=-1)
-            state = rk4_step(_ideal_rhs, t, state, h, (m, orbit, torque))
+            if cycle is None or i % cycle >= gap:
+                on_steps += 1
+                clipped += np.any(m != raw, axis=-1)
+            state = rk4_step(_ideal_rhs, t, state, h, (m, path, torque))
     record, field = np.stack(states), np.stack(fields)
     time = np.arange(record.shape[0]) * every * h
     along = np.sum(record * field, axis=-1) / np.linalg.norm(field, axis=-1)
@@ -476,5 +556,143 @@ def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_int
                             np.stack([np.linalg.norm(record, axis=-1), along]),
                             ("wheel_momentum_x", "wheel_momentum_y", "wheel_momentum_z"),
                             ("dipole_x", "dipole_y", "dipole_z"), ("wheel_momentum", "wheel_momentum_along_field"),
-                            params={"orbit": orbit, "law": law, "disturbance": torque, "step": h},
-                            summary={"dipole_limited_fraction": clipped / max(steps, 1)})
+                            params={"orbit": orbit, "law": law, "disturbance": torque, "step": h,
+                                    "control_interval": control_interval, "off_time": off_time},
+                            summary={"dipole_limited_fraction": clipped / max(steps, 1),
+                                     "on_fraction": on_steps / max(steps, 1)})
+
+
+def _duty(control_interval, off_time, step):
+    """(steps per interval, off steps) of duty cycling, or (None, 0) without it."""
+    if control_interval is None:
+        if off_time:
+            raise ValueError(f"off_time needs a control_interval, got off_time={shown(off_time)} s alone")
+        return None, 0
+    cycle = as_whole_steps("control_interval", as_positive_scalar("control_interval", control_interval, unit="s"),
+                           step)
+    off = as_nonnegative("off_time", off_time, unit="s")
+    if off.ndim:
+        raise ValueError(f"off_time must be a scalar [s], got shape {off.shape}")
+    gap = 0 if float(off) == 0.0 else as_whole_steps("off_time", float(off), step)
+    if gap >= cycle:
+        raise ValueError(f"off_time must be < control_interval = {cycle * step:g} s, got {float(off):g} s")
+    return cycle, gap
+
+
+__all__ += ["simulate_coil_detumbling"]
+
+
+def _detumble_rhs(time, state, dipole, path, inertia):
+    """(q̇, ω̇) of a rigid body under its coils' torque L × B only; state (M, 7)."""
+    q, w = state[:, :4], state[:, 4:]
+    b = kernels.rotate(q, path.field[path.index(time)], -1.0)
+    return np.concatenate([kernels.quaternion_rate(q, w),
+                           kernels.euler_rates(w, kernels.cross(dipole, b), inertia)], axis=-1)
+
+
+def simulate_coil_detumbling(inertia, orbit, law, duration, step, record_interval=None, initial_momentum=0.0,
+                             dipole_limit=np.inf):
+    r"""Detumble a rigid body with magnetorquers driven by the momentum laws of §5.2.
+
+    Parameters
+    ----------
+    inertia : array_like, shape (3,)
+        Principal moments J_x, J_y, J_z > 0 [kg·m²].
+    orbit : magbench.earth.CircularOrbit
+        The orbit and its field (inertial axes); an array ``argument_of_latitude0`` (M,)
+        gives each member its own phase [rad].
+    law : UnloadingLaw or sequence of UnloadingLaw
+        The law acting on the body's momentum K = J ω (body axes): one, or one per member
+        (M) [-].
+    duration : float
+        Length of the run [s].
+    step : float
+        RK4 step, also the dipole's hold [s]; keep it well below the spin period 2π/|ω|.
+    record_interval : float, optional
+        Sampling interval, a whole number of steps [s] (default: every step).
+    initial_momentum : float or array_like, shape (3,) or (M, 3), optional
+        K = J ω at time 0, body axes [N·m·s]; the body starts aligned with the inertial axes.
+    dipole_limit : float or array_like, shape (M,), optional
+        L0: |L_i| the coils can give, per member [A·m²] (default ∞).
+
+    Returns
+    -------
+    SimulationResult
+        States ``q0..q3`` [-] and ``rate_x..z`` [rad/s]; inputs ``dipole_x..z`` [A·m²] (held
+        from each sample); outputs ``momentum`` |K| [N·m·s], ``momentum_along_field`` K·B/|B|
+        [N·m·s] and ``dipole_limited`` (1 when a coil was at L0 at some step since the previous
+        sample) [-]; each (K, M).
+
+    Notes
+    -----
+    Kovalenko (1975) §5.4, eqs. (5.10)–(5.18) (seed lines 108–109), the detumbling regime:
+    the wheels are off and the disturbances neglected, so J ω̇ + ω × J ω = L × B, with L from
+    (5.11) (or any law of §5.2) and |L_i| ≤ L0. The orbital frame's rate is neglected as
+    the source does ("Ω ≈ ω", since the body turns many times faster): the law acts on the
+    inertial K. The field is the library's dipole along the orbit (the source uses (2.36)–
+    (2.40)). Composed from :func:`magbench.dynamics.euler_rates` and the §5.2 kernels.
+
+    Examples
+    --------
+    >>> orbit = CircularOrbit(6.771e6, np.radians(65.0), 8.1e22)
+    >>> run = simulate_coil_detumbling((2950.0, 12800.0, 12800.0), orbit, UnloadingLaw("linear", 1e-3),
+    ...                                600.0, 5.0, 60.0, initial_momentum=98.0, dipole_limit=113.0)
+    >>> bool(run.momentum[-1, 0] < run.momentum[0, 0])
+    True
+    """
+    j = as_finite("inertia", inertia)
+    if j.shape != (3,) or np.any(j <= 0):
+        raise ValueError(f"inertia must be three positive principal moments [kg·m²], got {shown(inertia)}")
+    if not isinstance(orbit, CircularOrbit):
+        raise ValueError(f"orbit must be a magbench.earth.CircularOrbit, got {type(orbit).__name__}")
+    total = as_positive_scalar("duration", duration, unit="s")
+    h = as_positive_scalar("step", step, unit="s")
+    every = 1 if record_interval is None else as_whole_steps(
+        "record_interval", as_positive_scalar("record_interval", record_interval, unit="s"), h)
+    limit = np.asarray(dipole_limit, dtype=float)
+    if limit.ndim > 1 or np.any(np.isnan(limit)) or np.any(limit <= 0):
+        raise ValueError(f"dipole_limit must be > 0 A·m² (inf allowed), a scalar or one per member, got "
+                         f"{shown(dipole_limit)}")
+    phase = np.atleast_1d(np.asarray(orbit.argument_of_latitude0, dtype=float))
+    sizes = ({phase.size, limit.size} | ({np.asarray(initial_momentum).shape[0]} if np.ndim(initial_momentum) == 2
+                                         else set()) | ({len(law)} if isinstance(law, (list, tuple)) else set()))
+    members = max(sizes)
+    if sizes - {1, members}:
+        raise ValueError(f"the orbit's phases ({phase.size}), initial_momentum, dipole_limit and the laws must agree "
+                         f"on the members M, got {sorted(sizes)}")
+    groups = _law_groups(law, members)
+    limit = np.broadcast_to(limit, (members,))[:, None]
+    momentum = _members("initial_momentum", initial_momentum, members, (3,))
+    steps = int(np.ceil(total / h - 1e-9))
+    check_member_steps(members, steps)
+    q = np.tile([1.0, 0.0, 0.0, 0.0], (members, 1))
+    state = np.concatenate([q, momentum / j], axis=-1)
+    active = np.zeros((members, 3), dtype=bool)
+    states, inputs, fields, flags = [], [], [], []
+    pending = np.zeros(members, dtype=bool)
+    path = _Path(orbit, steps, h, members, axes=False)
+    for i in range(steps + 1):
+        t = i * h
+        b = kernels.rotate(state[:, :4], path.field[2 * i], -1.0)
+        raw, active = _group_dipole(groups, b, j * state[:, 4:], active)
+        m = np.clip(raw, -limit, limit)
+        pending |= np.any(np.abs(raw) >= limit, axis=-1)
+        if i % every == 0:
+            states.append(state)
+            inputs.append(m)
+            fields.append(b)
+            flags.append(pending)
+            pending = np.zeros(members, dtype=bool)
+        if i < steps:
+            state = rk4_step(_detumble_rhs, t, state, h, (m, path, j))
+    record, field = np.stack(states), np.stack(fields)
+    k = j * record[..., 4:]
+    time = np.arange(record.shape[0]) * every * h
+    along = np.sum(k * field, axis=-1) / np.linalg.norm(field, axis=-1)
+    return SimulationResult(
+        time, np.moveaxis(record, -1, 0), np.moveaxis(np.stack(inputs), -1, 0),
+        np.stack([np.linalg.norm(k, axis=-1), along, np.stack(flags).astype(float)]),
+        ("q0", "q1", "q2", "q3", "rate_x", "rate_y", "rate_z"), ("dipole_x", "dipole_y", "dipole_z"),
+        ("momentum", "momentum_along_field", "dipole_limited"),
+        params={"inertia": tuple(float(x) for x in j), "orbit": orbit, "law": law, "step": h,
+                "dipole_limit": limit[:, 0]})

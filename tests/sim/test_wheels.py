@@ -93,7 +93,7 @@ def test_members_equal_separate_runs():
     (lambda: simulate_unloading(SAT, ORBIT, UnloadingLaw(), DisturbanceTorque(), 10.0, 0.0), "step must be > 0"),
     (lambda: simulate_unloading(SAT, ORBIT, UnloadingLaw(), DisturbanceTorque(), 10.0, 1.0, 1.5),
      "record_interval must be a whole number"),
-    (lambda: simulate_unloading(SAT, ORBIT, "linear", DisturbanceTorque(), 10.0, 1.0), "law must be a UnloadingLaw"),
+    (lambda: simulate_unloading(SAT, ORBIT, "linear", DisturbanceTorque(), 10.0, 1.0), "law must be an UnloadingLaw or a sequence"),
     (lambda: simulate_unloading(SAT, ORBIT, UnloadingLaw(), DisturbanceTorque(), 10.0, 1.0,
                                 initial_rate=np.zeros((2, 2))), "initial_rate must be"),
 ])
