@@ -41,7 +41,7 @@ SI_FACTORS = {
     "ohm kg/m^2": 1.0, "A/m^2": 1.0, "N m": 1.0, "N m/kg": 1.0, "kg/(N m)": 1.0,
     "m^3": 1.0, "kg m^2/s": 1.0, "J/m^3": 1.0, "A m^2 s/T": 1.0,
     "N m s/rad": 1.0, "N cm": 1e-2, "N cm s/rad": 1e-2,   # damping torques (Kovalenko 1975, p. 16)
-    "S/m": 1.0,
+    "S/m": 1.0, "1/s": 1.0, "A m^2/T": 1.0, "m^3/s^2": 1.0,
     "mm": 1e-3, "km": 1e3, "cm": 1e-2, "cm^3": 1e-6,
     "deg": np.pi / 180.0, "deg/s": np.pi / 180.0,
     "%": 1e-2,

@@ -5,7 +5,7 @@ Re-exports the public names of its modules.
 """
 
 from .circular_orbit import CircularOrbit
-from .coordinates import geomagnetic_latitude, geomagnetic_longitude
+from .coordinates import geomagnetic_latitude, geomagnetic_longitude, sun_ecliptic_axes
 from .dipole import (dipole_b, dipole_elements, dipole_equatorial_b, dipole_field_line, dipole_from_gauss_coefficients,
                      dipole_horizontal_b, dipole_inclination, dipole_mean_surface_b, dipole_ned_b,
                      dipole_rms_surface_b, dipole_shell, dipole_total_b, dipole_vertical_b,
@@ -21,7 +21,7 @@ from .polar_orbit import (polar_eccentric_coefficients, polar_field_b, polar_fie
 from .igrf import (IgrfDipole, IgrfField, decimal_year_to_datetime, igrf_dipole, igrf_field,
                    igrf_gauss_coefficients, igrf_mean_surface_b)
 
-__all__ = ["geomagnetic_latitude", "geomagnetic_longitude", "dipole_equatorial_b", "dipole_vertical_b",
+__all__ = ["geomagnetic_latitude", "geomagnetic_longitude", "sun_ecliptic_axes", "dipole_equatorial_b", "dipole_vertical_b",
            "dipole_horizontal_b", "dipole_total_b", "dipole_inclination", "dipole_b",
            "earth_dipole_moment_vector", "dipole_elements", "dipole_ned_b", "field_elements", "dipole_shell", "dipole_field_line",
            "dipole_from_gauss_coefficients", "dipole_mean_surface_b",

@@ -7,7 +7,7 @@ import numpy as np
 
 from .._validate import as_finite, as_in_range
 
-__all__ = ["geomagnetic_latitude", "geomagnetic_longitude"]
+__all__ = ["geomagnetic_latitude", "geomagnetic_longitude", "sun_ecliptic_axes"]
 
 
 def _unit_vector(latitude, longitude):
@@ -105,3 +105,42 @@ def geomagnetic_longitude(latitude, longitude, pole_latitude, pole_longitude):
     x = x / np.linalg.norm(x, axis=-1, keepdims=True)
     y = np.cross(n, x)
     return np.arctan2(np.sum(r * y, axis=-1), np.sum(r * x, axis=-1))
+
+
+def sun_ecliptic_axes(sun_longitude, obliquity):
+    r"""Axes of Kovalenko's Sun–ecliptic frame, in geocentric inertial axes.
+
+    Parameters
+    ----------
+    sun_longitude : float or array_like
+        ρ_c, the Sun's ecliptic longitude from the vernal equinox [rad].
+    obliquity : float
+        ε, the obliquity of the ecliptic, in [0, π/2] [rad].
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+        Rows x_c, y_c, z_c in inertial components (X to the vernal equinox, Z to the north
+        pole): z_c toward the Sun, y_c the ecliptic's north pole, x_c = y_c × z_c. A vector's
+        components in the frame are ``axes @ v``.
+
+    Notes
+    -----
+    Kovalenko (1975) §2.3, Figs. 2.4–2.5 and eq. (2.29) (seed lines 45–48): the frame "c" has
+    y_c along the Earth's annual rotation and z_c "along the line Earth–Sun", turned from the
+    equatorial frame by ε about the equinox line and by ρ_c (+ the annual rate × t, neglected
+    in §5.5) about y_c. The printed matrices are garbled in the seed: the signs here are
+    reconstructed from that geometry (the Sun at ecliptic longitude ρ_c, z_c on it).
+
+    Examples
+    --------
+    >>> (sun_ecliptic_axes(0.0, np.radians(23.45)).round(3) + 0.0).tolist()
+    [[0.0, 0.917, 0.398], [0.0, -0.398, 0.917], [1.0, 0.0, 0.0]]
+    """
+    rho = as_finite("sun_longitude", sun_longitude)
+    eps = as_in_range("obliquity", obliquity, 0.0, np.pi / 2, unit="rad")
+    if eps.ndim:
+        raise ValueError(f"obliquity must be a scalar [rad], got shape {eps.shape}")
+    sun = np.stack([np.cos(rho), np.sin(rho) * np.cos(eps), np.sin(rho) * np.sin(eps)], axis=-1)
+    pole = np.broadcast_to(np.array([0.0, -np.sin(eps), np.cos(eps)]), sun.shape)
+    return np.stack([np.cross(pole, sun), pole, sun], axis=-2)

@@ -444,14 +444,15 @@ def _ideal_rhs(time, momentum, dipole, path, torque):
 
 
 def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_interval=None,
-                             initial_wheel_momentum=0.0, dipole_limit=np.inf, control_interval=None, off_time=0.0):
+                             initial_wheel_momentum=0.0, dipole_limit=np.inf, control_interval=None, off_time=0.0,
+                             body_axes=None):
     r"""Unload the wheels of an ideally stabilised, inertially fixed body: K̇ = L × B + M_B.
 
     Parameters
     ----------
     orbit : magbench.earth.CircularOrbit
-        The orbit and its field; the body axes are the inertial axes; an array
-        ``argument_of_latitude0`` (M,) gives each member its own phase [rad].
+        The orbit and its field; an array ``argument_of_latitude0`` (M,) gives each member
+        its own phase [rad].
     law : UnloadingLaw or sequence of UnloadingLaw
         The unloading law: kind, gain [1/s, A·m²/(N·m·s·T), A·m²/T or A·m²], dead zones
         [N·m·s, T]; or one law per member (M), e.g. a ladder of dead zones in one run.
@@ -477,6 +478,10 @@ def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_int
     off_time : float, optional
         The coils' off time at the start of each interval, 0 ≤ off_time < control_interval
         [s].
+    body_axes : array_like, shape (3, 3) or (M, 3, 3), optional
+        The body's axes as rows in inertial components, a rotation (e.g.
+        :func:`magbench.earth.sun_ecliptic_axes` for the source's Sun-pointing body); default
+        the inertial axes themselves [-]. The disturbance and the momentum are body axes.
 
     Returns
     -------
@@ -491,9 +496,9 @@ def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_int
     Kovalenko (1975) §5.5 (seed lines 121–122): "the problem was solved assuming ideal
     stabilisation ... the rotation of the base (Sun–ecliptic) frame not counted, nor the
     Earth's daily rotation; the dynamic equations took the form K̇_i = M_ctrl,i + M_B,i".
-    Reconstructed: the body axes are taken as the inertial axes (the source's angles ρ_c and
-    λ_Ω fix the Sun direction relative to the orbit; ρ_c = λ_Ω = 0 is not legible further),
-    and the field is the library's dipole along the orbit.
+The source's body points one axis at the Sun in the Sun–ecliptic frame, fixed because the
+    frame's annual rotation is neglected (``body_axes``); the field is the library's dipole
+    along the orbit.
 
     Examples
     --------
@@ -529,6 +534,13 @@ def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_int
     clipped, on_steps = np.zeros(members), 0
     held = np.zeros((members, 3))
     path = _Path(orbit, steps, h, members, axes=False)
+    if body_axes is not None:
+        axes = as_finite("body_axes", body_axes)
+        if axes.shape not in ((3, 3), (members, 3, 3)) or not np.allclose(
+                axes @ np.swapaxes(axes, -1, -2), np.eye(3), atol=1e-9) or np.any(np.linalg.det(axes) < 0):
+            raise ValueError(f"body_axes must be a rotation matrix, shape (3, 3) or ({members}, 3, 3), got shape "
+                             f"{axes.shape}")
+        path.field = np.einsum("...ij,...j->...i", axes, path.field)
     for i in range(steps + 1):
         t = i * h
         b = path.field[2 * i]
