@@ -19,6 +19,7 @@ from .._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "DETUMBLING_DIPOLE_FACTORS", "THRESHOLD_FACTORS", "detumbling_study",
            "unloading_study", "attitude_study", "duty_study", "capacity_study", "lyapunov_orbit", "comparison_rows",
+           "peer_rows",
            "caption_checks", "constant_checks", "law_checks"]
 
 #: The chapter's inputs: names in ``magbench/data/kovalenko/params.toml``.
@@ -29,7 +30,8 @@ INPUTS = (
     "det_threshold", "det_threshold_step", "det_gain", "det_relay_gain", "det_ladder_dipole", "det_orbits",
     # §5.5, unloading (printed, and ours)
     "unl_altitude", "unl_inclination", "unl_dipole", "unl_disturbance", "unl_on_threshold", "unl_release",
-    "unl_signal_dead_zone", "unl_signal_dead_zone_pole", "unl_orbits", "unl_linear_gain",
+    "unl_signal_dead_zone", "unl_signal_dead_zone_pole", "unl_orbits", "unl_linear_gain", "unl_sun_longitude",
+    "unl_sun_longitude_514", "unl_sun_longitude_515", "ecliptic_obliquity",
     # the attitude loop and duty cycling (ours)
     "wheel_attitude_gain", "wheel_rate_gain", "duty_interval", "duty_off_time",
 )
@@ -39,7 +41,8 @@ DETUMBLING_INPUTS = ("earth_dipole_moment", "det_altitude", "det_inclination", "
                      "det_relay_gain", "det_ladder_dipole", "det_orbits")
 UNLOADING_INPUTS = ("earth_dipole_moment", "unl_altitude", "unl_inclination", "unl_dipole", "unl_disturbance",
                     "unl_on_threshold", "unl_release", "unl_signal_dead_zone", "unl_signal_dead_zone_pole",
-                    "unl_orbits", "unl_linear_gain")
+                    "unl_orbits", "unl_linear_gain", "unl_sun_longitude", "unl_sun_longitude_514",
+                    "unl_sun_longitude_515", "ecliptic_obliquity")
 
 #: Fig. 5.10's coils: L0 = 56.5 A·m² times these (the caption prints 56.5, 113, 169.5, 226).
 DETUMBLING_DIPOLE_FACTORS = (1.0, 2.0, 3.0, 4.0)
@@ -171,13 +174,20 @@ def _unloading_laws(p, dead_zone):
 
 @cached_result(maxsize=2, reads=UNLOADING_INPUTS)
 def _unloading(key):
-    from ...sim import simulate_ideal_unloading
+    from ...earth import sun_ecliptic_axes
+    from ...sim import UnloadingLaw, simulate_ideal_unloading
 
     p = dict(key)
     equator, releases = _unloading_laws(p, p["unl_signal_dead_zone"])
     pole, _ = _unloading_laws(p, p["unl_signal_dead_zone_pole"])
     n = len(equator)
-    phase = np.concatenate([np.zeros(n), np.full(n, np.pi / 2)])   # over the equator; at the top of the orbit
+    on = p["unl_on_threshold"]
+    sun = UnloadingLaw("relay_coil", p["unl_dipole"], on, p["unl_signal_dead_zone"], min(p["unl_release"], on))
+    # over the equator; at the top of the orbit ("примерно над полярной областью"); Figs. 5.14–5.15 over the equator
+    phase = np.concatenate([np.zeros(n), np.full(n, np.pi / 2), np.zeros(2)])
+    longitude = np.concatenate([np.full(2 * n, p["unl_sun_longitude"]),
+                                [p["unl_sun_longitude_514"], p["unl_sun_longitude_515"]]])
+    axes = sun_ecliptic_axes(longitude, p["ecliptic_obliquity"])
     orbit = _orbit(p, "unl", phase)
     orbits = p["unl_orbits"]
     if orbits < SETTLING_ORBITS + 1:
@@ -185,11 +195,12 @@ def _unloading(key):
                          f"transient), got {orbits!r}")
     duration = orbits * orbit.period
     step = UNLOADING_STEP
-    run = simulate_ideal_unloading(orbit, equator + pole, np.full(3, p["unl_disturbance"]),
+    run = simulate_ideal_unloading(orbit, equator + pole + [sun, sun], np.full(3, p["unl_disturbance"]),
                                    np.ceil(duration / step) * step, step, 12 * step,
-                                   initial_wheel_momentum=INITIAL_WHEEL_MOMENTUM, dipole_limit=p["unl_dipole"])
+                                   initial_wheel_momentum=INITIAL_WHEEL_MOMENTUM, dipole_limit=p["unl_dipole"],
+                                   body_axes=axes)
     return {"run": run, "period": orbit.period, "releases": np.asarray(releases), "per_start": n,
-            "members": 2 * n, "steps": int(np.ceil(duration / step))}
+            "sun_longitude": longitude, "members": 2 * n + 2, "steps": int(np.ceil(duration / step))}
 
 
 def _band(run, period, settle=SETTLING_ORBITS):
@@ -204,8 +215,9 @@ def _band(run, period, settle=SETTLING_ORBITS):
 def unloading_study(params=None):
     """The regenerated Figs. 5.12–5.13: §5.5's wheel unloading under ideal stabilisation (cached).
 
-    The body fixed in inertial axes (the source's Sun-pointing base frame, not rotated:
-    ρ_c = λ_Ω = 0), 10⁻⁴ N·m on every axis, the relay law with hysteresis (on above K2°,
+    The body fixed in the Sun–ecliptic frame (one axis on the Sun, the frame's annual turn
+    neglected, as the source does; :func:`magbench.earth.sun_ecliptic_axes`), 10⁻⁴ N·m on
+    every axis, the relay law with hysteresis (on above K2°,
     off at K1°) and the relay coils of Fig. 5.2 (L0 = 50 A·m², dead zone δ0); starting over
     the equator (δ0 = 5·10⁻⁶ T, Fig. 5.12) and at the top of the orbit (δ0 = 1.25·10⁻⁶ T,
     Fig. 5.13), from :data:`INITIAL_WHEEL_MOMENTUM` on every axis.
@@ -213,10 +225,11 @@ def unloading_study(params=None):
     Returns
     -------
     dict
-        ``run`` (both starts in one :func:`magbench.sim.simulate_ideal_unloading` call:
-        members 0–6 over the equator, 7–13 at the top; in each, Fig. 5.12's five K1°, the relay
-        without hysteresis and the switched linear law), ``period`` [s], ``releases`` (5,)
-        K1° [N·m·s], ``per_start``; ``band_max``, ``band_min`` (3, M), the largest and
+        ``run`` (one :func:`magbench.sim.simulate_ideal_unloading` call: members 0–6 over the
+        equator with ρ_c = 0, 7–13 at the top; in each, Fig. 5.12's five K1°, the relay
+        without hysteresis and the switched linear law; 14 and 15 Figs. 5.14 and 5.15, ρ_c =
+        225° and 45°, K1° = ``unl_release``), ``period`` [s], ``releases`` (5,) K1° [N·m·s],
+        ``per_start``, ``sun_longitude`` (M,) ρ_c [rad]; ``band_max``, ``band_min`` (3, M), the largest and
         smallest |K_i| after the first two orbits [N·m·s]; ``duty`` (M,), the share of that
         time some coil is on [-]; ``entry`` (M,), the first time every |K_i| ≤ K2° [s].
     """
@@ -394,14 +407,12 @@ def lyapunov_orbit(params=None):
 def comparison_rows(params=None):
     """The unloading runs' steady wheel momentum beside the band the source designed (K2°)."""
     p = _params(params)
-    printed = load_parameter_set("kovalenko")
     s = unloading_study(p)
     n = s["per_start"]
     release = load_printed("kovalenko")
     k1 = float(p["unl_release"])
     idx = [i for i, r in enumerate(RELEASE_ROWS) if np.isclose(release[r].value_si, k1)]
     j = idx[0] if idx else 0
-    on = printed["unl_on_threshold"]
     rows = []
     for name, member, where in (("equator", j, "over the equator (Fig. 5.12)"),
                                 ("pole", n + j, "at the top of the orbit (Fig. 5.13)")):
@@ -410,10 +421,35 @@ def comparison_rows(params=None):
             "Kovalenko (1975) §5.5, p. 123: the relay's on-threshold K2° = 1.96 N·m·s, the band the law is "
             "designed to hold", p["unl_on_threshold"], float(s["band_max"][:, member].max()), 0.005,
             unit="N·m·s", note=(f"the relay law with hysteresis (K1° = {s['releases'][j]:g} N·m·s), relay coils of "
-                                f"{p['unl_dipole']:g} A·m²; ideal stabilisation, the body fixed in inertial axes; "
-                                f"orbits {SETTLING_ORBITS:g}–{p['unl_orbits']:g} of the run. The tolerance is the printed "
-                                f"value's last digit: K2° is {on.note.split(':')[0] if False else 'a design choice'}")))
-    return rows
+                                f"{p['unl_dipole']:g} A·m²; ideal stabilisation, the body Sun-pointing; orbits "
+                                f"{SETTLING_ORBITS:g}–{p['unl_orbits']:g} of the run. The tolerance is the printed value's "
+                                "last digit: K2° is the source's design choice, which the system should keep")))
+    return rows + peer_rows()
+
+
+#: Basilisk's unit test of its torque-to-dipole mapping (AVSLab/basilisk, commit babdff7a,
+#: src/fswAlgorithms/effectorInterfaces/torque2Dipole): b = (10⁻⁵, 0, 0) T, τ = (10, 20, 30) mN·m
+#: give μ = (0, −3000, 2000) A·m². The momentum law behind it, mtbMomentumManagementSimple, asks
+#: τ = −K_p h_w; so the pair is Kovalenko's (5.1) with k = K_p and K = h_w.
+BASILISK_FIELD = (1e-5, 0.0, 0.0)
+BASILISK_TORQUE = (10e-3, 20e-3, 30e-3)
+BASILISK_DIPOLE = (0.0, -3000.0, 2000.0)
+
+
+def peer_rows():
+    """Kovalenko's linear law (5.1) beside Basilisk's momentum-management chain on its own test case."""
+    from ...control import unloading_dipole
+
+    gain = 3e-3                      # any K_p: the dipole does not depend on it (τ fixes K_p h_w)
+    momentum = -np.asarray(BASILISK_TORQUE) / gain
+    ours = unloading_dipole(BASILISK_FIELD, momentum, gain)
+    note = ("Basilisk's torque2Dipole unit test (AVSLab/basilisk babdff7a): μ = (b × τ)/|b|² for b = (10⁻⁵, 0, 0) T, "
+            "τ = (10, 20, 30) mN·m; ours: (5.1) with K = −τ/k, i.e. mtbMomentumManagementSimple's τ = −K_p h_w. "
+            "Tolerance: half the test's last printed digit")
+    return [make_row(f"basilisk-torque2dipole-{axis}", f"Unloading dipole, {axis} component, Basilisk's test case",
+                     "Basilisk torque2Dipole unit test (expected value)", BASILISK_DIPOLE[i], float(ours[i]), 0.5,
+                     unit="A·m²", note=note)
+            for i, axis in ((1, "y"), (2, "z"))]
 
 
 # --- source checks -------------------------------------------------------------------------------
@@ -529,7 +565,7 @@ CHAPTER = Chapter(
     inputs=INPUTS,
     figure_modules=("magbench.chapters.ch09_unloading.figures",),
     comparisons=comparison_rows,
-    row_kinds=(("kov-unl-band-", "design"),),
+    row_kinds=(("kov-unl-band-", "design"), ("basilisk-torque2dipole-", "claim")),
     check_classes=(
         ("kov-det-", "printed", None),
         ("kov-unl-earth-moment", "printed", None),
@@ -554,6 +590,6 @@ CHAPTER = Chapter(
            "detumbling runs depend on the coil and the threshold, how much momentum an orbit of given inclination "
            "lets coils unload, and what the unloading costs the attitude loop"),
     source_names=(("kovalenko", "Kovalenko (1975)"),),
-    discussed_in=(("kov-det-", "ch09-detumbling"), ("kov-unl-", "ch09-unloading"),
+    discussed_in=(("kov-det-", "ch09-detumbling"), ("kov-unl-", "ch09-unloading"), ("basilisk-", "ch09-peer"),
                   ("kov-unloading-rate-55", "ch09-laws"), ("kov-pulsed-torque-59", "ch09-laws")),
 )
