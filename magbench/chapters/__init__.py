@@ -8,7 +8,7 @@ list and need no other change.
 """
 
 from . import (ch01_earth_field, ch02_field_simulator, ch03_magnetorquers, ch04_mockup, ch05_detumbling, ch06_rotor,
-               ch07_tns0, ch08_field_stabilisation)
+               ch07_tns0, ch08_field_stabilisation, ch09_unloading)
 from ._base import OVERRIDES_ENV, Chapter, chapter_parameters, read_overrides
 
 __all__ = ["CHAPTERS", "Chapter", "OVERRIDES_ENV", "chapter", "chapter_parameters", "read_overrides",
@@ -24,6 +24,7 @@ CHAPTERS = [
     ch06_rotor.CHAPTER,
     ch07_tns0.CHAPTER,
     ch08_field_stabilisation.CHAPTER,
+    ch09_unloading.CHAPTER,
 ]
 
 

@@ -20,6 +20,8 @@ from .polar_orbit import (polar_eccentric_coefficients, polar_field_b, polar_fie
                           polar_orbit_acceleration, polar_orbit_rate)
 from .igrf import (IgrfDipole, IgrfField, decimal_year_to_datetime, igrf_dipole, igrf_field,
                    igrf_gauss_coefficients, igrf_mean_surface_b)
+from .unloading_capacity import (field_direction_second_moment, field_second_moment, unloadable_fraction,
+                                 worst_unloading_direction)
 
 __all__ = ["geomagnetic_latitude", "geomagnetic_longitude", "sun_ecliptic_axes", "dipole_equatorial_b", "dipole_vertical_b",
            "dipole_horizontal_b", "dipole_total_b", "dipole_inclination", "dipole_b",
@@ -33,3 +35,5 @@ __all__ = ["geomagnetic_latitude", "geomagnetic_longitude", "sun_ecliptic_axes",
            "field_direction_rate_range", "field_magnitude_range", "polar_field_direction_angle", "polar_field_direction_rate",
            "polar_field_direction_acceleration", "polar_field_b", "polar_gravity_factor", "polar_fourier_coefficients",
            "polar_orbit_rate", "polar_orbit_acceleration", "polar_eccentric_coefficients"]
+
+__all__ += ["field_second_moment", "field_direction_second_moment", "unloadable_fraction", "worst_unloading_direction"]

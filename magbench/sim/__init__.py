@@ -35,7 +35,8 @@ from .rotor_variants import (maxima_per_orbit, normalised_pointing_error, pointi
                              symmetric_rotor_orbit_maxima, tilted_dipole_pointing_error, transverse_asymmetry,
                              transverse_inertia_with_asymmetry)
 from .spin_correction import relay_spin_correction, relay_spin_torque_over_turn
-from .wheels import DisturbanceTorque, UnloadingLaw, WheelSatellite, simulate_ideal_unloading, simulate_unloading
+from .wheels import (DisturbanceTorque, UnloadingLaw, WheelSatellite, simulate_coil_detumbling, simulate_ideal_unloading,
+                     simulate_unloading)
 from .turning_field import turning_field_kinetic_energy
 
 __all__ = ["rk4_step", "SimulationResult", "simulate_free_swing", "integrated_swing_period", "PidLoop", "loop_torque", "pid_continuous_rhs", "simulate_pid", "DetumbleRun", "simulate_detumble", "detumble_time",
@@ -52,4 +53,4 @@ __all__ = ["rk4_step", "SimulationResult", "simulate_free_swing", "integrated_sw
            "symmetric_rotor_orbit_maxima", "relay_spin_correction", "relay_spin_torque_over_turn",
            "simulate_planar", "planar_error_orbit_maxima", "LibrationSatellite", "simulate_libration",
            "WheelSatellite", "UnloadingLaw", "DisturbanceTorque", "simulate_unloading",
-           "simulate_ideal_unloading"]
+           "simulate_ideal_unloading", "simulate_coil_detumbling"]

@@ -15,6 +15,7 @@ from ...constants import EARTH_GM, EARTH_RADIUS, MU_0
 from ...errata import printed_check, source_check
 from ...io import load_parameter_set, load_printed
 from ...result_cache import cached_result
+from ...units import SI_FACTORS
 from .._base import Chapter, chapter_parameters
 
 __all__ = ["CHAPTER", "INPUTS", "DETUMBLING_DIPOLE_FACTORS", "THRESHOLD_FACTORS", "detumbling_study",
@@ -27,7 +28,7 @@ INPUTS = (
     "earth_dipole_moment",
     # §5.5, detumbling (printed, and our gains)
     "det_altitude", "det_inclination", "det_inertia_x", "det_inertia_yz", "det_initial_momentum", "det_dipole",
-    "det_threshold", "det_threshold_step", "det_gain", "det_relay_gain", "det_ladder_dipole", "det_orbits",
+    "det_threshold", "det_threshold_step", "det_gain", "det_ladder_dipole", "det_orbits",
     # §5.5, unloading (printed, and ours)
     "unl_altitude", "unl_inclination", "unl_dipole", "unl_disturbance", "unl_on_threshold", "unl_release",
     "unl_signal_dead_zone", "unl_signal_dead_zone_pole", "unl_orbits", "unl_linear_gain", "unl_sun_longitude",
@@ -38,7 +39,7 @@ INPUTS = (
 
 DETUMBLING_INPUTS = ("earth_dipole_moment", "det_altitude", "det_inclination", "det_inertia_x", "det_inertia_yz",
                      "det_initial_momentum", "det_dipole", "det_threshold", "det_threshold_step", "det_gain",
-                     "det_relay_gain", "det_ladder_dipole", "det_orbits")
+                     "det_ladder_dipole", "det_orbits")
 UNLOADING_INPUTS = ("earth_dipole_moment", "unl_altitude", "unl_inclination", "unl_dipole", "unl_disturbance",
                     "unl_on_threshold", "unl_release", "unl_signal_dead_zone", "unl_signal_dead_zone_pole",
                     "unl_orbits", "unl_linear_gain", "unl_sun_longitude", "unl_sun_longitude_514",
@@ -89,13 +90,15 @@ def _detumbling(key):
     period = orbit.period
     dipoles = p["det_dipole"] * np.asarray(DETUMBLING_DIPOLE_FACTORS)
     thresholds = p["det_threshold_step"] * np.asarray(THRESHOLD_FACTORS)
-    # the product law (5.11) with the gain that equals the linear law's at the orbit's rms field
+    # the product law (5.11) with the gain that equals the linear law's at the orbit's rms field;
+    # the relay law with the same gain and F_K = ±K° (the seed's δ_z = k_γ K°(B_y − B_x), line 118)
     product_gain = p["det_gain"] / mean_square_field(orbit, duration=period, samples=2000)
     groups = {
         "linear": ([UnloadingLaw("linear", p["det_gain"])] * dipoles.size, dipoles),
-        "relay": ([UnloadingLaw("relay", p["det_relay_gain"], p["det_threshold"])] * dipoles.size, dipoles),
+        "relay": ([UnloadingLaw("relay", product_gain * p["det_threshold"], p["det_threshold"])] * dipoles.size,
+                  dipoles),
         "product": ([UnloadingLaw("product", product_gain)] * dipoles.size, dipoles),
-        "threshold": ([UnloadingLaw("relay", p["det_relay_gain"], k) for k in thresholds],
+        "threshold": ([UnloadingLaw("relay", product_gain * k, k) for k in thresholds],
                       np.full(thresholds.size, p["det_ladder_dipole"])),
     }
     laws = [law for group, _ in groups.values() for law in group]
@@ -165,7 +168,7 @@ def _unloading_laws(p, dead_zone):
 
     printed = load_printed("kovalenko")
     on = p["unl_on_threshold"]
-    releases = [printed[r].value_si for r in RELEASE_ROWS]
+    releases = [printed[r].value for r in RELEASE_ROWS]
     laws = [UnloadingLaw("relay_coil", p["unl_dipole"], on, dead_zone, min(k, on)) for k in releases]
     laws.append(UnloadingLaw("relay_coil", p["unl_dipole"], on, dead_zone))
     laws.append(UnloadingLaw("linear", p["unl_linear_gain"], on, 0.0, min(p["unl_release"], on)))
@@ -305,9 +308,9 @@ def _duty(key):
     duration = np.ceil(DUTY_ORBITS * orbit.period / p["duty_interval"]) * p["duty_interval"]
     torque = np.full(3, p["unl_disturbance"])
     common = dict(initial_wheel_momentum=INITIAL_WHEEL_MOMENTUM, dipole_limit=p["unl_dipole"])
-    every = p["duty_interval"]
-    continuous = simulate_ideal_unloading(orbit, laws, torque, duration, step, every, **common)
-    cycled = simulate_ideal_unloading(orbit, laws, torque, duration, step, every, control_interval=p["duty_interval"],
+    # every step recorded: a sample each interval would always fall in the coils' off time
+    continuous = simulate_ideal_unloading(orbit, laws, torque, duration, step, step, **common)
+    cycled = simulate_ideal_unloading(orbit, laws, torque, duration, step, step, control_interval=p["duty_interval"],
                                       off_time=p["duty_off_time"], **common)
     return {"continuous": continuous, "cycled": cycled, "period": orbit.period, "laws": ("relay", "linear"),
             "step": step}
@@ -338,7 +341,7 @@ CAPACITY_INCLINATIONS = (0.0, 30.0, 55.0, 90.0)
 @cached_result(maxsize=2, reads=("earth_dipole_moment", "unl_altitude", "unl_linear_gain"))
 def _capacity(key):
     from ...earth import CircularOrbit, mean_square_field
-    from ...earth.unloading_capacity import field_second_moment, unloadable_fraction, worst_unloading_direction
+    from ...earth import field_second_moment, unloadable_fraction, worst_unloading_direction
     from ...sim import UnloadingLaw, simulate_ideal_unloading
 
     p = dict(key)
@@ -411,7 +414,7 @@ def comparison_rows(params=None):
     n = s["per_start"]
     release = load_printed("kovalenko")
     k1 = float(p["unl_release"])
-    idx = [i for i, r in enumerate(RELEASE_ROWS) if np.isclose(release[r].value_si, k1)]
+    idx = [i for i, r in enumerate(RELEASE_ROWS) if np.isclose(release[r].value, k1)]
     j = idx[0] if idx else 0
     rows = []
     for name, member, where in (("equator", j, "over the equator (Fig. 5.12)"),
@@ -506,12 +509,13 @@ def constant_checks():
                          "two significant digits."),
             computation="standard gravity 9.80665 m/s²"))
     oe = printed["kov-unl-dead-zone-oersted"]
-    computed = params["unl_signal_dead_zone"].value_si / MU_0            # B/μ0 in A/m
+    field = params["unl_signal_dead_zone"].value_si / MU_0            # B/μ0 [A/m]
+    computed = field / SI_FACTORS["Oe"]
     out.append(printed_check(oe, id="kov-unl-dead-zone-oersted", chapter="ch09", location="§5.5, p. 124",
-                             computed=computed,
-                             explanation=(f"5·10⁻⁶ T is 0.05 Oe (B/μ0 = {computed:.3f} A/m = "
-                                          f"{computed / oe.value_si * oe.value:.3f} Oe), not 0.95: an OCR "
-                                          "misreading of 0,05 or a slip; the tesla value is the one the runs use."),
+                             computed=computed, unit="Oe",
+                             explanation=(f"5·10⁻⁶ T is B/μ0 = {field:.3f} A/m = {computed:.3f} Oe, not 0.95: the seed's "
+                                          "'0,95' is an OCR misreading of 0,05 or a slip of the book; the tesla value "
+                                          "is the one the runs use."),
                              computation="magbench.constants.MU_0"))
     return out
 

@@ -250,12 +250,13 @@ def plot_band(data):
     axes[0].plot(x[:len(data.extra["releases"])], data.extra["releases"], "k_", markersize=12, label="K1°")
     axes[0].axhline(data.extra["on"], color="k", linestyle=":", linewidth=0.8, label="K2°")
     axes[0].set_ylabel("min and max of |K_i| [N·m·s]")
+    axes[0].set_ylim(0.0, 1.5 * data.extra["on"])
     axes[1].set_ylabel("coils on [% of the time]")
     for ax in axes:
         ax.set_xticks(x)
         ax.set_xticklabels(names, rotation=60, ha="right", fontsize=7.5)
         ax.grid(alpha=0.3, axis="y")
-    axes[0].legend(fontsize=7)
+    axes[0].legend(fontsize=7, ncol=2, loc="upper center")
     return fig
 
 
