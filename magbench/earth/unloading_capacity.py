@@ -163,8 +163,8 @@ def unloadable_fraction(inclination, direction=None, *, normalised=False):
         non-zero; normalised here [-]; broadcasts with ``inclination``. None (default): the
         worst direction, :func:`worst_unloading_direction`.
     normalised : bool, optional
-        False (default): for the law without division by B², Kovalenko (1975) eq. (5.6).
-        True: for the law L = k (K × B)/B², eq. (5.1).
+        False (default): for the law without division by B², Kovalenko (1975) eq. (5.6);
+        True: for the law L = k (K × B)/B², eq. (5.1) [-].
 
     Returns
     -------
@@ -238,7 +238,7 @@ def worst_unloading_direction(inclination, *, normalised=False):
         Orbit inclination i, in [0, π] [rad].
     normalised : bool, optional
         False (default): for Kovalenko's (5.6), eigenvector of ⟨B Bᵀ⟩; True: for (5.1),
-        eigenvector of ⟨B̂ B̂ᵀ⟩.
+        eigenvector of ⟨B̂ B̂ᵀ⟩ [-].
 
     Returns
     -------

@@ -446,7 +446,7 @@ def _ideal_rhs(time, momentum, dipole, path, torque):
 def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_interval=None,
                              initial_wheel_momentum=0.0, dipole_limit=np.inf, control_interval=None, off_time=0.0,
                              body_axes=None):
-    r"""Unload the wheels of an ideally stabilised, inertially fixed body: K̇ = L × B + M_B.
+    r"""Unload the wheels of an ideally stabilised body fixed in inertial space: K̇ = L × B + M_B.
 
     Parameters
     ----------
@@ -496,7 +496,7 @@ def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_int
     Kovalenko (1975) §5.5 (seed lines 121–122): "the problem was solved assuming ideal
     stabilisation ... the rotation of the base (Sun–ecliptic) frame not counted, nor the
     Earth's daily rotation; the dynamic equations took the form K̇_i = M_ctrl,i + M_B,i".
-The source's body points one axis at the Sun in the Sun–ecliptic frame, fixed because the
+    The source's body points one axis at the Sun in the Sun–ecliptic frame, fixed because the
     frame's annual rotation is neglected (``body_axes``); the field is the library's dipole
     along the orbit.
 

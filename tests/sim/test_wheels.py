@@ -7,7 +7,9 @@ import pytest
 from numpy.testing import assert_allclose
 
 from magbench.earth import CircularOrbit
-from magbench.sim.wheels import (DisturbanceTorque, UnloadingLaw, WheelSatellite, simulate_ideal_unloading,
+from magbench.earth import sun_ecliptic_axes
+from magbench.sim.wheels import (DisturbanceTorque, UnloadingLaw, WheelSatellite, simulate_coil_detumbling,
+                                  simulate_ideal_unloading,
                                   simulate_unloading)
 
 SAT = WheelSatellite((10.0, 12.0, 8.0), 0.025, 0.7)  # ω_n ≈ 0.05 rad/s, ζ ≈ 0.7
@@ -126,3 +128,70 @@ def test_relay_hysteresis_keeps_the_coils_on_down_to_the_release_threshold():
     held = simulate_ideal_unloading(E20_ORBIT, UnloadingLaw("relay_coil", 50.0, 1.0, 1e-6, 0.2), 0.0, 3000.0, 10.0,
                                     initial_wheel_momentum=start)
     assert held.wheel_momentum_x[:, 0].min() < 0.5
+
+
+def test_duty_cycling_with_no_gap_and_a_one_step_interval_is_the_continuous_law():
+    # reading every step and never switching off is the continuous law: rounding only
+    law = UnloadingLaw("linear", 2e-3)
+    cont = simulate_ideal_unloading(E20_ORBIT, law, 1e-4, 2000.0, 5.0, 50.0, initial_wheel_momentum=1.0)
+    cyc = simulate_ideal_unloading(E20_ORBIT, law, 1e-4, 2000.0, 5.0, 50.0, initial_wheel_momentum=1.0,
+                                   control_interval=5.0)
+    assert_allclose(cyc.states, cont.states, rtol=0, atol=1e-15)
+    off = simulate_ideal_unloading(E20_ORBIT, law, 1e-4, 1700.0, 1.0, 17.0, initial_wheel_momentum=1.0,
+                                   control_interval=17.0, off_time=1.0)
+    assert_allclose(off.summary["on_fraction"], 16 / 17, rtol=1e-12)
+    assert np.all(off.inputs[:, :, 0] == 0.0)        # every sample falls on a reading, coils off
+
+
+def test_linear_law_is_covariant_under_the_body_axes():
+    # rotating the body axes by R turns the field, the disturbance and the momentum by R: the
+    # linear law (cross products) commutes with R, so K_body = R K_inertial to rounding
+    r = sun_ecliptic_axes(np.radians(225.0), np.radians(23.45))
+    k0, torque = np.array([0.5, -1.0, 0.8]), np.array([1e-4, 2e-4, -1e-4])
+    law = UnloadingLaw("linear", 2e-3)
+    inertial = simulate_ideal_unloading(E20_ORBIT, law, torque, 3000.0, 10.0, 100.0, initial_wheel_momentum=k0)
+    body = simulate_ideal_unloading(E20_ORBIT, law, r @ torque, 3000.0, 10.0, 100.0, initial_wheel_momentum=r @ k0,
+                                    body_axes=r)
+    assert_allclose(body.states[..., 0].T, (r @ inertial.states[..., 0]).T, rtol=0, atol=1e-12)
+
+
+def test_per_member_laws_equal_separate_runs():
+    laws = [UnloadingLaw("relay_coil", 50.0, 1.0, 1e-6, 0.3), UnloadingLaw("product", 1e6)]
+    both = simulate_ideal_unloading(E20_ORBIT, laws, 1e-4, 3000.0, 10.0, 100.0, initial_wheel_momentum=1.5)
+    for i, law in enumerate(laws):
+        one = simulate_ideal_unloading(E20_ORBIT, law, 1e-4, 3000.0, 10.0, 100.0, initial_wheel_momentum=1.5)
+        assert_allclose(both.states[..., i], one.states[..., 0], rtol=0, atol=1e-15)
+
+
+def test_coil_detumbling_without_coils_keeps_momentum_and_energy_to_fourth_order():
+    # torque-free rigid body: |K| and ½ω·Jω are invariants; RK4's loss of them shrinks at least as
+    # h⁴ (halving the step divides it by 16 or more; measured 32, an h⁵ loss; 12–40 allows both)
+    j = np.array([2950.0, 12800.0, 12800.0])
+    loss = []
+    for step in (10.0, 5.0):
+        run = simulate_coil_detumbling(j, E20_ORBIT, UnloadingLaw("none"), 3000.0, step, 100.0,
+                                       initial_momentum=[98.0, 98.0, 98.0])
+        w = np.stack([run.rate_x[:, 0], run.rate_y[:, 0], run.rate_z[:, 0]], axis=-1)
+        energy = 0.5 * np.sum(j * w * w, axis=-1)
+        loss.append((abs(run.momentum[-1, 0] / run.momentum[0, 0] - 1), abs(energy[-1] / energy[0] - 1)))
+    (k1, e1), (k2, e2) = loss
+    assert 12 < k1 / k2 < 40 and 12 < e1 / e2 < 40
+    assert k2 < 2e-5 and e2 < 2e-5
+
+
+@pytest.mark.parametrize("call, match", [
+    (lambda: simulate_ideal_unloading(E20_ORBIT, UnloadingLaw(), 0.0, 100.0, 1.0, body_axes=2 * np.eye(3)),
+     "body_axes must be a rotation"),
+    (lambda: simulate_ideal_unloading(E20_ORBIT, UnloadingLaw(), 0.0, 100.0, 1.0, off_time=1.0),
+     "off_time needs a control_interval"),
+    (lambda: simulate_ideal_unloading(E20_ORBIT, UnloadingLaw(), 0.0, 100.0, 1.0, control_interval=5.0, off_time=5.0),
+     "off_time must be < control_interval"),
+    (lambda: simulate_ideal_unloading(E20_ORBIT, [UnloadingLaw()] * 2, np.zeros((3, 3)), 100.0, 1.0),
+     "must agree on the members"),
+    (lambda: simulate_coil_detumbling((1.0, 1.0), E20_ORBIT, UnloadingLaw(), 100.0, 1.0), "inertia must be three"),
+    (lambda: simulate_coil_detumbling((1.0, 1.0, 1.0), E20_ORBIT, UnloadingLaw(), 100.0, 1.0, dipole_limit=-1.0),
+     "dipole_limit must be > 0"),
+])
+def test_bad_input_of_the_ideal_and_detumbling_runs(call, match):
+    with pytest.raises(ValueError, match=match):
+        call()

@@ -125,7 +125,9 @@ def compute_fig5_11(**params):
     members = range(s["slices"]["threshold"].start, s["slices"]["threshold"].stop)
     return FigureData("", "", "", {}, [
         Series(f"K° = {k:g} N·m·s", {"orbits": ("1", orbits), "momentum": ("N m s", run.momentum[:, m]),
-                                     "level_orbits": ("1", [s["level_time"][m] / s["period"]]),
+                                     # empty where the run never reaches the level (K° = 0.98 N·m·s)
+                                     "level_orbits": ("1", [s["level_time"][m] / s["period"]]
+                                                      if np.isfinite(s["level_time"][m]) else []),
                                      "residual": ("N m s", [s["residual"][m]])})
         for k, m in zip(s["thresholds"], members)], extra={"level": 4.0 * float(s["thresholds"].max())})
 
@@ -143,9 +145,9 @@ def plot_fig5_11(data):
     axes[0].set_xlabel("orbits")
     axes[0].set_ylabel("|K| [N·m·s]")
     axes[0].legend(fontsize=7)
-    level = [s.columns["level_orbits"][1][0] for s in data.series]
+    reached = [(k, s.columns["level_orbits"][1][0]) for k, s in zip(k0, data.series) if len(s.columns["level_orbits"][1])]
     residual = [s.columns["residual"][1][0] for s in data.series]
-    axes[1].plot(k0, level, "ko-", markersize=4, label=f"orbits to |K| = {data.extra['level']:.1f} N·m·s")
+    axes[1].plot(*zip(*reached), "ko-", markersize=4, label=f"orbits to |K| = {data.extra['level']:.1f} N·m·s")
     twin = axes[1].twinx()
     twin.plot(k0, residual, "s--", color="C3", markersize=4, label="|K| at the end")
     axes[1].set_xlabel("K° [N·m·s]")
