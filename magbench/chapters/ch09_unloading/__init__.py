@@ -305,8 +305,9 @@ def _duty(key):
     laws = [UnloadingLaw("relay_coil", p["unl_dipole"], on, p["unl_signal_dead_zone"], off),
             UnloadingLaw("linear", p["unl_linear_gain"], on, 0.0, off)]
     orbit = _orbit(p, "unl")
-    step = float(np.gcd(int(round(p["duty_interval"] * 1000)), int(round(p["duty_off_time"] * 1000)) or 1000)) / 1000
-    step = min(step, 1.0) if step > 0 else 1.0
+    # the largest step, at most 1 s, that divides the interval and the off time (to the millisecond)
+    ms = [int(round(1000 * v)) for v in (p["duty_interval"], p["duty_off_time"]) if v > 0]
+    step = min(float(np.gcd.reduce(ms)) / 1000.0, 1.0)
     duration = np.ceil(DUTY_ORBITS * orbit.period / p["duty_interval"]) * p["duty_interval"]
     torque = np.full(3, p["unl_disturbance"])
     common = dict(initial_wheel_momentum=INITIAL_WHEEL_MOMENTUM, dipole_limit=p["unl_dipole"])
@@ -340,7 +341,7 @@ def duty_study(params=None):
 CAPACITY_INCLINATIONS = (0.0, 30.0, 55.0, 90.0)
 
 
-@cached_result(maxsize=2, reads=("earth_dipole_moment", "unl_altitude", "unl_linear_gain"))
+@cached_result(maxsize=2, reads=("earth_dipole_moment", "unl_altitude"))
 def _capacity(key):
     from ...earth import CircularOrbit, mean_square_field
     from ...earth import field_second_moment, unloadable_fraction, worst_unloading_direction

@@ -24,6 +24,7 @@ _INPUTS = {
     "det_gain": ("k of the linear law (ours)", {}),
     "det_ladder_dipole": ("L0 of Fig. 5.11's runs (ours)", {}),
     "det_orbits": ("length of the detumbling runs (ours)", {"low": 2.0, "high": 60.0}),
+    "unl_altitude": ("altitude of the unloading runs' orbit (printed 450 km)", {}),
     "unl_dipole": ("the relay coils' L0 (printed 50)", {}),
     "unl_disturbance": ("the constant disturbance on each axis (printed 1e-4)", {}),
     "unl_on_threshold": ("K2°, the relay's on-threshold (printed 1.96)", {}),
@@ -264,9 +265,9 @@ def plot_band(data):
 
 # --- beyond the source -------------------------------------------------------------------------
 
-def compute_lyapunov():
+def compute_lyapunov(**params):
     """|K| and its part along B over one orbit of the linear law, no disturbance."""
-    s = lyapunov_orbit()
+    s = lyapunov_orbit(_with(params))
     orbits = s["run"].time / s["period"]
     return FigureData("", "", "", {}, [
         Series("|K|", {"orbits": ("1", orbits), "momentum": ("N m s", s["momentum"])}),
@@ -351,9 +352,9 @@ def plot_duty(data):
     return fig
 
 
-def compute_capacity():
+def compute_capacity(**params):
     """The unloadable fraction of the worst-placed momentum against inclination."""
-    s = capacity_study()
+    s = capacity_study(_with(params))
     i = np.degrees(s["inclination"])
     return FigureData("", "", "", {}, [
         Series("law without 1/B² (5.6): closed form", {"inclination": ("deg", i), "fraction": ("1", s["worst"])}),
@@ -402,7 +403,8 @@ register(FigureSpec("kov-unloading-band", "The steady band of wheel momentum and
                     "unloading law", f"{SOURCE} §5.5 (the runs of Figs. 5.12–5.13)", compute_band, plot_band,
                     _parameters(_UNLOADING_NAMES)))
 register(FigureSpec("kov-unloading-lyapunov", "The linear law over one orbit: |K| never grows, its part along B "
-                    "is not removed", f"{SOURCE} §5.2, eqs. (5.1)–(5.5)", compute_lyapunov, plot_lyapunov, {}))
+                    "is not removed", f"{SOURCE} §5.2, eqs. (5.1)–(5.5)", compute_lyapunov, plot_lyapunov,
+                    _parameters(("unl_linear_gain",))))
 register(FigureSpec("kov-unloading-attitude", "Unloading with the body held in the orbital frame by its wheels",
                     f"{SOURCE} §5.4, eqs. (5.35)–(5.47) (the attitude loop ours)", compute_attitude, plot_attitude,
                     _parameters(_ATTITUDE_NAMES)))
@@ -410,4 +412,5 @@ register(FigureSpec("kov-unloading-duty", "Unloading with the coils off while th
                     f"{SOURCE} §3.7, p. 75; SamSat-218D's duty cycle", compute_duty, plot_duty,
                     _parameters(_DUTY_NAMES)))
 register(FigureSpec("kov-unloading-capacity", "How much momentum coils can unload, against the orbit's inclination",
-                    "ours (derived); Kovalenko (1975) §5.2, eq. (2.36)", compute_capacity, plot_capacity, {}))
+                    "ours (derived); Kovalenko (1975) §5.2, eq. (2.36)", compute_capacity, plot_capacity,
+                    _parameters(("unl_altitude",))))
