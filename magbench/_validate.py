@@ -136,6 +136,16 @@ def as_whole_steps(name, value, step):
     return n
 
 
+def as_run_timing(duration, step, record_interval=None):
+    """(duration [s], step [s], steps between samples) of a fixed-step run, each checked:
+    duration and step > 0, the record interval a whole number of steps (default: every step)."""
+    total = as_positive_scalar("duration", duration, unit="s")
+    h = as_positive_scalar("step", step, unit="s")
+    every = 1 if record_interval is None else as_whole_steps(
+        "record_interval", as_positive_scalar("record_interval", record_interval, unit="s"), h)
+    return total, h, every
+
+
 def check_member_steps(members, steps):
     """Raise if ``members`` × ``steps`` exceeds :data:`MAX_MEMBER_STEPS`."""
     work = float(members) * float(steps)

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from .._validate import (as_finite, as_inertia, as_nonnegative, as_positive, as_positive_scalar, as_whole_steps,
+from .._validate import (as_finite, as_inertia, as_nonnegative, as_positive, as_run_timing,
                          check_member_steps)
 from ..dynamics import kernels
 from ..earth import CircularOrbit
@@ -155,10 +155,7 @@ def simulate_libration(satellite, orbit, initial_pitch, initial_roll, duration, 
         raise ValueError(f"satellite must be a LibrationSatellite, got {type(satellite).__name__}")
     if not isinstance(orbit, CircularOrbit):
         raise ValueError(f"orbit must be a magbench.earth.CircularOrbit, got {type(orbit).__name__}")
-    total = as_positive_scalar("duration", duration, unit="s")
-    h = as_positive_scalar("step", step, unit="s")
-    every = 1 if record_interval is None else as_whole_steps(
-        "record_interval", as_positive_scalar("record_interval", record_interval, unit="s"), h)
+    total, h, every = as_run_timing(duration, step, record_interval)
     phase = np.atleast_1d(np.asarray(orbit.argument_of_latitude0, dtype=float))
     pitch0 = np.atleast_1d(as_finite("initial_pitch", initial_pitch))
     roll0 = np.atleast_1d(as_finite("initial_roll", initial_roll))

@@ -21,8 +21,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from .._validate import (as_choice, as_finite, as_nonnegative, as_positive_scalar, as_whole_steps, check_member_steps,
-                         shown)
+from .._validate import (as_choice, as_finite, as_nonnegative, as_positive_scalar, as_run_timing, as_whole_steps,
+                         check_member_steps, shown)
 from ..control import kernels as laws
 from ..dynamics import kernels
 from ..earth import CircularOrbit
@@ -302,6 +302,32 @@ def _rhs(time, state, dipole, wheel_torque, path, sat, disturbance):
     return np.concatenate([kernels.quaternion_rate(q, w), w_rate, wheel_torque], axis=-1)
 
 
+def _member_count(orbit, law, arrays):
+    """M, the members a run has: the orbit's phases, the laws and the arrays ``{name: value}``
+    (one value or one per member on the first axis; a vector of 3 counts as one) must agree."""
+    sizes = {"the orbit's phases": np.atleast_1d(np.asarray(orbit.argument_of_latitude0)).size}
+    if isinstance(law, (list, tuple)):
+        sizes["the laws"] = len(law)
+    for name, value in arrays.items():
+        shape = np.shape(value)
+        if len(shape) == 2 or (name == "dipole_limit" and len(shape) == 1):
+            sizes[name] = shape[0]
+    members = max(sizes.values())
+    if set(sizes.values()) - {1, members}:
+        raise ValueError(f"{', '.join(sizes)} must agree on the members M, got "
+                         + ", ".join(f"{v} ({k})" for k, v in sizes.items()))
+    return members
+
+
+def _dipole_limits(dipole_limit, members):
+    """L0 per member, shape (M, 1) [A·m²]: a scalar or one per member, > 0 (inf allowed)."""
+    limit = np.asarray(dipole_limit, dtype=float)
+    if limit.ndim > 1 or np.any(np.isnan(limit)) or np.any(limit <= 0):
+        raise ValueError(f"dipole_limit must be > 0 A·m² (inf allowed), a scalar or one per member, got "
+                         f"{shown(dipole_limit)}")
+    return np.broadcast_to(limit, (members,))[:, None]
+
+
 def _members(name, value, members, shape):
     arr = as_finite(name, value)
     try:
@@ -373,17 +399,9 @@ def simulate_unloading(satellite, orbit, law, disturbance, duration, step, recor
                               ("disturbance", disturbance, DisturbanceTorque)):
         if not isinstance(value, kind):
             raise ValueError(f"{name} must be a {kind.__name__}, got {type(value).__name__}")
-    total = as_positive_scalar("duration", duration, unit="s")
-    h = as_positive_scalar("step", step, unit="s")
-    every = 1 if record_interval is None else as_whole_steps(
-        "record_interval", as_positive_scalar("record_interval", record_interval, unit="s"), h)
-    phase = np.atleast_1d(np.asarray(orbit.argument_of_latitude0, dtype=float))
-    sizes = {phase.size} | {np.asarray(v).shape[0] for v in (initial_rotation, initial_rate, initial_wheel_momentum)
-                            if np.ndim(v) == 2} | ({len(law)} if isinstance(law, (list, tuple)) else set())
-    members = max(sizes)
-    if sizes - {1, members}:
-        raise ValueError(f"the orbit's phases ({phase.size}), initial_rotation, initial_rate, "
-                         f"initial_wheel_momentum and the laws must agree on the members M, got {sorted(sizes)}")
+    total, h, every = as_run_timing(duration, step, record_interval)
+    members = _member_count(orbit, law, {"initial_rotation": initial_rotation, "initial_rate": initial_rate,
+                                         "initial_wheel_momentum": initial_wheel_momentum})
     groups = _law_groups(law, members)
     rotation = _members("initial_rotation", initial_rotation, members, (3,))
     rate = _members("initial_rate", initial_rate, members, (3,))
@@ -466,8 +484,9 @@ def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_int
         Sampling interval, a whole number of steps [s] (default: every step).
     initial_wheel_momentum : float or array_like, shape (3,) or (M, 3), optional
         K at time 0 [N·m·s].
-    dipole_limit : float, optional
-        |L_i| the coils can give [A·m²] (default ∞); the clipped steps are counted.
+    dipole_limit : float or array_like, shape (M,), optional
+        |L_i| the coils can give, per member [A·m²] (default ∞); the clipped steps are
+        counted.
     control_interval : float, optional
         Duty cycling (not in Kovalenko: SamSat-218D's scheme, chapter 5, and his §3.7 on a
         magnetometer beside the coils): every ``control_interval`` [s] the coils are off for
@@ -509,22 +528,12 @@ def simulate_ideal_unloading(orbit, law, disturbance, duration, step, record_int
     """
     if not isinstance(orbit, CircularOrbit):
         raise ValueError(f"orbit must be a magbench.earth.CircularOrbit, got {type(orbit).__name__}")
-    total = as_positive_scalar("duration", duration, unit="s")
-    h = as_positive_scalar("step", step, unit="s")
-    every = 1 if record_interval is None else as_whole_steps(
-        "record_interval", as_positive_scalar("record_interval", record_interval, unit="s"), h)
-    limit = np.asarray(dipole_limit, dtype=float)
-    if limit.ndim or np.isnan(limit) or limit <= 0:
-        raise ValueError(f"dipole_limit must be a scalar > 0 A·m² (inf allowed), got {shown(dipole_limit)}")
+    total, h, every = as_run_timing(duration, step, record_interval)
     cycle, gap = _duty(control_interval, off_time, h)
-    phase = np.atleast_1d(np.asarray(orbit.argument_of_latitude0, dtype=float))
-    sizes = ({phase.size} | {np.asarray(v).shape[0] for v in (disturbance, initial_wheel_momentum) if np.ndim(v) == 2}
-             | ({len(law)} if isinstance(law, (list, tuple)) else set()))
-    members = max(sizes)
-    if sizes - {1, members}:
-        raise ValueError(f"the orbit's phases ({phase.size}), disturbance, initial_wheel_momentum and the laws must "
-                         f"agree on the members M, got {sorted(sizes)}")
+    members = _member_count(orbit, law, {"disturbance": disturbance, "initial_wheel_momentum": initial_wheel_momentum,
+                                         "dipole_limit": dipole_limit})
     groups = _law_groups(law, members)
+    limit = _dipole_limits(dipole_limit, members)
     torque = _members("disturbance", disturbance, members, (3,))
     state = _members("initial_wheel_momentum", initial_wheel_momentum, members, (3,))
     steps = int(np.ceil(total / h - 1e-9))
@@ -657,23 +666,10 @@ def simulate_coil_detumbling(inertia, orbit, law, duration, step, record_interva
         raise ValueError(f"inertia must be three positive principal moments [kg·m²], got {shown(inertia)}")
     if not isinstance(orbit, CircularOrbit):
         raise ValueError(f"orbit must be a magbench.earth.CircularOrbit, got {type(orbit).__name__}")
-    total = as_positive_scalar("duration", duration, unit="s")
-    h = as_positive_scalar("step", step, unit="s")
-    every = 1 if record_interval is None else as_whole_steps(
-        "record_interval", as_positive_scalar("record_interval", record_interval, unit="s"), h)
-    limit = np.asarray(dipole_limit, dtype=float)
-    if limit.ndim > 1 or np.any(np.isnan(limit)) or np.any(limit <= 0):
-        raise ValueError(f"dipole_limit must be > 0 A·m² (inf allowed), a scalar or one per member, got "
-                         f"{shown(dipole_limit)}")
-    phase = np.atleast_1d(np.asarray(orbit.argument_of_latitude0, dtype=float))
-    sizes = ({phase.size, limit.size} | ({np.asarray(initial_momentum).shape[0]} if np.ndim(initial_momentum) == 2
-                                         else set()) | ({len(law)} if isinstance(law, (list, tuple)) else set()))
-    members = max(sizes)
-    if sizes - {1, members}:
-        raise ValueError(f"the orbit's phases ({phase.size}), initial_momentum, dipole_limit and the laws must agree "
-                         f"on the members M, got {sorted(sizes)}")
+    total, h, every = as_run_timing(duration, step, record_interval)
+    members = _member_count(orbit, law, {"initial_momentum": initial_momentum, "dipole_limit": dipole_limit})
     groups = _law_groups(law, members)
-    limit = np.broadcast_to(limit, (members,))[:, None]
+    limit = _dipole_limits(dipole_limit, members)
     momentum = _members("initial_momentum", initial_momentum, members, (3,))
     steps = int(np.ceil(total / h - 1e-9))
     check_member_steps(members, steps)
