@@ -433,28 +433,31 @@ def comparison_rows(params=None):
     return rows + peer_rows()
 
 
-#: Basilisk's unit test of its torque-to-dipole mapping (AVSLab/basilisk, commit babdff7a,
-#: src/fswAlgorithms/effectorInterfaces/torque2Dipole): b = (10⁻⁵, 0, 0) T, τ = (10, 20, 30) mN·m
-#: give μ = (0, −3000, 2000) A·m². The momentum law behind it, mtbMomentumManagementSimple, asks
-#: τ = −K_p h_w; so the pair is Kovalenko's (5.1) with k = K_p and K = h_w.
+#: Basilisk's unit test of its torque-to-dipole mapping (AVSLab/basilisk,
+#: src/fswAlgorithms/effectorInterfaces/torque2Dipole/_UnitTest/test_torque2Dipole.py, stored
+#: version 0773ee82): inputs b = (10⁻⁵, 0, 0) T and τ = (10, 20, 30) mN·m; the expected dipole is
+#: the test's own formula, cross(b, τ)/(b·b), compared at its accuracy 10⁻¹² A·m². The momentum
+#: law behind it, mtbMomentumManagementSimple, asks τ = −K_p h_w: the pair is Kovalenko's (5.1)
+#: with k = K_p and K = h_w.
 BASILISK_FIELD = (1e-5, 0.0, 0.0)
 BASILISK_TORQUE = (10e-3, 20e-3, 30e-3)
-BASILISK_DIPOLE = (0.0, -3000.0, 2000.0)
+BASILISK_ACCURACY = 1e-12
 
 
 def peer_rows():
     """Kovalenko's linear law (5.1) beside Basilisk's momentum-management chain on its own test case."""
     from ...control import unloading_dipole
 
+    b, tau = np.asarray(BASILISK_FIELD), np.asarray(BASILISK_TORQUE)
+    expected = np.cross(b, tau) / np.dot(b, b)      # the test's formula, as it states it
     gain = 3e-3                      # any K_p: the dipole does not depend on it (τ fixes K_p h_w)
-    momentum = -np.asarray(BASILISK_TORQUE) / gain
-    ours = unloading_dipole(BASILISK_FIELD, momentum, gain)
-    note = ("Basilisk's torque2Dipole unit test (AVSLab/basilisk babdff7a): μ = (b × τ)/|b|² for b = (10⁻⁵, 0, 0) T, "
-            "τ = (10, 20, 30) mN·m; ours: (5.1) with K = −τ/k, i.e. mtbMomentumManagementSimple's τ = −K_p h_w. "
-            "Tolerance: half the test's last printed digit")
+    ours = unloading_dipole(b, -tau / gain, gain)
+    note = ("Basilisk's torque2Dipole unit test: b = (10⁻⁵, 0, 0) T, τ = (10, 20, 30) mN·m, expected dipole its own "
+            "formula (b × τ)/|b|² evaluated on them; ours: (5.1) with K = −τ/k, i.e. mtbMomentumManagementSimple's "
+            "τ = −K_p h_w. Tolerance: the test's accuracy, 10⁻¹² A·m²")
     return [make_row(f"basilisk-torque2dipole-{axis}", f"Unloading dipole, {axis} component, Basilisk's test case",
-                     "Basilisk torque2Dipole unit test (expected value)", BASILISK_DIPOLE[i], float(ours[i]), 0.5,
-                     unit="A·m²", note=note)
+                     "Basilisk torque2Dipole unit test (its expected value)", float(expected[i]), float(ours[i]),
+                     BASILISK_ACCURACY, unit="A·m²", note=note)
             for i, axis in ((1, "y"), (2, "z"))]
 
 
