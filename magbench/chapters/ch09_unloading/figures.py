@@ -36,7 +36,7 @@ _INPUTS = {
     "wheel_attitude_gain": ("k_p of the attitude loop (ours)", {}),
     "wheel_rate_gain": ("k_d of the attitude loop (ours)", {}),
     "duty_interval": ("the coils' control interval (ours, SamSat-218D's 17 s)", {"low": 2.0, "high": 600.0}),
-    "duty_off_time": ("the coils' off time per interval (ours, SamSat-218D's 1 s)", {"low": 1.0}),
+    "duty_off_time": ("the coils' off time per interval (ours, SamSat-218D's 1 s)", {"low": 0.25}),
 }
 
 _DETUMBLING_NAMES = ("det_initial_momentum", "det_dipole", "det_threshold", "det_gain", "det_orbits")
