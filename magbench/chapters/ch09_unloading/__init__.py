@@ -503,12 +503,15 @@ def constant_checks():
     printed = load_printed("kovalenko")
     params = load_parameter_set("kovalenko")
     out = []
-    for name, kgf, where in (("det_initial_momentum", 10.0, "p. 118"), ("det_threshold", 1.0, "p. 118"),
-                             ("det_threshold_step", 0.1, "Fig. 5.11, p. 120"), ("unl_on_threshold", 0.2, "p. 124")):
+    for name, kgf, where, what in (
+            ("det_initial_momentum", 10.0, "p. 118", "Detumbling runs' initial momentum per axis"),
+            ("det_threshold", 1.0, "p. 118", "Fig. 5.10's relay threshold K°"),
+            ("det_threshold_step", 0.1, "Fig. 5.11, p. 120", "Fig. 5.11's smallest threshold K°"),
+            ("unl_on_threshold", 0.2, "p. 124", "The unloading relay's on-threshold K2°")):
         par = params[name]
         out.append(source_check(
             id=f"kov-{name.replace('_', '-')}-kgf", chapter="ch09", source="kovalenko", location=f"§5.5, {where}",
-            quantity=f"{par.value:g} kg·m²·s⁻¹ as a round number of kgf·m·s ({name})",
+            quantity=f"{what}: {par.value:g} kg·m²·s⁻¹ as a round number of kgf·m·s",
             printed=par.value, computed=kgf * _G, tolerance=0.5 * 10.0 ** np.floor(np.log10(abs(par.value)) - 1),
             unit="kg m^2/s",
             explanation=(f"{kgf:g} kgf·m·s × g = {kgf * _G:.4f} N·m·s; the book converts with g = 9.8 and prints "
