@@ -484,14 +484,8 @@ def caption_checks():
                                                  f"{0.1 * f:.1f} kgf·m·s × g: the thresholds are round numbers in the "
                                                  "book's kgf·m·s."),
                                     computation="arithmetic"))
-    moment = p["earth_dipole_moment"]
-    checks.append(printed_check(printed["kov-unl-earth-moment"], id="kov-unl-earth-moment", chapter="ch09",
-                                location="§5.4, eq. (5.18), p. 109", computed=moment,
-                                explanation=(f"The book's dipole of p. 34, 8.1·10²⁵ CGS units, is {moment:.2e} A·m² "
-                                             "(1 emu = 10⁻³ A·m²): the two chapters use one Earth."),
-                                computation="magbench.units (emu → A·m²)"))
     checks.append(printed_check(printed["kov-unl-gm"], id="kov-unl-gm", chapter="ch09",
-                                location="§5.4, eq. (5.18), p. 109", computed=EARTH_GM,
+                                location="§5.4, eq. (5.18), p. 110", computed=EARTH_GM,
                                 explanation=(f"IERS 2010's GM = {EARTH_GM:.6e} m³/s² rounds to the printed "
                                              "3.986·10¹⁴."),
                                 computation="magbench.constants.EARTH_GM"))
@@ -581,7 +575,6 @@ CHAPTER = Chapter(
     row_kinds=(("kov-unl-band-", "design"), ("basilisk-torque2dipole-", "claim")),
     check_classes=(
         ("kov-det-", "printed", None),
-        ("kov-unl-earth-moment", "printed", None),
         ("kov-unl-gm", "printed", None),
         ("kov-unl-dead-zone-oersted", "printed", "lost"),
         ("kov-unl-on-threshold-kgf", "printed", None),
