@@ -163,10 +163,12 @@ def pulsed_unloading_dipole(field, momentum, gain, axis, field_threshold):
 
     Notes
     -----
-    Kovalenko (1975) §5.2, eqs. (5.8)–(5.9) (seed lines 101–102), reconstructed: the seed
-    keeps the condition "B_x = 0" (the moments when B's projection on an axis vanishes allow
-    independent control about that axis) but not the printed formulas; the form here is the
-    linear law (5.1) restricted to the component K_a e_a, which gives that independence.
+    Kovalenko (1975) §5.2, eqs. (5.8)–(5.9) (seed line 101): at B_x = 0, (5.6) leaves
+    L_y = −k' K_x B_z, L_z = k' K_x B_y, and with the x coil off the torque is (5.9),
+    M_x = −k' K_x (B_y² + B_z²), M_y = M_z = 0: independent control about x. This is that law
+    for any axis a, with k' = k/B² (the form of (5.1)) so that the torque is −k K_a e_a; away
+    from B_a = 0 it is switched off (|B_a| > δ). Chapter 9's check ``kov-pulsed-torque-59``
+    evaluates (5.9) against it.
 
     Examples
     --------
