@@ -34,6 +34,12 @@ _STABILISATION_PARAMETERS = {
     ω0 > 0 [rad/s].""",
     "moment": """moment : array_like
     L ≥ 0 [A·m²].""",
+    "equatorial_b": """equatorial_b : float
+    B0 > 0, the field over the magnetic equator [T].""",
+    "inertia_difference": """inertia_difference : float, optional
+    ΔJ [kg·m²]; 0 leaves out the gravity torque.""",
+    "friction": """friction : float, optional
+    M_T ≥ 0, the dry friction of a damper whose magnet rests against the field [N·m].""",
 }
 _document_stabilisation = fill_docstring(_STABILISATION_PARAMETERS)
 
@@ -511,6 +517,7 @@ def _disturbance_ratio(u, inertia, inertia_difference, friction, mean_motion, eq
     return (kinematic + gravity - friction) / polar_field_b(u, equatorial_b)
 
 
+@_document_stabilisation
 def polar_disturbance_ratio(argument_of_latitude, inertia, mean_motion, equatorial_b, inertia_difference=0.0,
                             friction=0.0):
     r"""The disturbance a magnet must hold on a magnetopolar orbit, per unit field, along the orbit.
@@ -519,16 +526,9 @@ def polar_disturbance_ratio(argument_of_latitude, inertia, mean_motion, equatori
     ----------
     argument_of_latitude : array_like
         u from the magnetic equator [rad].
-    inertia : float
-        J > 0 [kg·m²].
-    mean_motion : float
-        ω0 > 0 [rad/s].
-    equatorial_b : float
-        B0 > 0, the field over the magnetic equator [T].
-    inertia_difference : float, optional
-        ΔJ [kg·m²]; 0 leaves out the gravity torque.
-    friction : float, optional
-        M_T ≥ 0, the dry friction of a damper whose magnet rests against the field [N·m].
+    {inertia : float}
+    {mean_motion : float}
+    {equatorial_b, inertia_difference, friction}
 
     Returns
     -------
@@ -579,21 +579,15 @@ def polar_error_factor(tolerance=1e-12):
     return float(-best.fun), float(best.x)
 
 
+@_document_stabilisation
 def polar_disturbance_peak(inertia, mean_motion, equatorial_b, inertia_difference=0.0, friction=0.0):
     r"""Largest (J|η̈| + M_в − M_T)/B over a magnetopolar orbit, and where it is reached.
 
     Parameters
     ----------
-    inertia : float
-        J > 0 [kg·m²].
-    mean_motion : float
-        ω0 > 0 [rad/s].
-    equatorial_b : float
-        B0 > 0, the field over the magnetic equator [T].
-    inertia_difference : float, optional
-        ΔJ [kg·m²]; 0 leaves out the gravity torque.
-    friction : float, optional
-        M_T ≥ 0, the dry friction of a damper whose magnet rests against the field [N·m].
+    {inertia : float}
+    {mean_motion : float}
+    {equatorial_b, inertia_difference, friction}
 
     Returns
     -------
