@@ -12,7 +12,8 @@ from . import (ch01_earth_field, ch02_field_simulator, ch03_magnetorquers, ch04_
 from ._base import OVERRIDES_ENV, Chapter, chapter_parameters, read_overrides
 
 __all__ = ["CHAPTERS", "Chapter", "OVERRIDES_ENV", "chapter", "chapter_parameters", "read_overrides",
-           "comparisons", "source_checks", "errata", "row_kind", "figure_modules", "caption_name", "source_name"]
+           "comparisons", "source_checks", "errata", "row_kind", "figure_modules", "caption_name", "source_name",
+           "dispersion_studies", "dispersion_study"]
 
 #: The chapters in book order.
 CHAPTERS = [
@@ -34,6 +35,19 @@ def chapter(key):
         if spec.key == key:
             return spec
     raise KeyError(f"unknown chapter {key!r}; known: {', '.join(c.key for c in CHAPTERS)}")
+
+
+def dispersion_studies():
+    """Every chapter's dispersion studies (:mod:`magbench.sim.dispersion`), by name, in book order."""
+    return {study.name: study for spec in CHAPTERS for study in spec.dispersions}
+
+
+def dispersion_study(name):
+    """The dispersion study called ``name``; an unknown name raises ``KeyError`` listing the studies."""
+    studies = dispersion_studies()
+    if name not in studies:
+        raise KeyError(f"unknown study {name!r}; known: {', '.join(studies)}")
+    return studies[name]
 
 
 def caption_name(key):

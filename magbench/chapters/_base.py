@@ -70,6 +70,9 @@ class Chapter:
         the source numbers it ("§2.2, eq. (16)"), what it is, and where the book has it
         (MyST markup: ``{ref}``, ``{eq}`` or ``{numref}`` links). The concordance page is
         generated from these and from the figures' own citations.
+    dispersions : tuple of DispersionStudy
+        The chapter's dispersion studies (:mod:`magbench.sim.dispersion`), run by name with
+        ``magbench montecarlo``.
 
     The chapter's first page carries the label ``(key)=``, so ``{ref}`key``` links it.
     """
@@ -90,6 +93,7 @@ class Chapter:
     check_classes: tuple = ()
     discussed_in: tuple = ()
     concordance: tuple = ()
+    dispersions: tuple = ()
 
 
 def _chapters():
@@ -162,4 +166,16 @@ def chapter_parameters(chapter, *, overrides=None):
             for name, value in tables.get(section, {}).items():
                 if name in values:      # [all] may also name other chapters' inputs
                     values[name] = float(value)
+    return values
+
+
+def study_parameters(chapter, overrides=None):
+    """A chapter's parameters [SI] with ``overrides`` (name → SI value) applied on top: the
+    ``parameters`` of a :class:`magbench.sim.dispersion.DispersionStudy`. A name that is not
+    one of the chapter's inputs raises ValueError listing them."""
+    values = chapter_parameters(chapter)
+    for name, value in dict(overrides or {}).items():
+        if name not in values:
+            raise ValueError(f"unknown parameter {name!r} of {chapter}; valid: {', '.join(sorted(values))}")
+        values[name] = float(value)
     return values

@@ -9,13 +9,16 @@ correction (:mod:`.spin_correction`) and the passive magnetic satellite (:mod:`.
 spin's energy balance :mod:`.passive_balance`, its final regime :mod:`.passive_regime`), and the planar pitch motion of a magnet-held body on a
 magnetopolar orbit (:mod:`.planar`), and the gravity-gradient boom with a magnetic libration
 damper (:mod:`.libration`), and the wheel-stabilised spacecraft whose wheels magnetorquers
-unload (:mod:`.wheels`).
+unload (:mod:`.wheels`); and the dispersion studies that run any of them over many members
+on any executor (:mod:`.dispersion`).
 
 Re-exports the integrator, the result type, the mock-up's PID loop, detumbling, the spinning
 spacecraft and the passive satellite; the bench loop is imported from its package.
 """
 
-from .detumble import DetumbleRun, detumble_monte_carlo, detumble_time, simulate_detumble
+from .detumble import DetumbleRun, detumble_monte_carlo, detumble_time, draw_detumble_member, simulate_detumble
+from .dispersion import (DispersedInput, DispersionError, DispersionStudy, DispersionTable, Outcome,
+                         dispersion_statistics, member_generators, run_dispersion)
 from .detumble_segments import DETUMBLE_STEPS, detumble_step, simulate_detumble_segments
 from ..integrate import rk4_step
 from .free_swing import integrated_swing_period, simulate_free_swing
@@ -40,7 +43,9 @@ from .wheels import (DisturbanceTorque, UnloadingLaw, WheelSatellite, simulate_c
 from .turning_field import turning_field_kinetic_energy
 
 __all__ = ["rk4_step", "SimulationResult", "simulate_free_swing", "integrated_swing_period", "PidLoop", "loop_torque", "pid_continuous_rhs", "simulate_pid", "DetumbleRun", "simulate_detumble", "detumble_time",
-           "detumble_monte_carlo", "DETUMBLE_STEPS", "detumble_step", "simulate_detumble_segments",
+           "detumble_monte_carlo", "draw_detumble_member", "DispersedInput", "Outcome", "DispersionStudy",
+           "DispersionTable", "DispersionError", "member_generators", "run_dispersion", "dispersion_statistics",
+           "DETUMBLE_STEPS", "detumble_step", "simulate_detumble_segments",
            "PassiveSatellite", "PassiveRun", "simulate_passive", "initial_passive_state", "flat_spin_decay_rate",
            "orbit_mean_field", "passive_final_regime", "passive_transition_times",
            "RotorSatellite", "RotorRun", "rotor_dimensionless", "rotor_gain_scales",

@@ -25,9 +25,10 @@ from .._validate import (as_choice, as_finite, as_inertia, as_nonnegative, as_po
                          as_positive_scalar, as_quaternions, as_vectors, as_whole_steps, check_member_steps, shown)
 from ..earth.circular_orbit import CircularOrbit
 from ._detumble_loops import ESTIMATORS, LAWS, MODES, _Loop, _compiled_loop, _numpy_loop
+from .dispersion import member_generators
 from .result import DetumbleRun
 
-__all__ = ["DetumbleRun", "simulate_detumble", "detumble_time", "detumble_monte_carlo"]
+__all__ = ["DetumbleRun", "simulate_detumble", "detumble_time", "draw_detumble_member", "detumble_monte_carlo"]
 
 
 
@@ -258,7 +259,39 @@ def detumble_time(time, rate, threshold=np.radians(0.5), dwell=0.0):
     return np.where(ok.any(axis=-1), t[first], np.nan)
 
 
-def detumble_monte_carlo(inertia, orbit, *, members, seed, duration, rate_range, **options):
+def draw_detumble_member(rng, rate_range):
+    r"""One member's random attitude, initial rate and orbit phase.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        The member's own generator [-] (:func:`magbench.sim.dispersion.member_generators`).
+    rate_range : tuple of float
+        Lowest and highest initial |ω| [rad/s].
+
+    Returns
+    -------
+    attitude : ndarray, shape (4,)
+        Uniform on the rotations (scipy's ``Rotation.random``), scalar first [-].
+    rate : ndarray, shape (3,)
+        Axis uniform on the sphere, magnitude uniform in ``rate_range`` [rad/s].
+    phase : float
+        Orbit phase, uniform in [0, 2π) [rad].
+
+    Examples
+    --------
+    >>> q, w, u = draw_detumble_member(np.random.default_rng([7, 0]), (0.1, 0.2))
+    >>> bool(0.1 <= np.linalg.norm(w) <= 0.2 and 0.0 <= u < 2.0 * np.pi)
+    True
+    """
+    low, high = rate_range
+    attitude = Rotation.random(rng=rng).as_quat(scalar_first=True)
+    axis = rng.normal(size=3)
+    rate = axis / np.linalg.norm(axis) * rng.uniform(low, high)
+    return attitude, rate, rng.uniform(0.0, 2.0 * np.pi)
+
+
+def detumble_monte_carlo(inertia, orbit, *, members, seed, duration, rate_range, first_member=0, **options):
     r"""Detumbling from random attitudes, rate axes, rate magnitudes and orbit phases.
 
     Parameters
@@ -271,11 +304,15 @@ def detumble_monte_carlo(inertia, orbit, *, members, seed, duration, rate_range,
     members : int
         Number of members M ≥ 1 [-].
     seed : int
-        Seed of :func:`numpy.random.default_rng` [-].
+        The study's seed ≥ 0: member k draws from ``numpy.random.default_rng([seed, k])``
+        [-], so that a member's draws do not depend on how many members run beside it.
     duration : float
         Simulated time [s].
     rate_range : tuple of float
         Lowest and highest initial |ω|, drawn uniformly; axis uniform on the sphere [rad/s].
+    first_member : int, optional
+        Index k of the first member [-]; members ``first_member`` … ``first_member + M − 1``
+        run (a chunk of a larger study, :mod:`magbench.sim.dispersion`).
     options : keyword arguments
         ``**options``: keyword arguments of :func:`simulate_detumble` (``gain`` and ``max_dipole`` required)
         [SI].
@@ -284,7 +321,7 @@ def detumble_monte_carlo(inertia, orbit, *, members, seed, duration, rate_range,
     -------
     DetumbleRun
         As :func:`simulate_detumble`; ``inputs["draws"]`` holds the drawn attitude, rate and
-        orbit phase.
+        orbit phase (:func:`draw_detumble_member`).
 
     Notes
     -----
@@ -297,15 +334,12 @@ def detumble_monte_carlo(inertia, orbit, *, members, seed, duration, rate_range,
     bounds = as_nonnegative("rate_range", rate_range, unit="rad/s")
     if bounds.shape != (2,) or not bounds[0] <= bounds[1] or bounds[1] == 0:
         raise ValueError(f"rate_range must be (low, high) with 0 <= low <= high, high > 0 [rad/s], got {shown(rate_range)}")
-    low, high = bounds
-    rng = np.random.default_rng(seed)
-    attitude = Rotation.random(m, rng=rng).as_quat(scalar_first=True)
-    axis = rng.normal(size=(m, 3))
-    rate = axis / np.linalg.norm(axis, axis=-1, keepdims=True) * rng.uniform(low, high, size=(m, 1))
     if np.ndim(orbit.argument_of_latitude0) != 0:
         raise ValueError("orbit.argument_of_latitude0 must be a scalar here (each member's phase is drawn), "
                          f"got shape {np.shape(orbit.argument_of_latitude0)}")
-    phase = orbit.argument_of_latitude0 + rng.uniform(0.0, 2.0 * np.pi, size=m)
+    draws = [draw_detumble_member(rng, bounds) for rng in member_generators(seed, first_member, first_member + m)]
+    attitude, rate, phase = (np.array(d) for d in zip(*draws))
+    phase = orbit.argument_of_latitude0 + phase
     run = simulate_detumble(inertia, replace(orbit, argument_of_latitude0=phase), attitude, rate, duration,
                             **options)
     run.inputs["draws"] = {"attitude": attitude, "rate": rate, "argument_of_latitude0": phase}

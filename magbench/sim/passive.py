@@ -11,7 +11,7 @@ number of members, so spans of days at the session-1 spin rates are out of reach
 shared reference's pitfalls); the capture phase (slow rotation) is cheap.
 """
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from scipy.spatial.transform import Rotation
@@ -230,7 +230,8 @@ def simulate_passive(satellite, orbit, angular_momentum, nutation, momentum_dire
     proper_rotation : float or array_like, shape (M,), optional
         Initial proper-rotation angle φ [rad].
     sample_interval : float, optional
-        Interval between samples; the step is re-chosen in each interval [s].
+        Interval between samples; each member's step is re-chosen in each interval from its
+        own rates [s].
     max_rate_step : float, optional
         Largest h·max(|ω|, |Ω_p|, 2n) of an RK4 step, Ω_p = (C − A)ω3/A the body precession
         rate, n the mean motion [rad].
@@ -282,31 +283,42 @@ def simulate_passive(satellite, orbit, angular_momentum, nutation, momentum_dire
     hc, _, bs, k = limb_constants(satellite.rod_coercivity, satellite.rod_remanence, satellite.rod_saturation)
     inertia = satellite.inertia
     a, c = satellite.transverse_inertia, satellite.axial_inertia
-    args = (_Field(orbit), inertia, satellite.magnet_moment, axes, satellite.rod_volume, (hc, bs, k))
     n_samples = int(np.ceil(span / interval - 1e-9))
     times = interval * np.arange(n_samples + 1)
     records = np.empty((n_samples + 1, 5, members))
-    record = _recorder(records, inertia, orbit, members)
-    if engine == "compiled":
-        steps, state = _run_compiled(satellite, orbit, state, phase, axes, (hc, bs, k), interval, n_samples, limit,
-                                     records)
-    else:
-        steps, state = _run_numpy(state, times, records, record, args, interval, limit, orbit, inertia, a, c)
+    phases = np.broadcast_to(phase, (members,))
+    # Member by member: each member's step follows its own rates, so a member's run does not
+    # depend on the members beside it (a dispersion study splits members across workers).
+    steps = np.zeros(members, dtype=int)
+    finals = []
+    for m in range(members):
+        own = replace(orbit, argument_of_latitude0=float(phases[m]))
+        part = np.empty((n_samples + 1, 5, 1))
+        if engine == "compiled":
+            steps[m], final = _run_compiled(satellite, own, state[m:m + 1], phases[m:m + 1], axes, (hc, bs, k),
+                                            interval, n_samples, limit, part)
+        else:
+            args = (_Field(own), inertia, satellite.magnet_moment, axes, satellite.rod_volume, (hc, bs, k))
+            steps[m], final = _run_numpy(state[m:m + 1], times, _recorder(part, inertia, own, 1), args, interval,
+                                         limit, own, a, c)
+        records[:, :, m] = part[:, :, 0]
+        finals.append(final)
+    state = np.concatenate(finals)
     squeeze = (lambda x: x) if has_members else (lambda x: x[0])
     # Contiguous copies, not strided views: a run loaded from the result cache is contiguous,
     # and numpy sums the two layouts in different orders (a mean then differs in its last digit).
     signals = [squeeze(np.ascontiguousarray(records[:, i, :].T)) for i in range(5)]
     inputs = {"angular_momentum": angular_momentum, "nutation": nutation, "momentum_direction": momentum_direction,
               "duration": span, "proper_rotation": proper_rotation, "sample_interval": interval,
-              "max_rate_step": limit, "engine": engine, "steps": steps, "initial_attitude": q0, "initial_body_rate": w0}
+              "max_rate_step": limit, "engine": engine, "steps": squeeze(steps), "initial_attitude": q0, "initial_body_rate": w0}
     return PassiveRun(times, *signals, attitude=squeeze(state[:, :4]), body_rate=squeeze(state[:, 4:7]),
                       rod_induction=squeeze(state[:, 7:]), inputs=inputs)
 
 
 def _run_compiled(satellite, orbit, state, phase, axes, rod_constants, interval, n_samples, limit, records):
-    """The numba loop (:func:`magbench.sim._passive_kernel.run_passive`, ``engine="compiled"``),
-    all members in each step; it fills ``records`` and returns the steps taken and the final
-    states (M, 7 + rods)."""
+    """The numba loop (:func:`magbench.sim._passive_kernel.run_passive`, ``engine="compiled"``)
+    over the members of ``state`` (:func:`simulate_passive` gives it one at a time); it fills
+    ``records`` and returns the steps taken and the final states (M, 7 + rods)."""
     from ..earth.kernels import orbit_geometry
     from ._passive_kernel import run_passive
 
@@ -323,8 +335,9 @@ def _run_compiled(satellite, orbit, state, phase, axes, rod_constants, interval,
     return steps, np.ascontiguousarray(columns.T)
 
 
-def _run_numpy(state, times, records, record, args, interval, limit, orbit, inertia, a, c):
-    """The vectorised reference loop: all members in each RK4 step (``engine="numpy"``)."""
+def _run_numpy(state, times, record, args, interval, limit, orbit, a, c):
+    """The vectorised reference loop (``engine="numpy"``) over the members of ``state``
+    (:func:`simulate_passive` gives it one at a time); returns the steps and the final states."""
     steps = 0
     record(0, 0.0, state)
     for j in range(times.size - 1):

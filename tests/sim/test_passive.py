@@ -121,7 +121,7 @@ def test_compiled_kernel_agrees_with_the_numpy_reference(case):
         kwargs = {}
     fast = simulate_passive(sat, orbit, *args, 90.0, sample_interval=30.0, **kwargs)
     ref = simulate_passive(sat, orbit, *args, 90.0, sample_interval=30.0, engine="numpy", **kwargs)
-    assert fast.inputs["steps"] == ref.inputs["steps"] > 1000
+    assert np.array_equal(fast.inputs["steps"], ref.inputs["steps"]) and np.max(ref.inputs["steps"]) > 1000
     for name in ("angular_momentum", "nutation", "axis_field_angle", "momentum_field_angle", "rate",
                  "attitude", "body_rate", "rod_induction"):
         assert_allclose(getattr(fast, name), getattr(ref, name), rtol=0, atol=1e-10, err_msg=name)

@@ -13,6 +13,7 @@ from ...compare import make_row
 from ...errata import source_check
 from ...io import load_parameter_set
 from .._base import Chapter, chapter_parameters
+from .dispersion import BENCH
 from ...units import DEG
 from .models import bench_dispersion, bench_setup
 
@@ -221,4 +222,5 @@ CHAPTER = Chapter(
     source_names=(("thesis", "thesis"),),
     discussed_in=(("bench-error-", "ch04-bench-mc"), ("bench-budget-gyro-", "ch04-budget-calibration"),
                   ("thesis-eq14-design-amplitude", "ch04-period"), ("thesis-pid-gains-stable-si", "ch04-gains")),
+    dispersions=(BENCH,),
 )

@@ -19,6 +19,7 @@ from ...errata import printed_check, source_check
 from ...io import load_parameter_set, load_printed
 from ...result_cache import ChapterInputs
 from .._base import Chapter, chapter_parameters
+from .dispersion import DETUMBLE
 from ...units import DEG
 
 __all__ = ["CHAPTER", "INPUTS", "peer_rows", "detumbling_checks", "formula_checks"]
@@ -270,4 +271,5 @@ CHAPTER = Chapter(
                   ("samsat-fig2-", "ch05-modes"), ("samsat-kinematics-orbital-term", "ch05-law"),
                   ("samsat-dipole-projections", "ch05-law"), ("samsat-torque-mu0", "ch05-law"),
                   ("kov-b2-range-geopolar", "ch05-printed")),
+    dispersions=(DETUMBLE,),
 )

@@ -14,6 +14,7 @@ from ...errata import printed_check
 from ...io import load_parameter_set, load_printed
 from ...result_cache import cached_result
 from .._base import Chapter, chapter_parameters
+from .dispersion import CAPTURE, draw_momentum_direction
 from ...units import DEG
 
 __all__ = ["CHAPTER", "INPUTS", "capture_run", "decay_fits", "decay_balance", "full_run", "tns0_orbit",
@@ -109,12 +110,14 @@ def decay_fits():
 def _capture(key):
     from ...sim import simulate_passive
 
+    from ...sim import member_generators
+
     p = dict(key)
-    rng = np.random.default_rng(int(p["capture_seed"]))
     members = int(p["capture_members"])
     if members < 1:
         raise ValueError(f"capture_members must be >= 1, got {members}")
-    directions = rng.normal(size=(members, 3))
+    # one stream per member: the first members of the ``capture`` dispersion study
+    directions = np.array([draw_momentum_direction(g) for g in member_generators(int(p["capture_seed"]), 0, members)])
     return simulate_passive(tns0_satellite(p), tns0_orbit(p), np.full(members, p["capture_initial_momentum"]),
                             p["capture_initial_nutation"], directions, p["capture_duration"],
                             sample_interval=SAMPLE_INTERVAL)
@@ -188,10 +191,10 @@ def decay_balance(params=None):
 @cached_result(maxsize=2, reads=ORBIT_INPUTS + SATELLITE_INPUTS + ("capture_seed", "full_run_duration"))
 def _full(key):
     from ...io.tns0 import load_table1
-    from ...sim import simulate_passive
+    from ...sim import member_generators, simulate_passive
 
     p = dict(key)
-    direction = np.random.default_rng(int(p["capture_seed"])).normal(size=3)
+    direction = draw_momentum_direction(member_generators(int(p["capture_seed"]), 0, 1)[0])
     t1 = load_table1()
     run = simulate_passive(tns0_satellite(p), tns0_orbit(p), float(t1.angular_momentum[0]), float(t1.nutation[0]),
                            direction, p["full_run_duration"], sample_interval=FULL_RUN_SAMPLE_INTERVAL)
@@ -480,4 +483,5 @@ CHAPTER = Chapter(
                   ("tns0-field-cone-rate", "ch07-cone"), ("tns0-table1-nutation-half-pi", "ch07-full-run"),
                   ("tns0-table2-angle-in-degrees", "ch07-capture"), ("kovalenko-transit-", "ch07-rods"),
                   ("kovalenko-kphi-test-field-si", "ch07-rods")),
+    dispersions=(CAPTURE,),
 )

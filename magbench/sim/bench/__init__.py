@@ -60,12 +60,12 @@ from .budget import (SAMPLE_INTERVALS, from_unit_cube, nominal_source_values, on
                      sobol_budget, sobol_design, source_error_bands)
 from .config import ERROR_INPUTS, BenchErrors, BenchSetup
 from .controller import controller_step, draw_sensor_errors
-from .dispersion import BenchDispersion, monte_carlo, steady_error_band
+from .dispersion import BenchDispersion, draw_bench_member, monte_carlo, steady_error_band
 from .loop import simulate_bench
 from .reference import simulate_bench_reference
 
 __all__ = ["BenchSetup", "BenchErrors", "BenchDispersion", "controller_step", "horizontal_field",
            "coil_full_scale_moment", "quantise_duty", "plant_step", "simulate_bench", "simulate_bench_reference",
-           "monte_carlo", "steady_error_band", "draw_sensor_errors", "ERROR_INPUTS", "SAMPLE_INTERVALS",
+           "monte_carlo", "draw_bench_member", "steady_error_band", "draw_sensor_errors", "ERROR_INPUTS", "SAMPLE_INTERVALS",
            "nominal_source_values", "source_error_bands", "one_at_a_time", "from_unit_cube", "sobol_design",
            "sobol_analysis", "sobol_budget"]

@@ -23,8 +23,10 @@ def draw_sensor_errors(setup, steps, members, rng):
         Number of samples [-].
     members : int
         Number of Monte Carlo members [-].
-    rng : numpy.random.Generator or None
-        Source of randomness [-]; None gives ideal sensors (zero errors).
+    rng : numpy.random.Generator, list of them, or None
+        Source of randomness [-]: one generator for all members, one per member (each
+        member's errors then come from its own stream, whatever members run beside it), or
+        None for ideal sensors (zero errors).
 
     Returns
     -------
@@ -52,6 +54,10 @@ def draw_sensor_errors(setup, steps, members, rng):
     dt = setup.sample_interval
     gkw = {} if setup.gyro_noise_density is None else {"noise_density": setup.gyro_noise_density}
     mkw = {} if setup.magnetometer_noise is None else {"noise_std": setup.magnetometer_noise}
+    if isinstance(rng, (list, tuple)):
+        pairs = [(sensors.gyro_readings(np.zeros(steps), dt, rng=g, bias=setup.gyro_bias, **gkw),
+                  sensors.magnetometer_readings(np.zeros((steps, 2)), dt, rng=g, **mkw)) for g in rng]
+        return np.stack([g for g, _ in pairs], axis=1), np.stack([m for _, m in pairs], axis=1)
     gyro = sensors.gyro_readings(np.zeros((steps, members)), dt, rng=rng, bias=setup.gyro_bias, **gkw)
     mag = sensors.magnetometer_readings(np.zeros((steps, members, 2)), dt, rng=rng, **mkw)
     return gyro, mag

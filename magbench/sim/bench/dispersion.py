@@ -8,10 +8,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..._validate import as_count, as_finite, as_in_range, as_nonnegative, as_positive, check_member_steps
+from ..dispersion import member_generators
 from .config import BenchErrors, BenchSetup  # noqa: F401 - BenchSetup: doctests
 from .loop import simulate_bench
 
-__all__ = ["BenchDispersion", "monte_carlo", "steady_error_band"]
+__all__ = ["BenchDispersion", "draw_bench_member", "monte_carlo", "steady_error_band"]
 
 
 @dataclass(frozen=True)
@@ -51,7 +52,7 @@ class BenchDispersion:
 
 
 def monte_carlo(setup, psi_des, *, members, seed, duration, dispersion, record_interval=None, window=20.0,
-                release_angle=None, release_rate=0.0):
+                release_angle=None, release_rate=0.0, first_member=0):
     r"""Seeded Monte Carlo of the bench over its uncertain inputs.
 
     Parameters
@@ -63,7 +64,9 @@ def monte_carlo(setup, psi_des, *, members, seed, duration, dispersion, record_i
     members : int
         Number of members [-].
     seed : int
-        Seed of :func:`numpy.random.default_rng` [-]; the same seed gives the same run.
+        The study's seed ≥ 0 [-]: member k draws its inputs, then its sensor noise, from
+        ``numpy.random.default_rng([seed, k])``, so that a member's run does not depend on
+        how many members run beside it.
     duration : float
         Simulated time [s].
     dispersion : BenchDispersion
@@ -78,6 +81,8 @@ def monte_carlo(setup, psi_des, *, members, seed, duration, dispersion, record_i
         ``release_angle`` with ``release_rate`` is then the centre of the members' inputs.
     release_rate : float, optional
         Mean of the release rates [rad/s]; default 0.
+    first_member : int, optional
+        Index k of the first member [-] (a chunk of a larger study).
 
     Returns
     -------
@@ -88,7 +93,8 @@ def monte_carlo(setup, psi_des, *, members, seed, duration, dispersion, record_i
     Notes
     -----
     Not in the thesis: the thesis reports single runs with unstated initial conditions.
-    Sensor noise is drawn from the same generator after the inputs.
+    Each member's inputs are :func:`draw_bench_member`; its sensor noise follows from the
+    same generator.
 
     Examples
     --------
@@ -105,20 +111,59 @@ def monte_carlo(setup, psi_des, *, members, seed, duration, dispersion, record_i
     members = as_count("members", members)
     # Before the draws: a billion members would spend minutes drawing inputs first.
     check_member_steps(members, float(as_positive("duration", duration, unit="s")) / setup.sample_interval)
+    centre = psi_des if release_angle is None else float(as_finite("release_angle", release_angle))
+    mean_rate = float(as_finite("release_rate", release_rate))
+    rngs = member_generators(seed, first_member, first_member + members)
+    draws = [draw_bench_member(rng, dispersion, centre, mean_rate, setup.thread_stiffness) for rng in rngs]
+    scale, angle, rate, stiffness = (np.array(d) for d in zip(*draws))
+    return simulate_bench(setup, psi_des, duration=duration, release_angle=angle, release_rate=rate,
+                          members=members, errors=BenchErrors(moment_scale=scale, thread_stiffness=stiffness),
+                          rng=rngs, record_interval=record_interval, window=window)
+
+
+def draw_bench_member(rng, dispersion, release_angle, release_rate, thread_stiffness):
+    r"""One member's coil moments, release and thread stiffness, drawn from its own generator.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        The member's generator [-] (:func:`magbench.sim.dispersion.member_generators`).
+    dispersion : BenchDispersion
+        The spreads [-].
+    release_angle : float
+        Centre of the release angles [rad].
+    release_rate : float
+        Mean of the release rates [rad/s].
+    thread_stiffness : float
+        Nominal thread stiffness [N·m/rad].
+
+    Returns
+    -------
+    moment_scale : ndarray, shape (2,)
+        Each coil's moment over its nominal, uniform in 1 ± tolerance [-].
+    angle : float
+        Release angle [rad].
+    rate : float
+        Release rate [rad/s].
+    stiffness : float
+        Thread stiffness, log-uniform in nominal ×/÷ factor [N·m/rad].
+
+    Examples
+    --------
+    >>> d = BenchDispersion(0.05, 0.5, 0.01, 3.0)
+    >>> s, a, r, k = draw_bench_member(np.random.default_rng([1, 0]), d, 1.0, 0.0, 1e-6)
+    >>> bool(np.all(abs(s - 1) <= 0.05) and abs(a - 1) <= 0.5 and 1e-6 / 3 <= k <= 3e-6)
+    True
+    """
     if not isinstance(dispersion, BenchDispersion):
         raise ValueError(f"dispersion must be a BenchDispersion, got {type(dispersion).__name__}")
     tol, spread = float(dispersion.moment_tolerance), float(dispersion.release_angle_spread)
-    rate_std, factor = float(dispersion.release_rate_std), float(dispersion.thread_stiffness_factor)
-    centre = psi_des if release_angle is None else float(as_finite("release_angle", release_angle))
-    mean_rate = float(as_finite("release_rate", release_rate))
-    rng = np.random.default_rng(seed)
-    scale = rng.uniform(1.0 - tol, 1.0 + tol, (members, 2))
-    angle = centre + rng.uniform(-spread, spread, members)
-    rate = mean_rate + rate_std * rng.standard_normal(members)
-    stiffness = setup.thread_stiffness * np.exp(rng.uniform(-np.log(factor), np.log(factor), members))
-    return simulate_bench(setup, psi_des, duration=duration, release_angle=angle, release_rate=rate,
-                          members=members, errors=BenchErrors(moment_scale=scale, thread_stiffness=stiffness),
-                          rng=rng, record_interval=record_interval, window=window)
+    factor = float(dispersion.thread_stiffness_factor)
+    scale = rng.uniform(1.0 - tol, 1.0 + tol, 2)
+    angle = release_angle + rng.uniform(-spread, spread)
+    rate = release_rate + float(dispersion.release_rate_std) * rng.standard_normal()
+    stiffness = thread_stiffness * np.exp(rng.uniform(-np.log(factor), np.log(factor)))
+    return scale, angle, rate, stiffness
 
 
 def steady_error_band(run, quantile=None):

@@ -63,8 +63,13 @@ def _loop_inputs(setup, duration, window, members, release_angle, release_rate, 
         if g_err.shape != (steps, members) or m_err.shape != (steps, members, 2):
             raise ValueError(f"sensor_errors must have shapes ({steps}, {members}) and ({steps}, {members}, 2), "
                              f"got {g_err.shape} and {m_err.shape}")
+    elif isinstance(rng, (list, tuple)):
+        if len(rng) != members or not all(isinstance(g, np.random.Generator) for g in rng):
+            raise ValueError(f"rng must be one numpy.random.Generator, or a list of {members} (one per member), "
+                             f"got a {type(rng).__name__} of {len(rng)} items")
     elif rng is not None and not isinstance(rng, np.random.Generator):
-        raise ValueError(f"rng must be a numpy.random.Generator or None, got {type(rng).__name__}")
+        raise ValueError(f"rng must be a numpy.random.Generator, a list of them (one per member) or None, "
+                         f"got {type(rng).__name__}")
     return steps, window, members, psi, omega, kappa, scale, every, g_err, m_err
 
 

@@ -266,8 +266,9 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
     errors : BenchErrors, optional
         How each member's bench departs from ``setup`` [SI, per field]: moment scale,
         thread stiffness and the hardware error sources; default none.
-    rng : numpy.random.Generator, optional
-        Source of sensor noise [-]; None (default) for ideal sensors.
+    rng : numpy.random.Generator or list of them, optional
+        Source of sensor noise [-]: one generator, or one per member (its noise then does
+        not depend on the other members); None (default) for ideal sensors.
     sensor_errors : tuple of ndarray, optional
         Explicit (gyro (steps, members) [rad/s], magnetometer (steps, members, 2) [T])
         errors instead of drawing them; excludes ``rng``.
