@@ -7,12 +7,16 @@ Usage::
     magbench compare [--json]
     magbench design-coil --moment M --voltage U --side L --max-power W --max-mass KG
                          [--shape round|square] [--wire-table iec60317|iec60228|awg] [--json]
+    magbench montecarlo --list
+    magbench montecarlo STUDY --members N --seed S [--workers K | --scheduler tcp://HOST:PORT]
+                        [--chunk C] [--set NAME=VALUE ...] [--until-ci WIDTH] --out FILE.csv
 """
 
 import argparse
 import json
 import os
 import sys
+from concurrent.futures import Executor
 from pathlib import Path
 
 import numpy as np
@@ -314,6 +318,171 @@ def _cmd_design_coil(args):
     return 0
 
 
+class _LocalPool(Executor):
+    """A process pool that replaces itself when a worker dies, so that the chunk the worker
+    held can be submitted once more (a stdlib pool whose worker died is broken for good)."""
+
+    def __init__(self, workers):
+        self._workers = workers
+        self._pool = self._new()
+
+    def _new(self):
+        from concurrent.futures import ProcessPoolExecutor
+
+        return ProcessPoolExecutor(self._workers)
+
+    def submit(self, fn, *args, **kwargs):
+        from concurrent.futures import BrokenExecutor
+
+        try:
+            return self._pool.submit(fn, *args, **kwargs)
+        except BrokenExecutor:
+            self._pool.shutdown(wait=False, cancel_futures=True)
+            self._pool = self._new()
+            return self._pool.submit(fn, *args, **kwargs)
+
+    def shutdown(self, wait=True, *, cancel_futures=False):
+        self._pool.shutdown(wait=wait, cancel_futures=cancel_futures)
+
+
+def _whole(minimum):
+    def parse(text):
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"must be a whole number >= {minimum}, got {text!r}") from None
+        if value < minimum:
+            raise argparse.ArgumentTypeError(f"must be a whole number >= {minimum}, got {text!r}")
+        return value
+    return parse
+
+
+def _positive_float(text):
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be a number > 0, got {text!r}") from None
+    if not value > 0 or not np.isfinite(value):
+        raise argparse.ArgumentTypeError(f"must be a number > 0, got {text!r}")
+    return value
+
+
+def _list_studies():
+    from .chapters import dispersion_studies
+    from .io import load_parameter_set
+    from .chapters import chapter as chapter_spec
+
+    for study in dispersion_studies().values():
+        spec = chapter_spec(study.chapter)
+        meta = load_parameter_set(spec.source)
+        values = study.parameters({})
+        print(f"{study.name} (chapter {study.chapter}): {study.description}")
+        print("  dispersed inputs:")
+        for item in study.inputs:
+            print(f"    {item.name} [{item.unit}] -> columns {', '.join(item.columns)}: {item.distribution}")
+            for name in item.parameters:
+                entry = meta[name]
+                print(f"      {name} = {values[name]:.6g} (SI; {entry.source}: {entry.note})")
+        print("  outcomes:")
+        for o in study.outcomes:
+            print(f"    {o.name} [{o.unit}]: {o.description}")
+        print()
+    return 0
+
+
+def _connect(address):
+    """A Dask client's executor on the scheduler at ``address`` (and the client), or a
+    one-line reason why not."""
+    try:
+        from distributed import Client
+    except ImportError:
+        return None, "--scheduler needs dask.distributed: pip install distributed"
+    import logging
+
+    logging.getLogger("distributed").setLevel(logging.CRITICAL)     # one line of ours instead
+    try:
+        client = Client(address, timeout="6s", set_as_default=False)
+    except (OSError, TimeoutError, ValueError) as exc:
+        return None, f"cannot reach the Dask scheduler at {address} within 6 s ({type(exc).__name__}: {exc})"
+    return client, None
+
+
+def _cmd_montecarlo(args):
+    from .chapters import dispersion_study, dispersion_studies
+    from .figures import parse_assignment
+    from .sim.dispersion import DispersionError, dispersion_statistics, run_dispersion
+
+    def fail(message):
+        print(f"magbench montecarlo: {message}", file=sys.stderr)
+        return 2
+
+    if args.list:
+        return _list_studies()
+    if args.study is None:
+        return fail(f"name a study ({', '.join(dispersion_studies())}) or give --list")
+    try:
+        study = dispersion_study(args.study)
+    except KeyError as exc:
+        return fail(exc.args[0])
+    if args.members is None or args.seed is None or args.out is None:
+        return fail("--members, --seed and --out are required")
+    if args.workers is not None and args.scheduler is not None:
+        return fail("give --workers or --scheduler, not both")
+    overrides = {}
+    for item in args.set or []:
+        try:
+            name, value = parse_assignment(item)
+        except ValueError as exc:
+            return fail(str(exc))
+        overrides[name] = value
+    try:
+        study.parameters(overrides)
+    except ValueError as exc:
+        return fail(str(exc))
+    problem = _unwritable(args.out)
+    if problem:
+        return fail(f"--out {args.out}: {problem}")
+    client = executor = None
+    if args.scheduler is not None:
+        client, problem = _connect(args.scheduler)
+        if problem:
+            return fail(problem)
+        executor = client.get_executor()
+    elif args.workers is not None and args.workers > 1:
+        executor = _LocalPool(args.workers)
+    bar = None
+    if sys.stderr.isatty():
+        from tqdm import tqdm
+
+        bar = tqdm(total=args.members, unit="member", file=sys.stderr, dynamic_ncols=True)
+    shown_done = [0]
+
+    def progress(done):
+        if bar is not None:
+            bar.update(done - shown_done[0])
+            shown_done[0] = done
+
+    try:
+        table = run_dispersion(study, args.members, args.seed, executor=executor, chunk=args.chunk,
+                               overrides=overrides, out=args.out, progress=progress, until_ci=args.until_ci)
+    except DispersionError as exc:
+        return fail(f"{exc} (nothing written to {args.out})")
+    finally:
+        if bar is not None:
+            bar.close()
+        if executor is not None and client is None:
+            executor.shutdown(wait=False, cancel_futures=True)
+        if client is not None:
+            client.close()
+    print(f"{study.name}: {table.members} members, seed {args.seed}, rows in {args.out}")
+    print(f"{'outcome':<22} {'statistic':<9} {'value':>13} {'95 % bootstrap interval':>29}  unit")
+    for row in dispersion_statistics(table):
+        note = f"  ({row['missing']} members not reached)" if row["missing"] else ""
+        print(f"{row['outcome']:<22} {row['statistic']:<9} {row['value']:>13.6g} "
+              f"[{row['low']:>12.6g}, {row['high']:>12.6g}]  {row['unit']}{note}")
+    return 0
+
+
 def main(argv=None):
     """Entry point of the ``magbench`` command; returns the exit status."""
     parser = argparse.ArgumentParser(prog="magbench", description=__doc__.splitlines()[0])
@@ -350,9 +519,28 @@ def main(argv=None):
     coil.add_argument("--enamel", type=float, default=10e-6,
                       help="radial enamel thickness for AWG wires [m] (default 10e-6, an order of magnitude)")
     coil.add_argument("--json", action="store_true", help="print the result as JSON")
+    mc = sub.add_parser(
+        "montecarlo", help="run a dispersion study over many members, locally or on a Dask cluster",
+        description=("Run a chapter's dispersion study: one row per member (index, dispersed inputs, outcomes; "
+                     "SI) written to a CSV file, then the outcomes' median and 95th percentile with 95 %% "
+                     "bootstrap intervals. Member k draws from numpy.random.default_rng([seed, k]): the file is "
+                     "the same, byte for byte, for any --workers, --scheduler and --chunk. Exit status 2: bad "
+                     "input, an unreachable scheduler, or a chunk that failed twice."))
+    mc.add_argument("study", nargs="?", help="the study (see --list)")
+    mc.add_argument("--list", action="store_true", help="list the studies, their inputs and outcomes")
+    mc.add_argument("--members", type=_whole(1), help="number of members (with --until-ci: the most)")
+    mc.add_argument("--seed", type=_whole(0), help="the study's seed")
+    mc.add_argument("--workers", type=_whole(1), help="local worker processes (default: this process)")
+    mc.add_argument("--scheduler", metavar="ADDRESS", help="a running Dask scheduler, tcp://HOST:PORT")
+    mc.add_argument("--chunk", type=_whole(1), help="members per chunk (default 1000)")
+    mc.add_argument("--set", action="append", metavar="NAME=VALUE",
+                    help="override a parameter of the study's chapter (SI value); repeatable")
+    mc.add_argument("--until-ci", type=_positive_float, metavar="WIDTH",
+                    help="stop once every interval is narrower than WIDTH times its statistic")
+    mc.add_argument("--out", metavar="FILE.csv", help="the table to write")
     args = parser.parse_args(argv)
     handler = {"figures": _cmd_figures, "figure": _cmd_figure, "compare": _cmd_compare,
-               "design-coil": _cmd_design_coil}[args.command]
+               "design-coil": _cmd_design_coil, "montecarlo": _cmd_montecarlo}[args.command]
     from .io import DataError
 
     try:

@@ -277,9 +277,13 @@ def run_dispersion(study, members, seed, executor=None, chunk=None, overrides=No
     Examples
     --------
     >>> from magbench.chapters import dispersion_study
-    >>> t = run_dispersion(dispersion_study("capture"), 2, seed=1, overrides={"capture_duration": 5400.0})
-    >>> t.members, sorted(t.columns)[:3]
-    (2, ['L_x', 'L_y', 'L_z'])
+    >>> study = dispersion_study("detumble")
+    >>> t = run_dispersion(study, 3, seed=1, overrides={"envelope_duration": 600.0})
+    >>> t.members, t.columns["member"].tolist(), t.study.columns[-3:]
+    (3, [0, 1, 2], ('detumble_time', 'held_time', 'final_rate'))
+    >>> u = run_dispersion(study, 3, seed=1, chunk=2, overrides={"envelope_duration": 600.0})
+    >>> bool(np.array_equal(t["final_rate"], u["final_rate"]))
+    True
     """
     if not isinstance(study, DispersionStudy):
         raise ValueError(f"study must be a DispersionStudy, got {type(study).__name__}")
