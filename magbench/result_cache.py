@@ -13,6 +13,9 @@ key of a result on disk is content, never a time stamp:
   of a data file starts a new, empty one;
 * the function's own source and its arguments (joblib's key).
 
+Two processes that ask for the same result at once (two pages on two cores) do not both
+compute it: the second waits on a lock file of that result and then loads it.
+
 Without the variable nothing is written anywhere: a script that imports the library
 computes what it asks for, as it always did. ``make book`` sets it to
 ``_build/results``; ``make test`` to ``_build/test/results``, emptied first, so that
@@ -20,6 +23,7 @@ a test run still computes everything from scratch, once.
 """
 
 import contextlib
+import fcntl
 import functools
 import hashlib
 import os
@@ -120,14 +124,22 @@ def _call(folder, func, args, kwargs):
         # copy if there is none; two processes starting at once (two pages, two test
         # workers) would read each other's half-written copy, take it for another
         # function and clear its results. One process at a time, here.
-        import fcntl
-
         Path(folder).mkdir(parents=True, exist_ok=True)
         with open(Path(folder) / ".lock", "a") as lock:
             fcntl.flock(lock, fcntl.LOCK_EX)
             memorized.check_call_in_cache(*args, **kwargs)
         _checked.add((folder, func))
-    return memorized(*args, **kwargs)
+    import joblib
+
+    # One process computes a result at a time: two pages or figures that need the same
+    # study at once (two cores) would otherwise both compute it; the second waits here and
+    # then loads it.
+    locks = Path(folder) / ".locks"
+    locks.mkdir(parents=True, exist_ok=True)
+    name = f"{func.__module__}.{func.__qualname__}-{joblib.hash((args, kwargs))}"
+    with open(locks / name, "a") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        return memorized(*args, **kwargs)
 
 
 @contextlib.contextmanager

@@ -383,13 +383,15 @@ def _ordered_chunks(study, params, seed, bounds, executor, window):
             future.cancel()
 
 
-def dispersion_statistics(table, *, confidence=0.95, resamples=999, seed=0):
+def dispersion_statistics(table, *, outcomes=None, confidence=0.95, resamples=999, seed=0):
     r"""The outcomes' median and 95th percentile, each with a bootstrap confidence interval.
 
     Parameters
     ----------
     table : DispersionTable
         The rows of a study [-].
+    outcomes : sequence of str, optional
+        The outcomes to describe [-]; default all of the study's.
     confidence : float, optional
         Confidence level of the intervals, in (0, 1) [-].
     resamples : int, optional
@@ -424,7 +426,12 @@ def dispersion_statistics(table, *, confidence=0.95, resamples=999, seed=0):
 
     rng = np.random.default_rng(seed)
     out = []
-    for outcome in table.study.outcomes:
+    chosen = table.study.outcomes if outcomes is None else [o for o in table.study.outcomes if o.name in outcomes]
+    unknown = set(outcomes or ()) - {o.name for o in chosen}
+    if unknown:
+        raise ValueError(f"outcomes {sorted(unknown)} are not outcomes of {table.study.name}; "
+                         f"valid: {', '.join(o.name for o in table.study.outcomes)}")
+    for outcome in chosen:
         values = np.asarray(table.columns[outcome.name], dtype=float)
         missing = int(np.count_nonzero(np.isnan(values)))
         data = np.where(np.isnan(values), np.inf, values)

@@ -40,6 +40,8 @@ INPUTS = (
     "envelope_rate_low", "envelope_rate_high", "envelope_altitude", "envelope_inclination",
     "envelope_dipole_field", "envelope_dipole_tilt", "envelope_gain", "envelope_members", "envelope_seed",
     "envelope_duration", "integration_step",
+    # the dispersion study at scale
+    "dispersion_members",
 )
 
 #: Cp557/detumble's validation statistics as its README reports them (100 runs; IGRF-14, 10 Hz

@@ -30,6 +30,7 @@ def _defaults():
 #: the model accepts.
 INPUT_BOUNDS = {"fig2_members": dict(high=100.0, whole=True), "fig2_seed": dict(whole=True),
                 "envelope_members": dict(high=1e4, whole=True), "envelope_seed": dict(whole=True),
+                "dispersion_members": dict(low=100.0, high=2e4, whole=True),
                 "envelope_duration": dict(high=1e5), "integration_step": dict(low=0.01)}
 
 
@@ -58,7 +59,7 @@ _DUTY = ("inertia_x", "inertia_y", "inertia_z", *_ORBIT, "max_dipole", "initial_
 _ENVELOPE = ("inertia_x", "inertia_y", "inertia_z", "max_dipole", "detumble_threshold", "earth_rotation_rate",
              "envelope_rate_low", "envelope_rate_high", "envelope_altitude", "envelope_inclination",
              "envelope_dipole_field", "envelope_dipole_tilt", "envelope_gain", "envelope_members", "envelope_seed",
-             "envelope_duration", "integration_step")
+             "envelope_duration", "integration_step", "dispersion_members")
 
 
 def _new_figure(height=3.4, ncols=1, width=6.4):
@@ -257,6 +258,61 @@ def plot_distribution(data):
     return fig
 
 
+#: The prefixes of the dispersion study at which its statistics are shown (members).
+CONVERGENCE_MEMBERS = (100, 200, 500, 1000, 2000, 5000, 10000, 20000)
+
+
+def compute_convergence(**params):
+    """The detumble study's median and 95th percentile (held 30 s) with 95 % bootstrap
+    intervals over its first n members, for growing n (each prefix is a study of its own:
+    member k's draws do not depend on how many members run)."""
+    from ...sim import DispersionTable, dispersion_statistics
+
+    key = _key(**params)
+    rows = study.envelope_dispersion(key)
+    sizes = [n for n in CONVERGENCE_MEMBERS if n < rows.members] + [rows.members]
+    stats = {name: {f: [] for f in ("value", "low", "high")} for name in ("median", "p95")}
+    missing = []
+    for n in sizes:
+        part = DispersionTable(rows.study, rows.seed, rows.parameters,
+                               {"member": rows["member"][:n], "held_time": rows["held_time"][:n]})
+        for row in dispersion_statistics(part, outcomes=("held_time",)):
+            for f in ("value", "low", "high"):
+                stats[row["statistic"]][f].append(row[f])
+        missing.append(int(np.count_nonzero(np.isnan(rows["held_time"][:n]))))
+    series = [Series(name, {"members": ("1", np.array(sizes, dtype=float)),
+                            **{f: ("s", np.array(v[f])) for f in ("value", "low", "high")}})
+              for name, v in stats.items()]
+    series.append(Series("not detumbled", {"members": ("1", np.array(sizes, dtype=float)),
+                                           "count": ("1", np.array(missing, dtype=float))}))
+    return FigureData("", "", "", {}, series, extra={"seed": rows.seed})
+
+
+def plot_convergence(data):
+    fig, (ax, bx) = _new_figure(3.3, 2)
+    for s, color in zip(data.series[:2], ("C0", "C3")):
+        n, v, lo, hi = (s.columns[f][1] for f in ("members", "value", "low", "high"))
+        label = "median" if s.label == "median" else "95th percentile"
+        ax.errorbar(n, v, yerr=[v - lo, hi - v], fmt="o-", color=color, capsize=3, ms=4, label=label)
+        bx.loglog(n, (hi - lo) / v, "o-", color=color, ms=4, label=label)
+    n = data.series[0].columns["members"][1]
+    width0 = (data.series[0].columns["high"][1][0] - data.series[0].columns["low"][1][0]) / \
+        data.series[0].columns["value"][1][0]
+    bx.loglog(n, width0 * np.sqrt(n[0] / n), "k:", lw=1, label=r"$\propto 1/\sqrt{n}$")
+    ax.set_xscale("log")
+    ax.set_xlabel("members n")
+    ax.set_ylabel("time to 0.5 °/s, held 30 s [s]")
+    ax.set_title("statistic and its 95 % interval")
+    ax.legend(fontsize=8)
+    bx.set_xlabel("members n")
+    bx.set_ylabel("interval width / statistic [1]")
+    bx.set_title("relative width of the interval")
+    bx.legend(fontsize=8)
+    for axis in (ax, bx):
+        axis.grid(alpha=0.3, which="both")
+    return fig
+
+
 def compute_basilisk(**params):
     """The 18 Basilisk runs beside the library (10 Hz sampled and continuous law)."""
     key = _key(**params)
@@ -398,6 +454,10 @@ register(FigureSpec("ch05-duty-estimators", "Damping kept by each duty-cycle est
                         1020.0, "s", "span over which |ω| drops (60 cycles; ours)", high=1e5)), slow=True))
 register(FigureSpec("ch05-detumble-distribution", "3U envelope: detumble times beside Cp557 and Kovalenko (6.50)",
                     "Cp557/detumble; Kovalenko (1975) eq. (6.50)", compute_distribution, plot_distribution,
+                    partial(_parameters, *_ENVELOPE), slow=True))
+register(FigureSpec("ch05-dispersion-convergence",
+                    "Detumble dispersion study: median and 95th percentile with bootstrap intervals as members grow",
+                    "ours (the 3U envelope of Cp557/detumble)", compute_convergence, plot_convergence,
                     partial(_parameters, *_ENVELOPE), slow=True))
 register(FigureSpec("ch05-basilisk-peer", "Detumble times beside Basilisk's 18 runs",
                     "Basilisk 2.12.1, 18 runs of the same case", compute_basilisk, plot_basilisk,

@@ -21,7 +21,7 @@ from ...sim import (detumble_monte_carlo, detumble_step, detumble_time, simulate
                    simulate_detumble_segments)
 from ...units import DEG
 
-__all__ = ["samsat_orbit", "envelope_orbit", "fig1_gains", "duty_study", "envelope_distribution", "gain_sweep",
+__all__ = ["samsat_orbit", "envelope_orbit", "fig1_gains", "duty_study", "envelope_distribution", "envelope_dispersion", "gain_sweep",
            "decay_rate_sweep", "basilisk_peer", "printed_kinematics_rates", "printed_dipole_projection", "triad_geometry", "triad_rejection",
            "triad_vs_align_vectors", "geopolar_b2_range"]
 
@@ -135,21 +135,53 @@ def duty_study(params, estimators=("model",), rates=None, members=None, duration
     return out
 
 
-@cached_result(maxsize=4, reads=ENVELOPE_ORBIT + INERTIA + (
-    "envelope_members", "envelope_seed", "envelope_duration", "envelope_rate_low", "envelope_rate_high",
-    "envelope_gain", "max_dipole", "integration_step", "detumble_threshold"))
+#: What the 3U envelope's runs read (the dispersion study's parameters).
+ENVELOPE_RUNS = ENVELOPE_ORBIT + INERTIA + ("envelope_seed", "envelope_duration", "envelope_rate_low",
+                                            "envelope_rate_high", "envelope_gain", "max_dipole", "integration_step",
+                                            "detumble_threshold")
+
+
+@cached_result(maxsize=2, reads=ENVELOPE_RUNS + ("dispersion_members",))
+def envelope_dispersion(params):
+    """The ``detumble`` dispersion study (:data:`.dispersion.DETUMBLE`) at ``dispersion_members``
+    members and ``envelope_seed``, run here in chunks (:func:`magbench.sim.run_dispersion`):
+    the :class:`magbench.sim.DispersionTable` of its rows."""
+    from ...sim import run_dispersion
+    from .dispersion import DETUMBLE
+
+    p = dict(params)
+    return run_dispersion(DETUMBLE, int(p["dispersion_members"]), int(p["envelope_seed"]),
+                          overrides={name: p[name] for name in ENVELOPE_RUNS})
+
+
+@cached_result(maxsize=4, reads=ENVELOPE_RUNS + ("envelope_members", "dispersion_members"))
 def envelope_distribution(params, members=None, step=None, dwell=30.0, blanking=None):
     """The 3U envelope (Cp557/detumble): members × duration s, continuous B-dot with
     k = 5e4 A·m²·s/T, ±0.2 A·m², gravity gradient, random attitude, rate axis, rate
     magnitude (uniform in the envelope) and orbit phase. Returns the run's drawn rates
     and detumble times (first crossing, and held for ``dwell``) [s].
 
+    With the defaults (``envelope_members`` members, the study's step and dwell, no
+    blanking) these are the first rows of :func:`envelope_dispersion`: member k draws from
+    its own stream, so the first members of a larger study are the same members.
+
     ``blanking`` = (on, off) [s] blanks the coils ``off`` s in every ``on + off`` (the
     duty mode with exact Ḃ while on): one of the effects Cp557's README lists, the only one
     the library models; the same members as without it, with the largest step not above
     ``integration_step`` that fits the blank a whole number of times."""
+    from .dispersion import HOLD
+
     p = dict(params)
     orbit = envelope_orbit(p)
+    n = int(p["envelope_members"] if members is None else members)
+    threshold = p["detumble_threshold"]
+    if (members is None and step is None and dwell == HOLD and blanking is None
+            and n <= int(p["dispersion_members"])):
+        rows = envelope_dispersion(params)
+        rate = np.stack([rows[c][:n] for c in ("rate_x", "rate_y", "rate_z")], axis=-1)
+        return {"initial_rate": np.linalg.norm(rate, axis=-1), "first": rows["detumble_time"][:n],
+                "held": rows["held_time"][:n], "dwell": dwell, "final_rate": rows["final_rate"][:n],
+                "orbit": orbit, "step": p["integration_step"]}
     h = p["integration_step"] if step is None else step
     duty = {} if blanking is None else dict(mode="duty", estimator="model", on_time=float(blanking[0]),
                                              off_time=float(blanking[1]))
@@ -157,12 +189,10 @@ def envelope_distribution(params, members=None, step=None, dwell=30.0, blanking=
         # whole steps in the blank: the largest step not above h that divides it (a 2 s step
         # and a 1 s blank crashed; found by the input sweep)
         h = float(blanking[1]) / np.ceil(float(blanking[1]) / h - 1e-9)
-    run = detumble_monte_carlo(inertia(p), orbit, members=int(p["envelope_members"] if members is None else members),
-                               seed=int(p["envelope_seed"]), duration=p["envelope_duration"],
+    run = detumble_monte_carlo(inertia(p), orbit, members=n, seed=int(p["envelope_seed"]),
+                               duration=p["envelope_duration"],
                                rate_range=(p["envelope_rate_low"], p["envelope_rate_high"]), gain=p["envelope_gain"],
-                               max_dipole=p["max_dipole"], step=h,
-                               **duty)
-    threshold = p["detumble_threshold"]
+                               max_dipole=p["max_dipole"], step=h, **duty)
     return {"initial_rate": np.linalg.norm(run.inputs["draws"]["rate"], axis=-1),
             "first": detumble_time(run.time, run.rate, threshold),
             "held": detumble_time(run.time, run.rate, threshold, dwell), "dwell": dwell,
