@@ -396,7 +396,7 @@ def _connect(address):
     try:
         from distributed import Client
     except ImportError:
-        return None, "--scheduler needs dask.distributed: pip install distributed"
+        return None, "--scheduler needs dask.distributed: pip install distributed (or magbench[cluster])"
     import logging
 
     logging.getLogger("distributed").setLevel(logging.CRITICAL)     # one line of ours instead
