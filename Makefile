@@ -15,7 +15,7 @@ export MPLBACKEND := Agg
 # give the same pages); set SOURCE_DATE_EPOCH yourself to stamp another.
 export SOURCE_DATE_EPOCH ?= $(shell git log -1 --format=%ct 2>/dev/null)
 
-.PHONY: book book-unlocked test pytest sweep book-check book-check-unlocked env lock bench clean checksums
+.PHONY: book book-unlocked test pytest sweep book-check book-check-unlocked env lock bench bench-peers clean checksums
 
 env: $(STAMP)
 
@@ -117,6 +117,17 @@ sweep: $(STAMP)
 
 bench: $(STAMP)
 	$(BIN)/python benchmarks/run.py
+
+# Opt-in: B-dot detumbling member by member in Basilisk and in magbench. Basilisk (the bsk
+# wheel, 73 MB) is a peer, not a dependency: it goes into _build/bsk-site, outside the
+# environment, with the two modules it imports that the lock file lacks (colorama, pooch);
+# the rest of its requirements are in the lock file, at newer versions, which it runs with.
+BSK_SITE := _build/bsk-site
+bench-peers: $(STAMP)
+	@if [ ! -d $(BSK_SITE)/Basilisk ]; then \
+	  $(BIN)/python -m pip install --quiet --disable-pip-version-check --no-deps --target $(BSK_SITE) \
+	    bsk==2.12.1 colorama==0.4.6 pooch==1.9.0; fi
+	PYTHONPATH=$(BSK_SITE) $(BIN)/python benchmarks/run.py peers_basilisk
 
 # Re-resolve requirements.in into the committed lock file (maintainers only).
 lock:
