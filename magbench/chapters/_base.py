@@ -16,7 +16,7 @@ from pathlib import Path
 from ..io import DataError, load_parameter_set
 from .._validate import shown
 
-__all__ = ["Chapter", "OVERRIDES_ENV", "chapter_parameters", "read_overrides"]
+__all__ = ["Chapter", "FigureInputs", "OVERRIDES_ENV", "chapter_parameters", "read_overrides", "study_parameters"]
 
 #: Environment variable naming a TOML file of overrides for a whole-book build.
 OVERRIDES_ENV = "MAGBENCH_PARAMS"
@@ -179,3 +179,37 @@ def study_parameters(chapter, overrides=None):
             raise ValueError(f"unknown parameter {name!r} of {chapter}; valid: {', '.join(sorted(values))}")
         values[name] = float(value)
     return values
+
+
+class FigureInputs:
+    """A chapter's inputs as its figures take them: the defaults, each input's description
+    and bounds, and a figure's parameters over the defaults.
+
+    ``inputs`` maps a parameter name to ``(description, bounds)``, ``bounds`` the keyword
+    arguments of :class:`~magbench.chapters.registry.FigureParameter` (``low``, ``high``,
+    ``whole``); the unit comes from the chapter's parameter set.
+    """
+
+    def __init__(self, chapter, source, inputs):
+        self.chapter, self.source, self.inputs = chapter, source, dict(inputs)
+
+    def defaults(self):
+        """The chapter's parameters from its data alone (no overrides file) [SI]."""
+        return chapter_parameters(self.chapter, overrides="")
+
+    def table(self, names):
+        """A function returning ``{name: FigureParameter}`` of ``names`` (a figure's
+        ``parameter_table``; called on first use, so that registering reads no data)."""
+        def parameters():
+            from .registry import FigureParameter
+
+            p, units = self.defaults(), load_parameter_set(self.source)
+            return {name: FigureParameter(p[name], units[name].unit_si, self.inputs[name][0], **self.inputs[name][1])
+                    for name in names}
+        return parameters
+
+    def merged(self, params):
+        """The defaults with a figure's ``params`` over them [SI]."""
+        p = self.defaults()
+        p.update(params)
+        return p

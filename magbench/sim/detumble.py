@@ -278,6 +278,11 @@ def draw_detumble_member(rng, rate_range):
     phase : float
         Orbit phase, uniform in [0, 2π) [rad].
 
+    Notes
+    -----
+    Not in the sources: the envelope's draws (shared reference §6.2); the draws' order is
+    part of the contract (a study's rows depend on it).
+
     Examples
     --------
     >>> q, w, u = draw_detumble_member(np.random.default_rng([7, 0]), (0.1, 0.2))

@@ -176,6 +176,11 @@ def member_generators(seed, start, stop):
         ``numpy.random.default_rng([seed, k])`` for each member k: a stream of its own
         (:class:`numpy.random.SeedSequence` of the pair), whatever else is drawn around it.
 
+    Notes
+    -----
+    Not in the sources: numpy's recommended way to give parallel work independent
+    streams (a ``SeedSequence`` of an entropy tuple).
+
     Examples
     --------
     >>> a = member_generators(7, 0, 3)[2].normal()
@@ -241,7 +246,7 @@ def run_dispersion(study, members, seed, executor=None, chunk=None, overrides=No
         The study's seed, ≥ 0; member k draws from ``default_rng([seed, k])`` [-].
     executor : concurrent.futures.Executor, optional
         Where the chunks run: a process pool, ``dask.distributed.Client(...).get_executor()``,
-        …; default this process, one chunk after another.
+        …; default this process, one chunk after another [-].
     chunk : int, optional
         Members per chunk, ≥ 1 [-]; default :data:`DEFAULT_CHUNK`. The rows do not depend on it.
     overrides : mapping, optional
@@ -249,7 +254,7 @@ def run_dispersion(study, members, seed, executor=None, chunk=None, overrides=No
     out : str or Path, optional
         CSV file to write: a header line, then one row per member ordered by member index,
         floats by ``repr``. Rows are written chunk by chunk (memory stays flat) to
-        ``out + ".part"``, which replaces ``out`` only when the study is complete.
+        ``out + ".part"``, which replaces ``out`` only when the study is complete [-].
     progress : callable, optional
         Called as ``progress(done)`` with the number of members finished (in order) [-].
     until_ci : float, optional
@@ -270,7 +275,8 @@ def run_dispersion(study, members, seed, executor=None, chunk=None, overrides=No
 
     Notes
     -----
-    A chunk that fails is submitted once more; a process pool whose worker died is
+    Not in the sources: a dispersion analysis as an engineer runs it. A chunk that fails is
+    submitted once more; a process pool whose worker died is
     broken, so the second submission fails too unless the executor replaces its workers
     (as a Dask cluster does; :class:`magbench.cli` gives its local pool that property).
 
@@ -409,7 +415,7 @@ def dispersion_statistics(table, *, outcomes=None, confidence=0.95, resamples=99
 
     Notes
     -----
-    Percentile bootstrap (:func:`scipy.stats.bootstrap`, ``method="percentile"``) of the
+    Not in the sources. Percentile bootstrap (:func:`scipy.stats.bootstrap`, ``method="percentile"``) of the
     quantile taken without interpolation (``method="inverted_cdf"``), so that members
     counted as +inf give +inf only when the statistic lies among them.
 

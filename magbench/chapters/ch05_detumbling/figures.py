@@ -285,7 +285,10 @@ def compute_convergence(**params):
               for name, v in stats.items()]
     series.append(Series("not detumbled", {"members": ("1", np.array(sizes, dtype=float)),
                                            "count": ("1", np.array(missing, dtype=float))}))
-    return FigureData("", "", "", {}, series, extra={"seed": rows.seed})
+    from .dispersion import HOLD
+
+    return FigureData("", "", "", {}, series, extra={"seed": rows.seed, "threshold": key["detumble_threshold"] / DEG,
+                                                     "hold": HOLD})
 
 
 def plot_convergence(data):
@@ -298,13 +301,13 @@ def plot_convergence(data):
     n = data.series[0].columns["members"][1]
     width0 = (data.series[0].columns["high"][1][0] - data.series[0].columns["low"][1][0]) / \
         data.series[0].columns["value"][1][0]
-    bx.loglog(n, width0 * np.sqrt(n[0] / n), "k:", lw=1, label=r"$\propto 1/\sqrt{n}$")
+    bx.loglog(n, width0 * np.sqrt(n[0] / n), "k:", lw=1, label=r"$\propto 1/\sqrt{N}$")
     ax.set_xscale("log")
-    ax.set_xlabel("members n")
-    ax.set_ylabel("time to 0.5 °/s, held 30 s [s]")
+    ax.set_xlabel("members N")
+    ax.set_ylabel(f"time to {data.extra['threshold']:.3g} °/s, held {data.extra['hold']:g} s [s]")
     ax.set_title("statistic and its 95 % interval")
     ax.legend(fontsize=8)
-    bx.set_xlabel("members n")
+    bx.set_xlabel("members N")
     bx.set_ylabel("interval width / statistic [1]")
     bx.set_title("relative width of the interval")
     bx.legend(fontsize=8)

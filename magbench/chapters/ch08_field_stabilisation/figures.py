@@ -11,8 +11,8 @@ import numpy as np
 from ...io import load_printed
 from . import (CHAPTER, DAMPING_FACTORS, E48_FRICTION_FACTORS, E48_STARTS, SETTLED_ANGLE, e47_case, e48_case, eddy_shell_match, error_sweep,
                libration_study, rod_pair_ratios)
-from .._base import chapter_parameters
-from ..registry import FigureData, FigureParameter, Series, FigureSpec, register
+from .._base import FigureInputs
+from ..registry import FigureData, Series, FigureSpec, register
 
 SOURCE = "Kovalenko (1975)"
 
@@ -44,22 +44,8 @@ _INPUTS = {
 }
 
 
-def _defaults():
-    return chapter_parameters(CHAPTER.key, overrides="")
-
-
-def _input_parameters(names):
-    from ...io import load_parameter_set
-
-    p, table = _defaults(), load_parameter_set(CHAPTER.source)
-    return {name: FigureParameter(p[name], table[name].unit_si, _INPUTS[name][0], **_INPUTS[name][1])
-            for name in names}
-
-
-def _with(params):
-    p = _defaults()
-    p.update(params)
-    return p
+FIGURE_INPUTS = FigureInputs(CHAPTER.key, CHAPTER.source, _INPUTS)
+_with = FIGURE_INPUTS.merged
 
 
 # --- §6.4: the field's rotation on a magnetopolar orbit ------------------------------------
@@ -160,7 +146,7 @@ def plot_fig6_7(data):
 
 
 def _e47_parameters():
-    return _input_parameters(_E47_NAMES)
+    return FIGURE_INPUTS.table(_E47_NAMES)()
 
 
 # --- Fig. 6.8: γ_max against ω_c/ω0 --------------------------------------------------------
@@ -214,7 +200,7 @@ def plot_fig6_8(data):
 
 
 def _sweep_parameters():
-    return _input_parameters(_SWEEP_NAMES)
+    return FIGURE_INPUTS.table(_SWEEP_NAMES)()
 
 
 # --- Fig. 6.10: E48 ---------------------------------------------------------------------------
@@ -282,7 +268,7 @@ def plot_fig6_10(data):
 
 
 def _e48_parameters():
-    return _input_parameters(_E48_NAMES)
+    return FIGURE_INPUTS.table(_E48_NAMES)()
 
 
 # --- §6.5: dry against viscous damping ----------------------------------------------------
@@ -364,12 +350,12 @@ def plot_libration(data):
 
 
 def _libration_parameters():
-    return _input_parameters(_LIBRATION_NAMES)
+    return FIGURE_INPUTS.table(_LIBRATION_NAMES)()
 
 
 def compute_libration_trade():
     """Settling time and residual libration against the ball's coupling (three phases each)."""
-    s = libration_study(_defaults())
+    s = libration_study(FIGURE_INPUTS.defaults())
     k = s["damping"][1:]
     series = []
     for j in range(s["residual"].shape[1]):
@@ -442,7 +428,7 @@ def plot_eddy_shell(data):
 
 
 def _eddy_parameters():
-    return _input_parameters(("shell_conductivity",))
+    return FIGURE_INPUTS.table(("shell_conductivity",))
 
 
 # --- §12.2: two parallel rods -----------------------------------------------------------------

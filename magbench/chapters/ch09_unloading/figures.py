@@ -10,8 +10,8 @@ import numpy as np
 
 from . import (CHAPTER, INITIAL_WHEEL_MOMENTUM, SETTLING_ORBITS, attitude_study, capacity_study, detumbling_study,
                duty_study, lyapunov_orbit, unloading_study)
-from .._base import chapter_parameters
-from ..registry import FigureData, FigureParameter, FigureSpec, Series, register
+from .._base import FigureInputs
+from ..registry import FigureData, FigureSpec, Series, register
 
 SOURCE = "Kovalenko (1975)"
 
@@ -48,24 +48,8 @@ _DUTY_NAMES = ("unl_dipole", "unl_disturbance", "unl_on_threshold", "unl_release
                "unl_linear_gain", "duty_interval", "duty_off_time")
 
 
-def _defaults():
-    return chapter_parameters(CHAPTER.key, overrides="")
-
-
-def _parameters(names):
-    def table():
-        from ...io import load_parameter_set
-
-        p, units = _defaults(), load_parameter_set(CHAPTER.source)
-        return {name: FigureParameter(p[name], units[name].unit_si, _INPUTS[name][0], **_INPUTS[name][1])
-                for name in names}
-    return table
-
-
-def _with(params):
-    p = _defaults()
-    p.update(params)
-    return p
+FIGURE_INPUTS = FigureInputs(CHAPTER.key, CHAPTER.source, _INPUTS)
+_with = FIGURE_INPUTS.merged
 
 
 # --- Figs. 5.10–5.11: detumbling ----------------------------------------------------------------
@@ -386,31 +370,31 @@ def plot_capacity(data):
 
 register(FigureSpec("kov-fig5-10", "Detumbling with coils: the momentum for four coil dipoles, linear and relay "
                     "laws (Kovalenko Fig. 5.10, regenerated)", f"{SOURCE} §5.5, Fig. 5.10 (caption only); eqs. "
-                    "(5.10)–(5.18)", compute_fig5_10, plot_fig5_10, _parameters(_DETUMBLING_NAMES)))
+                    "(5.10)–(5.18)", compute_fig5_10, plot_fig5_10, FIGURE_INPUTS.table(_DETUMBLING_NAMES)))
 register(FigureSpec("kov-fig5-11", "Detumbling with the relay law: the momentum for four thresholds K° "
                     "(Kovalenko Fig. 5.11, regenerated)", f"{SOURCE} §5.5, Fig. 5.11 (caption only)", compute_fig5_11,
-                    plot_fig5_11, _parameters(_THRESHOLD_NAMES)))
+                    plot_fig5_11, FIGURE_INPUTS.table(_THRESHOLD_NAMES)))
 register(FigureSpec("kov-fig5-12", "Unloading the wheels, start over the equator: momentum per axis for five "
                     "release thresholds (Kovalenko Fig. 5.12, regenerated)", f"{SOURCE} §5.5, Fig. 5.12 (caption "
-                    "only)", compute_fig5_12, plot_unloading, _parameters(_UNLOADING_NAMES)))
+                    "only)", compute_fig5_12, plot_unloading, FIGURE_INPUTS.table(_UNLOADING_NAMES)))
 register(FigureSpec("kov-fig5-13", "Unloading the wheels, start at the top of the orbit (Kovalenko Fig. 5.13, "
                     "regenerated)", f"{SOURCE} §5.5, Fig. 5.13 (caption only)", compute_fig5_13, plot_unloading,
-                    _parameters(_UNLOADING_NAMES)))
+                    FIGURE_INPUTS.table(_UNLOADING_NAMES)))
 register(FigureSpec("kov-fig5-14-15", "Unloading the wheels with the Sun elsewhere on the ecliptic (Kovalenko Figs. "
                     "5.14–5.15, regenerated)", f"{SOURCE} §5.5, Figs. 5.14–5.15 (captions only); §2.3 (2.29)",
-                    compute_fig5_14_15, plot_unloading, _parameters(_UNLOADING_NAMES)))
+                    compute_fig5_14_15, plot_unloading, FIGURE_INPUTS.table(_UNLOADING_NAMES)))
 register(FigureSpec("kov-unloading-band", "The steady band of wheel momentum and the coils' duty for every "
                     "unloading law", f"{SOURCE} §5.5 (the runs of Figs. 5.12–5.13)", compute_band, plot_band,
-                    _parameters(_UNLOADING_NAMES)))
+                    FIGURE_INPUTS.table(_UNLOADING_NAMES)))
 register(FigureSpec("kov-unloading-lyapunov", "The linear law over one orbit: |K| never grows, its part along B "
                     "is not removed", f"{SOURCE} §5.2, eqs. (5.1)–(5.5)", compute_lyapunov, plot_lyapunov,
-                    _parameters(("unl_linear_gain",))))
+                    FIGURE_INPUTS.table(("unl_linear_gain",))))
 register(FigureSpec("kov-unloading-attitude", "Unloading with the body held in the orbital frame by its wheels",
                     f"{SOURCE} §5.4, eqs. (5.35)–(5.47) (the attitude loop ours)", compute_attitude, plot_attitude,
-                    _parameters(_ATTITUDE_NAMES)))
+                    FIGURE_INPUTS.table(_ATTITUDE_NAMES)))
 register(FigureSpec("kov-unloading-duty", "Unloading with the coils off while the magnetometer reads",
                     f"{SOURCE} §3.7, p. 75; SamSat-218D's duty cycle", compute_duty, plot_duty,
-                    _parameters(_DUTY_NAMES)))
+                    FIGURE_INPUTS.table(_DUTY_NAMES)))
 register(FigureSpec("kov-unloading-capacity", "How much momentum coils can unload, against the orbit's inclination",
                     "ours (derived); Kovalenko (1975) §5.2, eq. (2.36)", compute_capacity, plot_capacity,
-                    _parameters(("unl_altitude",))))
+                    FIGURE_INPUTS.table(("unl_altitude",))))

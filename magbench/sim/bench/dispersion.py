@@ -148,6 +148,11 @@ def draw_bench_member(rng, dispersion, release_angle, release_rate, thread_stiff
     stiffness : float
         Thread stiffness, log-uniform in nominal ×/÷ factor [N·m/rad].
 
+    Notes
+    -----
+    Not in the thesis: the thesis reports single runs with unstated initial conditions;
+    the spreads are :class:`BenchDispersion`'s.
+
     Examples
     --------
     >>> d = BenchDispersion(0.05, 0.5, 0.01, 3.0)
