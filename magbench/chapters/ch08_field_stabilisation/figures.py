@@ -428,7 +428,7 @@ def plot_eddy_shell(data):
 
 
 def _eddy_parameters():
-    return FIGURE_INPUTS.table(("shell_conductivity",))
+    return FIGURE_INPUTS.table(("shell_conductivity",))()
 
 
 # --- §12.2: two parallel rods -----------------------------------------------------------------
