@@ -154,34 +154,25 @@ def envelope_dispersion(params):
                           overrides={name: p[name] for name in ENVELOPE_RUNS})
 
 
-@cached_result(maxsize=4, reads=ENVELOPE_RUNS + ("envelope_members", "dispersion_members"))
+@cached_result(maxsize=4, reads=ENVELOPE_RUNS + ("envelope_members",))
 def envelope_distribution(params, members=None, step=None, dwell=30.0, blanking=None):
     """The 3U envelope (Cp557/detumble): members × duration s, continuous B-dot with
     k = 5e4 A·m²·s/T, ±0.2 A·m², gravity gradient, random attitude, rate axis, rate
     magnitude (uniform in the envelope) and orbit phase. Returns the run's drawn rates
     and detumble times (first crossing, and held for ``dwell``) [s].
 
-    With the defaults (``envelope_members`` members, the study's step and dwell, no
-    blanking) these are the first rows of :func:`envelope_dispersion`: member k draws from
-    its own stream, so the first members of a larger study are the same members.
+    Member k draws from its own stream (:func:`magbench.sim.detumble_monte_carlo`), so with
+    the defaults these are the first ``envelope_members`` rows of :func:`envelope_dispersion`
+    (computed here on their own: a study that changes one input need not run the larger one).
 
     ``blanking`` = (on, off) [s] blanks the coils ``off`` s in every ``on + off`` (the
     duty mode with exact Ḃ while on): one of the effects Cp557's README lists, the only one
     the library models; the same members as without it, with the largest step not above
     ``integration_step`` that fits the blank a whole number of times."""
-    from .dispersion import HOLD
-
     p = dict(params)
     orbit = envelope_orbit(p)
     n = int(p["envelope_members"] if members is None else members)
     threshold = p["detumble_threshold"]
-    if (members is None and step is None and dwell == HOLD and blanking is None
-            and n <= int(p["dispersion_members"])):
-        rows = envelope_dispersion(params)
-        rate = np.stack([rows[c][:n] for c in ("rate_x", "rate_y", "rate_z")], axis=-1)
-        return {"initial_rate": np.linalg.norm(rate, axis=-1), "first": rows["detumble_time"][:n],
-                "held": rows["held_time"][:n], "dwell": dwell, "final_rate": rows["final_rate"][:n],
-                "orbit": orbit, "step": p["integration_step"]}
     h = p["integration_step"] if step is None else step
     duty = {} if blanking is None else dict(mode="duty", estimator="model", on_time=float(blanking[0]),
                                              off_time=float(blanking[1]))

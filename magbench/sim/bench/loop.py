@@ -24,6 +24,11 @@ __all__ = ["simulate_bench"]
 
 # Samples of sensor error drawn at once: bounds memory at members × block × 3 floats.
 _BLOCK = 256
+# With one generator per member, each member's errors are drawn this many samples at a time
+# (a few calls per member instead of one per member and block: the calls, not the numbers,
+# were the cost). Part of what a seed means: a member's stream is gyro then magnetometer for
+# each such block.
+_MEMBER_BLOCK = 16 * _BLOCK
 
 #: The sample loop: "compiled" (:mod:`magbench.sim.bench._kernel`, the default) or "numpy"
 #: (the reference, operation for operation the same; the tests switch it to compare the two).
@@ -311,10 +316,16 @@ def simulate_bench(setup, psi_des, *, duration, release_angle=0.0, release_rate=
                    record_interval, window)
     loop = _CompiledLoop(run) if _ENGINE == "compiled" else _NumpyLoop(run)
     state = np.array([run.psi, run.omega])
+    per_member = isinstance(rng, (list, tuple))
     for start in range(0, run.steps, _BLOCK):
         count = min(_BLOCK, run.steps - start)
         if run.g_err is not None:
             g_blk, m_blk = run.g_err[start:start + count], run.m_err[start:start + count]
+        elif per_member:
+            offset = start % _MEMBER_BLOCK
+            if offset == 0:
+                g_big, m_big = draw_sensor_errors(setup, min(_MEMBER_BLOCK, run.steps - start), run.members, rng)
+            g_blk, m_blk = g_big[offset:offset + count], m_big[offset:offset + count]
         else:
             g_blk, m_blk = draw_sensor_errors(setup, count, run.members, rng)
         state = loop.run(start, count, state, g_blk, m_blk)
