@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from magbench.cli import _LocalPool
+from magbench.cli import _LocalPool, main
 from magbench.sim import DispersedInput, DispersionError, DispersionStudy, Outcome, run_dispersion
 
 BIN = Path(sys.executable).parent
@@ -23,6 +23,18 @@ ENV = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1")
 def _magbench(*args, timeout=300):
     return subprocess.run([sys.executable, "-m", "magbench.cli", "montecarlo", *args], capture_output=True,
                           text=True, timeout=timeout, env=ENV)
+
+
+def _in_process(capsys, *args):
+    """``magbench montecarlo ARGS`` through :func:`magbench.cli.main` in this process (the
+    subprocess tests below prove the entry point; this saves an import per run): exit
+    status, stdout, stderr."""
+    try:
+        status = main(["montecarlo", *map(str, args)])
+    except SystemExit as exc:            # argparse's refusals
+        status = exc.code
+    out = capsys.readouterr()
+    return status, out.out, out.err
 
 
 def _free_port():
@@ -66,22 +78,22 @@ CASES = {"detumble": ("3000", "700", "700"), "bench": ("200", "70", "45"), "capt
 
 
 @pytest.mark.parametrize("study", list(CASES))
-def test_the_file_is_byte_identical_serial_pooled_and_on_dask(study, dask_scheduler, tmp_path):
+def test_the_file_is_byte_identical_serial_pooled_and_on_dask(study, dask_scheduler, tmp_path, capsys):
     members, chunk, dask_chunk = CASES[study]
     common = (study, "--members", members, "--seed", "7")
-    runs = {"one": _magbench(*common, "--workers", "1", "--out", tmp_path / "a.csv"),
-            "pool": _magbench(*common, "--workers", "2", "--chunk", chunk, "--out", tmp_path / "b.csv"),
-            "dask": _magbench(*common, "--scheduler", dask_scheduler, "--chunk", dask_chunk,
-                              "--out", tmp_path / "c.csv")}
-    for name, run in runs.items():
-        assert run.returncode == 0, (name, run.stderr)
-        assert run.stderr == ""            # no progress bar when stderr is not a terminal
+    runs = {"one": _in_process(capsys, *common, "--workers", "1", "--out", tmp_path / "a.csv"),
+            "pool": _in_process(capsys, *common, "--workers", "2", "--chunk", chunk, "--out", tmp_path / "b.csv"),
+            "dask": _in_process(capsys, *common, "--scheduler", dask_scheduler, "--chunk", dask_chunk,
+                                "--out", tmp_path / "c.csv")}
+    for name, (status, _, err) in runs.items():
+        assert status == 0, (name, err)
+        assert err == ""            # no progress bar when stderr is not a terminal
     a, b, c = ((tmp_path / f).read_bytes() for f in ("a.csv", "b.csv", "c.csv"))
     assert a == b == c
     lines = a.decode().splitlines()
     assert len(lines) == int(members) + 1
     assert [int(line.split(",", 1)[0]) for line in lines[1:]] == list(range(int(members)))
-    out = runs["one"].stdout
+    out = runs["one"][1]
     assert f"{study}: {members} members, seed 7" in out and "median" in out and "p95" in out
 
 
@@ -104,12 +116,17 @@ def test_list_names_every_study_its_inputs_provenance_and_outcomes():
       "--out", "x.csv"), "give --workers or --scheduler, not both"),
     (("detumble", "--members", "3", "--seed", "1"), "--members, --seed and --out are required"),
 ])
-def test_bad_input_exits_2_with_one_line_naming_it(args, message, tmp_path):
-    run = subprocess.run([sys.executable, "-m", "magbench.cli", "montecarlo", *args], capture_output=True, text=True,
-                         timeout=60, env=ENV, cwd=tmp_path)
-    assert run.returncode == 2
-    assert message in run.stderr
+def test_bad_input_exits_2_with_one_line_naming_it(args, message, tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    status, _, err = _in_process(capsys, *args)
+    assert status == 2
+    assert message in err
     assert not (tmp_path / "x.csv").exists()
+
+
+def test_bad_input_through_the_installed_command():
+    run = _magbench("detumble", "--members", "0", "--seed", "1", "--out", "x.csv")
+    assert run.returncode == 2 and "--members: must be a whole number >= 1, got '0'" in run.stderr
 
 
 def test_an_unreachable_scheduler_is_one_line_within_ten_seconds(tmp_path):

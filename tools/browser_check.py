@@ -136,13 +136,59 @@ def check_page(page, url, origin, *, phone=False):
                       "tables": len(result["tables"])}
 
 
-def check_site(html_dir, pages, screenshots=None, search="Helmholtz"):
+def _check_pages(origin, pages, shots):
+    """Check ``pages`` in a browser of their own (one per thread: Playwright's sync API is
+    per thread); ``{name: (summary line, problems)}``."""
+    from playwright.sync_api import sync_playwright
+
+    out = {}
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        contexts = {w: browser.new_context(viewport={"width": w, "height": 768 if w >= PHONE else 736},
+                                           service_workers="block", is_mobile=w < PHONE, has_touch=w < PHONE,
+                                           device_scale_factor=2 if w < PHONE else 1)
+                    for w in WIDTHS}
+        for name in pages:
+            problems = []
+            for width, context in contexts.items():
+                page = context.new_page()
+                found, summary = check_page(page, f"{origin}/{name}.html", origin, phone=width < PHONE)
+                if shots and width in (WIDTHS[0], WIDTHS[1]):
+                    page.screenshot(path=str(shots / f"{Path(name).name}-{width}.png"), full_page=True)
+                page.close()
+                problems += [f"{problem} (at {width} px)" for problem in found]
+            status = "ok" if not problems else f"{len(problems)} problems"
+            line = (f"  {name:32s} {summary['images']:3d} images loaded  {summary['typeset']:4d} equations typeset  "
+                    f"{summary['tables']:3d} tables  {status}")
+            out[name] = (line, [f"{name}: {problem}" for problem in problems])
+        browser.close()
+    return out
+
+
+def _search_hits(origin, search):
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        page = browser.new_context(viewport={"width": WIDTHS[1], "height": 768}, service_workers="block").new_page()
+        page.goto(f"{origin}/search.html?q={search}", wait_until="load")
+        try:
+            page.wait_for_selector("#search-results li, ul.search li", timeout=15000)
+            hits = page.locator("#search-results li, ul.search li").count()
+        except Exception:       # noqa: BLE001 - a timeout is the finding
+            hits = 0
+        browser.close()
+    return hits
+
+
+def check_site(html_dir, pages, screenshots=None, search="Helmholtz", workers=2):
     """Check ``pages`` (paths without ``.html``) of ``html_dir``; return the problems found.
 
     ``search``: a word the site's search page must find (``None``: no search check).
-    Prints one line per page.
+    ``workers`` browsers check the pages side by side (two cores: the check's time halves,
+    what it finds does not change). Prints one line per page, in the order given.
     """
-    from playwright.sync_api import sync_playwright
+    import concurrent.futures
 
     server = serve(html_dir)
     origin = f"http://127.0.0.1:{server.server_address[1]}"
@@ -151,38 +197,20 @@ def check_site(html_dir, pages, screenshots=None, search="Helmholtz"):
         shots.mkdir(parents=True, exist_ok=True)
     failures = []
     try:
-        with sync_playwright() as p:
-            browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-            contexts = {w: browser.new_context(viewport={"width": w, "height": 768 if w >= PHONE else 736},
-                                               service_workers="block", is_mobile=w < PHONE, has_touch=w < PHONE,
-                                               device_scale_factor=2 if w < PHONE else 1)
-                        for w in WIDTHS}
-            for name in pages:
-                problems = []
-                for width, context in contexts.items():
-                    page = context.new_page()
-                    found, summary = check_page(page, f"{origin}/{name}.html", origin, phone=width < PHONE)
-                    if shots and width in (WIDTHS[0], WIDTHS[1]):
-                        page.screenshot(path=str(shots / f"{Path(name).name}-{width}.png"), full_page=True)
-                    page.close()
-                    problems += [f"{problem} (at {width} px)" for problem in found]
-                status = "ok" if not problems else f"{len(problems)} problems"
-                print(f"  {name:32s} {summary['images']:3d} images loaded  {summary['typeset']:4d} equations typeset  "
-                      f"{summary['tables']:3d} tables  {status}")
-                failures += [f"{name}: {problem}" for problem in problems]
-            context = contexts[WIDTHS[1]]
-            if search:
-                page = context.new_page()
-                page.goto(f"{origin}/search.html?q={search}", wait_until="load")
-                try:
-                    page.wait_for_selector("#search-results li, ul.search li", timeout=15000)
-                    hits = page.locator("#search-results li, ul.search li").count()
-                except Exception:       # noqa: BLE001 - a timeout is the finding
-                    hits = 0
-                print(f"  search {search!r}: {hits} results")
-                if hits == 0:
-                    failures.append(f"search page: no result for {search!r}")
-            browser.close()
+        shares = [pages[k::workers] for k in range(workers) if pages[k::workers]]
+        with concurrent.futures.ThreadPoolExecutor(len(shares) or 1) as pool:
+            results = {}
+            for part in pool.map(lambda share: _check_pages(origin, share, shots), shares):
+                results.update(part)
+        for name in pages:
+            line, problems = results[name]
+            print(line)
+            failures += problems
+        if search:
+            hits = _search_hits(origin, search)
+            print(f"  search {search!r}: {hits} results")
+            if hits == 0:
+                failures.append(f"search page: no result for {search!r}")
     finally:
         server.shutdown()
         server.server_close()
