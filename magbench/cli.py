@@ -401,9 +401,9 @@ def _connect(address):
 
     logging.getLogger("distributed").setLevel(logging.CRITICAL)     # one line of ours instead
     try:
-        client = Client(address, timeout="6s", set_as_default=False)
+        client = Client(address, timeout="4s", set_as_default=False)
     except (OSError, TimeoutError, ValueError) as exc:
-        return None, f"cannot reach the Dask scheduler at {address} within 6 s ({type(exc).__name__}: {exc})"
+        return None, f"cannot reach the Dask scheduler at {address} within 4 s ({type(exc).__name__}: {exc})"
     return client, None
 
 

@@ -129,40 +129,16 @@ def test_bad_input_through_the_installed_command():
     assert run.returncode == 2 and "--members: must be a whole number >= 1, got '0'" in run.stderr
 
 
-@pytest.fixture(scope="module")
-def unreachable_run(tmp_path_factory):
-    """``magbench montecarlo`` pointed at a port nobody listens on, started at once and left
-    to wait out its timeout in the background while the module's other tests run: its
-    exit status, stderr, wall time [s] and output folder."""
-    import threading
-
-    folder = tmp_path_factory.mktemp("unreachable")
-    result = {}
-
-    def run():
-        start = time.monotonic()
-        done = _magbench("detumble", "--members", "3", "--seed", "1", "--scheduler",
-                         f"tcp://127.0.0.1:{_free_port()}", "--out", folder / "x.csv", timeout=30)
-        result.update(status=done.returncode, stderr=done.stderr, seconds=time.monotonic() - start)
-
-    thread = threading.Thread(target=run)
-    thread.start()
-    yield thread, result, folder
-    thread.join()
-
-
-@pytest.fixture(scope="module", autouse=True)
-def _start_the_unreachable_run_first(unreachable_run):
-    """Requests :func:`unreachable_run` before the module's first test (it mostly waits)."""
-
-
-def test_an_unreachable_scheduler_is_one_line_within_ten_seconds(unreachable_run):
-    thread, result, folder = unreachable_run
-    thread.join(timeout=30)
-    assert result["seconds"] < 10.0
-    assert result["status"] == 2
-    assert result["stderr"].startswith("magbench montecarlo: cannot reach the Dask scheduler at tcp://127.0.0.1:")
-    assert result["stderr"].count("\n") == 1 and not (folder / "x.csv").exists()
+def test_an_unreachable_scheduler_is_one_line_within_ten_seconds(tmp_path):
+    # Run alone (not beside the module's pools): the 10 s include starting Python and
+    # importing the library, which a loaded machine slows (10.1 s once, in the background).
+    start = time.monotonic()
+    run = _magbench("detumble", "--members", "3", "--seed", "1", "--scheduler", f"tcp://127.0.0.1:{_free_port()}",
+                    "--out", tmp_path / "x.csv", timeout=30)
+    assert time.monotonic() - start < 10.0
+    assert run.returncode == 2
+    assert run.stderr.startswith("magbench montecarlo: cannot reach the Dask scheduler at tcp://127.0.0.1:")
+    assert run.stderr.count("\n") == 1 and not (tmp_path / "x.csv").exists()
 
 
 # -- a worker that dies ------------------------------------------------------------------
