@@ -290,15 +290,27 @@ def compute_convergence(**params):
 
 def plot_convergence(data):
     fig, (ax, bx) = _new_figure(3.3, 2)
+    first = None
+    beyond = False
     for s, color in zip(data.series[:2], ("C0", "C3")):
-        n, v, lo, hi = (s.columns[f][1] for f in ("members", "value", "low", "high"))
+        n, v, lo, hi = (np.asarray(s.columns[f][1], dtype=float) for f in ("members", "value", "low", "high"))
+        # a statistic or an end of its interval among the members not detumbled is +inf:
+        # such points are left out, and the figure says so
+        ok = np.isfinite(v) & np.isfinite(lo) & np.isfinite(hi) & (v > 0)
+        beyond |= not ok.all()
         label = "median" if s.label == "median" else "95th percentile"
-        ax.errorbar(n, v, yerr=[v - lo, hi - v], fmt="o-", color=color, capsize=3, ms=4, label=label)
-        bx.loglog(n, (hi - lo) / v, "o-", color=color, ms=4, label=label)
-    n = data.series[0].columns["members"][1]
-    width0 = (data.series[0].columns["high"][1][0] - data.series[0].columns["low"][1][0]) / \
-        data.series[0].columns["value"][1][0]
-    bx.loglog(n, width0 * np.sqrt(n[0] / n), "k:", lw=1, label=r"$\propto 1/\sqrt{N}$")
+        ax.errorbar(n[ok], v[ok], yerr=[v[ok] - lo[ok], hi[ok] - v[ok]], fmt="o-", color=color, capsize=3, ms=4,
+                    label=label)
+        rel = (hi[ok] - lo[ok]) / v[ok]
+        bx.loglog(n[ok], rel, "o-", color=color, ms=4, label=label)
+        if first is None and rel.size:
+            first = (n[ok], rel[0])
+    if first is not None:
+        n, width0 = first
+        bx.loglog(n, width0 * np.sqrt(n[0] / n), "k:", lw=1, label=r"$\propto 1/\sqrt{N}$")
+    if beyond:
+        ax.text(0.02, 0.02, "points left out: the statistic or its interval\nlies among members not detumbled",
+                transform=ax.transAxes, fontsize=7, va="bottom")
     ax.set_xscale("log")
     ax.set_xlabel("members N")
     ax.set_ylabel("detumble time, held [s]")
