@@ -368,9 +368,8 @@ def _positive_float(text):
 
 
 def _list_studies():
-    from .chapters import dispersion_studies
+    from .chapters import chapter as chapter_spec, dispersion_studies
     from .io import load_parameter_set
-    from .chapters import chapter as chapter_spec
 
     for study in dispersion_studies().values():
         spec = chapter_spec(study.chapter)
